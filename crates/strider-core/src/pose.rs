@@ -1,0 +1,227 @@
+//! [`Pose`]: a skeleton's current local and global transforms.
+//!
+//! Locals are the source of truth. Globals are cached and recomputed lazily: changing a
+//! local marks the bone's subtree dirty (a contiguous range, thanks to the skeleton's
+//! depth-first order), and reading a global recomputes only the dirty chain above it.
+//! Nothing here allocates after [`Pose::new`].
+
+use crate::skeleton::{BoneIndex, Skeleton};
+use crate::transform::Transform;
+use std::sync::Arc;
+
+/// The current pose of one character: local and global transform per bone.
+#[derive(Clone, Debug)]
+pub struct Pose {
+    skeleton: Arc<Skeleton>,
+    locals: Vec<Transform>,
+    globals: Vec<Transform>,
+    dirty: Vec<bool>,
+}
+
+impl Pose {
+    /// The rest pose of `skeleton`.
+    #[must_use]
+    pub fn new(skeleton: Arc<Skeleton>) -> Self {
+        let locals = skeleton.rest_locals().to_vec();
+        let globals = skeleton.rest_globals().to_vec();
+        let dirty = vec![false; locals.len()];
+        Self {
+            skeleton,
+            locals,
+            globals,
+            dirty,
+        }
+    }
+
+    /// The skeleton this pose belongs to.
+    #[must_use]
+    pub fn skeleton(&self) -> &Arc<Skeleton> {
+        &self.skeleton
+    }
+
+    /// Number of bones.
+    #[must_use]
+    pub fn len(&self) -> usize {
+        self.locals.len()
+    }
+
+    /// Always false: a skeleton has at least one bone.
+    #[must_use]
+    pub fn is_empty(&self) -> bool {
+        self.locals.is_empty()
+    }
+
+    /// Resets every bone to the rest pose.
+    pub fn reset_to_rest(&mut self) {
+        self.locals.copy_from_slice(self.skeleton.rest_locals());
+        self.globals.copy_from_slice(self.skeleton.rest_globals());
+        self.dirty.fill(false);
+    }
+
+    /// Replaces all locals (storage order, as [`Skeleton::names`]). Extra entries are
+    /// ignored; missing ones keep their current value.
+    pub fn set_locals(&mut self, locals: &[Transform]) {
+        let n = self.locals.len().min(locals.len());
+        self.locals[..n].copy_from_slice(&locals[..n]);
+        self.dirty.fill(true);
+    }
+
+    /// A bone's transform relative to its parent.
+    #[must_use]
+    pub fn local(&self, bone: BoneIndex) -> Transform {
+        self.locals[bone.get()]
+    }
+
+    /// All local transforms in storage order.
+    #[must_use]
+    pub fn locals(&self) -> &[Transform] {
+        &self.locals
+    }
+
+    /// Sets a bone's local transform. Descendants follow (their locals are unchanged).
+    pub fn set_local(&mut self, bone: BoneIndex, local: Transform) {
+        let i = bone.get();
+        self.locals[i] = local;
+        let end = self.skeleton.subtree_end(bone);
+        self.dirty[i..end].fill(true);
+    }
+
+    /// A bone's rig-space transform, recomputing stale ancestors first.
+    pub fn global(&mut self, bone: BoneIndex) -> Transform {
+        let i = bone.get();
+        if self.dirty[i] {
+            let g = match self.skeleton.parent(bone) {
+                Some(p) => self.global(p) * self.locals[i],
+                None => self.locals[i],
+            };
+            self.globals[i] = g;
+            self.dirty[i] = false;
+        }
+        self.globals[i]
+    }
+
+    /// Sets a bone's rig-space transform.
+    ///
+    /// With `propagate_to_children` the children keep their local transforms and so move
+    /// with the bone (RigVM's "Propagate to Children"). Without it the children keep their
+    /// global transforms: their locals are recomputed against the new parent.
+    pub fn set_global(&mut self, bone: BoneIndex, global: Transform, propagate_to_children: bool) {
+        let skeleton = Arc::clone(&self.skeleton);
+        if !propagate_to_children {
+            for &c in skeleton.children(bone) {
+                let _ = self.global(c);
+            }
+        }
+        let i = bone.get();
+        let local = match skeleton.parent(bone) {
+            Some(p) => global.relative_to(&self.global(p)),
+            None => global,
+        };
+        self.locals[i] = local;
+        self.globals[i] = global;
+        self.dirty[i] = false;
+        if propagate_to_children {
+            let end = skeleton.subtree_end(bone);
+            self.dirty[i + 1..end].fill(true);
+        } else {
+            for &c in skeleton.children(bone) {
+                let ci = c.get();
+                self.locals[ci] = self.globals[ci].relative_to(&global);
+            }
+        }
+    }
+
+    /// Brings every global up to date and returns them all (storage order).
+    pub fn globals(&mut self) -> &[Transform] {
+        for i in 0..self.globals.len() {
+            if self.dirty[i] {
+                let bone = BoneIndex(i as u32);
+                self.globals[i] = match self.skeleton.parent(bone) {
+                    // Parents come first in storage order, so theirs is already fresh.
+                    Some(p) => self.globals[p.get()] * self.locals[i],
+                    None => self.locals[i],
+                };
+                self.dirty[i] = false;
+            }
+        }
+        &self.globals
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::skeleton::Bone;
+    use glam::{Quat, Vec3};
+
+    fn chain() -> Arc<Skeleton> {
+        let b = |name: &str, parent: Option<&str>, t: Vec3| Bone {
+            name: name.into(),
+            parent: parent.map(Into::into),
+            rest_local: Transform::from_translation(t),
+        };
+        Arc::new(
+            Skeleton::new(vec![
+                b("root", None, Vec3::ZERO),
+                b("thigh", Some("root"), Vec3::new(0.0, 0.0, 90.0)),
+                b("calf", Some("thigh"), Vec3::new(0.0, 0.0, -45.0)),
+                b("foot", Some("calf"), Vec3::new(0.0, 0.0, -40.0)),
+            ])
+            .unwrap(),
+        )
+    }
+
+    #[test]
+    fn changing_a_local_moves_the_subtree() {
+        let s = chain();
+        let mut pose = Pose::new(s.clone());
+        let thigh = s.find("thigh").unwrap();
+        let foot = s.find("foot").unwrap();
+        assert_eq!(pose.global(foot).translation, Vec3::new(0.0, 0.0, 5.0));
+        // Rotate the thigh 90° about X: its children (pointing down, -Z) now point +Y.
+        let mut l = pose.local(thigh);
+        l.rotation = Quat::from_rotation_x(core::f32::consts::FRAC_PI_2);
+        pose.set_local(thigh, l);
+        let p = pose.global(foot).translation;
+        assert!((p - Vec3::new(0.0, 85.0, 90.0)).length() < 1e-4, "{p}");
+    }
+
+    #[test]
+    fn set_global_with_and_without_propagation() {
+        let s = chain();
+        let calf = s.find("calf").unwrap();
+        let foot = s.find("foot").unwrap();
+        let target = Transform::from_translation(Vec3::new(10.0, 0.0, 45.0));
+
+        let mut pose = Pose::new(s.clone());
+        pose.set_global(calf, target, true);
+        // The foot keeps its local offset (0,0,-40) and moves with the calf.
+        assert_eq!(pose.global(foot).translation, Vec3::new(10.0, 0.0, 5.0));
+        assert_eq!(pose.local(calf).translation, Vec3::new(10.0, 0.0, -45.0));
+
+        let mut pose = Pose::new(s);
+        pose.set_global(calf, target, false);
+        // The foot stays where it was in rig space.
+        assert_eq!(pose.global(foot).translation, Vec3::new(0.0, 0.0, 5.0));
+        assert_eq!(pose.local(foot).translation, Vec3::new(-10.0, 0.0, -40.0));
+    }
+
+    #[test]
+    fn globals_pass_matches_lazy_reads() {
+        let s = chain();
+        let mut a = Pose::new(s.clone());
+        let thigh = s.find("thigh").unwrap();
+        a.set_local(
+            thigh,
+            Transform::from_translation_rotation(
+                Vec3::new(1.0, 2.0, 3.0),
+                Quat::from_rotation_y(0.3),
+            ),
+        );
+        let mut b = a.clone();
+        let all = a.globals().to_vec();
+        for i in 0..s.len() {
+            assert_eq!(all[i], b.global(BoneIndex(i as u32)));
+        }
+    }
+}

@@ -1,0 +1,224 @@
+//! [`Transform`]: translation, rotation and scale, composed parent · child.
+
+use glam::{Quat, Vec3};
+
+/// A rigid transform with scale: maps a point `p` to `translation + rotation · (scale ⊙ p)`.
+///
+/// Translation is in centimetres, in the parent space of whatever the transform positions
+/// (the parent bone for a local transform, rig space for a global one).
+///
+/// Composition (`a * b`) applies `b` first, then `a`, so a global transform is
+/// `parent_global * local`. With non-uniform scale this composition is the usual
+/// approximation used by animation runtimes: scales multiply component-wise and never
+/// shear.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Transform {
+    /// Translation in centimetres.
+    pub translation: Vec3,
+    /// Rotation, a unit quaternion.
+    pub rotation: Quat,
+    /// Scale per axis of the transformed frame (1 = unscaled).
+    pub scale: Vec3,
+}
+
+impl Default for Transform {
+    fn default() -> Self {
+        Self::IDENTITY
+    }
+}
+
+impl Transform {
+    /// The identity: no translation, no rotation, unit scale.
+    pub const IDENTITY: Self = Self {
+        translation: Vec3::ZERO,
+        rotation: Quat::IDENTITY,
+        scale: Vec3::ONE,
+    };
+
+    /// A transform from its three parts.
+    #[must_use]
+    pub const fn new(translation: Vec3, rotation: Quat, scale: Vec3) -> Self {
+        Self {
+            translation,
+            rotation,
+            scale,
+        }
+    }
+
+    /// A pure translation (centimetres).
+    #[must_use]
+    pub const fn from_translation(translation: Vec3) -> Self {
+        Self {
+            translation,
+            rotation: Quat::IDENTITY,
+            scale: Vec3::ONE,
+        }
+    }
+
+    /// A pure rotation.
+    #[must_use]
+    pub const fn from_rotation(rotation: Quat) -> Self {
+        Self {
+            translation: Vec3::ZERO,
+            rotation,
+            scale: Vec3::ONE,
+        }
+    }
+
+    /// A translation and a rotation with unit scale.
+    #[must_use]
+    pub const fn from_translation_rotation(translation: Vec3, rotation: Quat) -> Self {
+        Self {
+            translation,
+            rotation,
+            scale: Vec3::ONE,
+        }
+    }
+
+    /// Applies the transform to a point: `t + r · (s ⊙ p)`.
+    #[must_use]
+    pub fn transform_point(&self, point: Vec3) -> Vec3 {
+        self.translation + self.rotation * (self.scale * point)
+    }
+
+    /// Applies rotation and scale to a direction (no translation): `r · (s ⊙ v)`.
+    #[must_use]
+    pub fn transform_vector(&self, vector: Vec3) -> Vec3 {
+        self.rotation * (self.scale * vector)
+    }
+
+    /// The inverse transform: `self.inverse() * self` is the identity for uniform scale.
+    ///
+    /// A zero scale component has no inverse; it maps to a zero inverse scale on that
+    /// axis instead of infinity, so a collapsed bone never produces NaN.
+    #[must_use]
+    pub fn inverse(&self) -> Self {
+        let inv_scale = Vec3::new(
+            safe_recip(self.scale.x),
+            safe_recip(self.scale.y),
+            safe_recip(self.scale.z),
+        );
+        let inv_rotation = self.rotation.inverse();
+        let translation = inv_scale * (inv_rotation * -self.translation);
+        Self {
+            translation,
+            rotation: inv_rotation,
+            scale: inv_scale,
+        }
+    }
+
+    /// `self` expressed relative to `parent`: `parent.inverse() * self`
+    /// (RigVM's "Make Relative").
+    #[must_use]
+    pub fn relative_to(&self, parent: &Self) -> Self {
+        parent.inverse() * *self
+    }
+
+    /// True when every component is finite (no NaN or infinity).
+    #[must_use]
+    pub fn is_finite(&self) -> bool {
+        self.translation.is_finite() && self.rotation.is_finite() && self.scale.is_finite()
+    }
+
+    /// Linear interpolation of translation and scale, shortest-path slerp of rotation;
+    /// `alpha` 0 gives `self`, 1 gives `other`.
+    #[must_use]
+    pub fn interpolate(&self, other: &Self, alpha: f32) -> Self {
+        Self {
+            translation: self.translation.lerp(other.translation, alpha),
+            rotation: self.rotation.slerp(other.rotation, alpha).normalize(),
+            scale: self.scale.lerp(other.scale, alpha),
+        }
+    }
+}
+
+/// `1 / x`, or 0 where `x` is 0 (a collapsed axis stays collapsed instead of exploding).
+fn safe_recip(x: f32) -> f32 {
+    if x == 0.0 { 0.0 } else { 1.0 / x }
+}
+
+impl core::ops::Mul for Transform {
+    type Output = Transform;
+
+    /// Parent · child: applies `rhs` first, then `self`.
+    fn mul(self, rhs: Transform) -> Transform {
+        Transform {
+            translation: self.transform_point(rhs.translation),
+            rotation: (self.rotation * rhs.rotation).normalize(),
+            scale: self.scale * rhs.scale,
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use core::f32::consts::FRAC_PI_2;
+
+    fn assert_vec_near(a: Vec3, b: Vec3) {
+        assert!(
+            (a - b).length() < 1e-4,
+            "{a} != {b} (difference {})",
+            (a - b).length()
+        );
+    }
+
+    #[test]
+    fn composition_applies_the_child_first() {
+        // Parent: 90° about Z then move 10 along X. Child: 5 along X.
+        let parent = Transform::from_translation_rotation(
+            Vec3::new(10.0, 0.0, 0.0),
+            Quat::from_rotation_z(FRAC_PI_2),
+        );
+        let child = Transform::from_translation(Vec3::new(5.0, 0.0, 0.0));
+        let global = parent * child;
+        // The child's offset (5,0,0) is rotated to (0,5,0) and then moved by (10,0,0).
+        assert_vec_near(global.translation, Vec3::new(10.0, 5.0, 0.0));
+        assert_vec_near(global.transform_point(Vec3::X), Vec3::new(10.0, 6.0, 0.0));
+    }
+
+    #[test]
+    fn scale_applies_before_rotation() {
+        let t = Transform::new(
+            Vec3::ZERO,
+            Quat::from_rotation_z(FRAC_PI_2),
+            Vec3::new(2.0, 1.0, 1.0),
+        );
+        // (1,0,0) scaled to (2,0,0), then rotated 90° about Z to (0,2,0).
+        assert_vec_near(t.transform_point(Vec3::X), Vec3::new(0.0, 2.0, 0.0));
+    }
+
+    #[test]
+    fn inverse_undoes_the_transform() {
+        let t = Transform::new(
+            Vec3::new(3.0, -4.0, 12.0),
+            Quat::from_rotation_x(0.7) * Quat::from_rotation_z(-1.1),
+            Vec3::splat(2.0),
+        );
+        let p = Vec3::new(1.0, 2.0, 3.0);
+        assert_vec_near(t.inverse().transform_point(t.transform_point(p)), p);
+        let id = t.inverse() * t;
+        assert_vec_near(id.translation, Vec3::ZERO);
+        assert_vec_near(id.scale, Vec3::ONE);
+    }
+
+    #[test]
+    fn zero_scale_inverts_without_nan() {
+        let t = Transform::new(Vec3::X, Quat::IDENTITY, Vec3::new(0.0, 1.0, 1.0));
+        assert!(t.inverse().is_finite());
+    }
+
+    #[test]
+    fn relative_to_recovers_the_local_transform() {
+        let parent = Transform::from_translation_rotation(
+            Vec3::new(0.0, 0.0, 95.0),
+            Quat::from_rotation_y(-FRAC_PI_2),
+        );
+        let local = Transform::from_translation(Vec3::new(-40.0, 0.0, 0.0));
+        let global = parent * local;
+        // -40 along the parent's X, which points up (+Z) after -90° about Y: 95 - 40 = 55.
+        assert_vec_near(global.translation, Vec3::new(0.0, 0.0, 55.0));
+        let back = global.relative_to(&parent);
+        assert_vec_near(back.translation, local.translation);
+    }
+}
