@@ -1,1 +1,35 @@
-//! placeholder
+//! The Strider runtime: an immutable [`Program`] shared by any number of per-character
+//! [`Instance`]s, and the executor that runs a program's events on an instance.
+//!
+//! # Evaluation model
+//!
+//! ```text
+//!   Program (Send + Sync, shared)            Instance (one per character)
+//!   ┌───────────────────────────────┐        ┌──────────────────────────────┐
+//!   │ code: [Instr]  ── entry points│        │ slots: typed memory (vars,   │
+//!   │ operands: [u32] slot indices  │  run → │        node outputs, consts) │
+//!   │ initial slots (consts, vars)  │        │ pose: locals + lazy globals  │
+//!   │ variables, bone names         │        │ debug-draw buffer            │
+//!   └───────────────────────────────┘        └──────────────────────────────┘
+//! ```
+//!
+//! A program is a flat list of instructions in execution order. Each instruction is an
+//! [`Op`](strider_nodes::Op) and an offset into the operand list, whose entries index the
+//! instance's typed slot arrays (one array per value type). The executor is a `match` loop
+//! over ops: no allocation, no string or hash lookup, no dynamic dispatch per pin.
+//! Bones named in the graph are resolved to indices when an instance is created.
+//!
+//! Programs are built by the compiler (`strider-compiler`), which guarantees what the
+//! executor trusts: operand counts and slot types match the op.
+
+mod exec;
+pub mod instance;
+pub mod program;
+pub mod slots;
+
+pub use instance::{FrameInput, InputPose, Instance, InstantiateError, MissingBone, VariableError};
+pub use program::{
+    BoneLiteral, BoneSlot, Instr, Program, ProgramBuilder, VariableId, VariableInfo,
+};
+pub use slots::Slots;
+pub use strider_core::{DebugDraw, EmptyWorld, TraceHit, WorldQuery};

@@ -1,0 +1,289 @@
+//! Node kernels: the math of each node as a plain function of its inputs, with the
+//! fallback for degenerate input written down. No VM, no allocation (except where a
+//! kernel fills a caller-owned buffer).
+
+use glam::{Quat, Vec3};
+use strider_core::{BoneIndex, Skeleton, Transform};
+
+const DEG: f32 = core::f32::consts::PI / 180.0;
+
+/// `a / b`, or 0 when `b` is 0.
+#[must_use]
+#[inline]
+pub fn div_f(a: f32, b: f32) -> f32 {
+    if b == 0.0 { 0.0 } else { a / b }
+}
+
+/// `a / b` truncating, or 0 when `b` is 0 (and wrapping for `MIN / -1`).
+#[must_use]
+#[inline]
+pub fn div_i(a: i32, b: i32) -> i32 {
+    if b == 0 { 0 } else { a.wrapping_div(b) }
+}
+
+/// Component-wise `a / b`, 0 where a component of `b` is 0.
+#[must_use]
+#[inline]
+pub fn div_v(a: Vec3, b: Vec3) -> Vec3 {
+    Vec3::new(div_f(a.x, b.x), div_f(a.y, b.y), div_f(a.z, b.z))
+}
+
+/// Floored remainder `a − b·floor(a/b)`: the sign of `b`; 0 when `b` is 0.
+#[must_use]
+#[inline]
+pub fn mod_f(a: f32, b: f32) -> f32 {
+    if b == 0.0 {
+        0.0
+    } else {
+        a - b * (a / b).floor()
+    }
+}
+
+/// Floored integer remainder with the sign of `b`; 0 when `b` is 0.
+#[must_use]
+#[inline]
+pub fn mod_i(a: i32, b: i32) -> i32 {
+    if b == 0 {
+        0
+    } else {
+        let r = a.wrapping_rem(b);
+        if r != 0 && ((r < 0) != (b < 0)) {
+            r + b
+        } else {
+            r
+        }
+    }
+}
+
+/// `value − floor(value)`, in [0, 1). Guarded so rounding never returns exactly 1.
+#[must_use]
+#[inline]
+pub fn fract(value: f32) -> f32 {
+    let f = value - value.floor();
+    if f >= 1.0 { 0.0 } else { f }
+}
+
+/// `value` in `[min, max]`; `max` when the bounds are crossed.
+#[must_use]
+#[inline]
+pub fn clamp_f(value: f32, min: f32, max: f32) -> f32 {
+    value.max(min).min(max)
+}
+
+/// Linear remap of `value` from `[in_min, in_max]` to `[out_min, out_max]`, optionally
+/// clamped to the output range. A zero-width input range gives `out_min`.
+#[must_use]
+#[inline]
+pub fn remap(value: f32, in_min: f32, in_max: f32, out_min: f32, out_max: f32, clamp: bool) -> f32 {
+    let width = in_max - in_min;
+    if width == 0.0 {
+        return out_min;
+    }
+    let t = (value - in_min) / width;
+    let t = if clamp { t.clamp(0.0, 1.0) } else { t };
+    out_min + (out_max - out_min) * t
+}
+
+/// Sine of degrees.
+#[must_use]
+#[inline]
+pub fn sin_deg(degrees: f32) -> f32 {
+    (degrees * DEG).sin()
+}
+
+/// Cosine of degrees.
+#[must_use]
+#[inline]
+pub fn cos_deg(degrees: f32) -> f32 {
+    (degrees * DEG).cos()
+}
+
+/// Tangent of degrees.
+#[must_use]
+#[inline]
+pub fn tan_deg(degrees: f32) -> f32 {
+    (degrees * DEG).tan()
+}
+
+/// `atan2(y, x)` in degrees, (−180, 180]; 0 for `(0, 0)`.
+#[must_use]
+#[inline]
+pub fn atan2_deg(y: f32, x: f32) -> f32 {
+    y.atan2(x) / DEG
+}
+
+/// Square root, 0 for negative input.
+#[must_use]
+#[inline]
+pub fn sqrt(value: f32) -> f32 {
+    if value > 0.0 { value.sqrt() } else { 0.0 }
+}
+
+/// Float → int truncating; NaN → 0, saturating out of range (Rust's `as`).
+#[must_use]
+#[inline]
+pub fn to_int(value: f32) -> i32 {
+    value as i32
+}
+
+/// `value / |value|`, or zero when the length is zero or not finite.
+#[must_use]
+#[inline]
+pub fn unit_v(value: Vec3) -> Vec3 {
+    value.normalize_or_zero()
+}
+
+/// Normalised quaternion, identity when its length is zero or not finite.
+#[must_use]
+#[inline]
+pub fn unit_q(value: Quat) -> Quat {
+    let len = value.length();
+    if len > 0.0 && len.is_finite() {
+        value / len
+    } else {
+        Quat::IDENTITY
+    }
+}
+
+/// Rotation of `degrees` about `axis`; identity for a zero axis.
+#[must_use]
+#[inline]
+pub fn quat_from_axis_angle(axis: Vec3, degrees: f32) -> Quat {
+    match axis.try_normalize() {
+        Some(a) => Quat::from_axis_angle(a, degrees * DEG),
+        None => Quat::IDENTITY,
+    }
+}
+
+/// The Euler order for an `order` pin value (0 = XYZ, 1 = ZYX; others fall back to XYZ).
+#[must_use]
+#[inline]
+pub fn euler_order(order: i32) -> strider_core::EulerOrder {
+    if order == 1 {
+        strider_core::EulerOrder::ZYX
+    } else {
+        strider_core::EulerOrder::XYZ
+    }
+}
+
+/// Shortest-path slerp, normalised.
+#[must_use]
+#[inline]
+pub fn slerp(a: Quat, b: Quat, alpha: f32) -> Quat {
+    unit_q(a.slerp(b, alpha))
+}
+
+/// Blends `current` towards `target` by `weight` clamped to [0, 1]: lerp translation and
+/// scale, slerp rotation. Weight 1 returns `target` exactly.
+#[must_use]
+#[inline]
+pub fn blend_transform(current: Transform, target: Transform, weight: f32) -> Transform {
+    let w = weight.clamp(0.0, 1.0);
+    if w >= 1.0 {
+        target
+    } else if w <= 0.0 || w.is_nan() {
+        current
+    } else {
+        current.interpolate(&target, w)
+    }
+}
+
+/// Fills `out` with the descendants of `root` (not `root` itself), in hierarchy order, whose
+/// names contain `contains` and not `excludes`, case-insensitively. An empty `excludes`
+/// excludes nothing. Bones are written as indices.
+pub fn find_bones(
+    skeleton: &Skeleton,
+    root: BoneIndex,
+    contains: &str,
+    excludes: &str,
+    out: &mut Vec<i32>,
+) {
+    out.clear();
+    let contains = contains.to_lowercase();
+    let excludes = excludes.to_lowercase();
+    for i in root.get() + 1..skeleton.subtree_end(root) {
+        let name = skeleton.name(BoneIndex(i as u32)).to_lowercase();
+        if name.contains(&contains) && (excludes.is_empty() || !name.contains(&excludes)) {
+            out.push(i as i32);
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn division_by_zero_is_zero() {
+        assert_eq!(div_f(3.0, 0.0), 0.0);
+        assert_eq!(div_i(3, 0), 0);
+        assert_eq!(div_i(i32::MIN, -1), i32::MIN);
+        assert_eq!(
+            div_v(Vec3::new(1.0, 2.0, 3.0), Vec3::new(2.0, 0.0, -1.0)),
+            Vec3::new(0.5, 0.0, -3.0)
+        );
+    }
+
+    #[test]
+    fn floored_modulo_takes_the_divisor_sign() {
+        assert_eq!(mod_f(-1.0, 360.0), 359.0);
+        assert_eq!(mod_f(370.0, 360.0), 10.0);
+        assert_eq!(mod_i(-7, 3), 2);
+        assert_eq!(mod_i(7, -3), -2);
+        assert_eq!(mod_i(7, 0), 0);
+    }
+
+    #[test]
+    fn fract_stays_below_one() {
+        assert_eq!(fract(1.25), 0.25);
+        assert_eq!(fract(-0.25), 0.75);
+        assert!(fract(-1e-9) < 1.0);
+    }
+
+    #[test]
+    fn remap_by_hand() {
+        // 250 in 0..500 is halfway: halfway between 0 and 20 is 10.
+        assert_eq!(remap(250.0, 0.0, 500.0, 0.0, 20.0, true), 10.0);
+        assert_eq!(remap(1000.0, 0.0, 500.0, 0.0, 20.0, true), 20.0);
+        assert_eq!(remap(1000.0, 0.0, 500.0, 0.0, 20.0, false), 40.0);
+        // Reversed output range (200..300 → 65..45): 250 gives 55.
+        assert_eq!(remap(250.0, 200.0, 300.0, 65.0, 45.0, true), 55.0);
+        assert_eq!(remap(5.0, 1.0, 1.0, 7.0, 9.0, true), 7.0);
+    }
+
+    #[test]
+    fn degree_trigonometry() {
+        assert!((sin_deg(30.0) - 0.5).abs() < 1e-6);
+        assert!((cos_deg(60.0) - 0.5).abs() < 1e-6);
+        assert!((tan_deg(45.0) - 1.0).abs() < 1e-6);
+        assert!((atan2_deg(1.0, 1.0) - 45.0).abs() < 1e-5);
+        assert_eq!(atan2_deg(0.0, 0.0), 0.0);
+    }
+
+    #[test]
+    fn degenerate_vectors_and_rotations() {
+        assert_eq!(unit_v(Vec3::ZERO), Vec3::ZERO);
+        assert_eq!(unit_v(Vec3::new(f32::NAN, 0.0, 0.0)), Vec3::ZERO);
+        assert_eq!(unit_v(Vec3::new(0.0, 3.0, 4.0)), Vec3::new(0.0, 0.6, 0.8));
+        assert_eq!(unit_q(Quat::from_xyzw(0.0, 0.0, 0.0, 0.0)), Quat::IDENTITY);
+        assert_eq!(quat_from_axis_angle(Vec3::ZERO, 90.0), Quat::IDENTITY);
+        let q = quat_from_axis_angle(Vec3::new(0.0, 0.0, 2.0), 90.0);
+        assert!((q * Vec3::Y - Vec3::new(-1.0, 0.0, 0.0)).length() < 1e-6);
+        assert_eq!(sqrt(-4.0), 0.0);
+        assert_eq!(to_int(f32::NAN), 0);
+        assert_eq!(to_int(-2.7), -2);
+    }
+
+    #[test]
+    fn blend_weights() {
+        let a = Transform::from_translation(Vec3::ZERO);
+        let b = Transform::from_translation(Vec3::new(10.0, 0.0, 0.0));
+        assert_eq!(blend_transform(a, b, 1.0), b);
+        assert_eq!(blend_transform(a, b, 0.0), a);
+        assert_eq!(blend_transform(a, b, f32::NAN), a);
+        assert_eq!(
+            blend_transform(a, b, 0.25).translation,
+            Vec3::new(2.5, 0.0, 0.0)
+        );
+    }
+}

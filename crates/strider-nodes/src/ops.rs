@@ -1,0 +1,260 @@
+//! The instruction set: what a compiled node or control-flow step does.
+//!
+//! Each [`Op`] reads and writes typed slots whose indices follow in the program's operand
+//! list, in a fixed layout: for node ops, the overload's inputs in table order, then its
+//! outputs (see [`crate::table::Overload`]); for the control ops, the layout documented on
+//! the variant. The executor is a `match` over this enum.
+
+use crate::types::{Elem, ValueType};
+
+/// One instruction kind. Variants that carry a type are a family of ops whose handler is
+/// the same but for the slot array it touches.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum Op {
+    // ---- control (emitted by the compiler, not nodes) ----
+    /// Stop the event. No operands.
+    End,
+    /// `[target]`: continue at instruction `target`.
+    Jump,
+    /// `[cond: Bool, target]`: continue at `target` when `cond` is false.
+    JumpIfFalse,
+    /// `[array, counter: Int, element, index: Int, count: Int, exit]`: when
+    /// `counter >= len(array)` jump to `exit`; else load the element, set index and count,
+    /// and advance the counter.
+    ForEachNext(Elem),
+    /// `[counter: Int, count: Int, index: Int, exit]`: a counted loop step.
+    ForNext,
+    /// `[from, to]`: copy a slot of the given type (arrays keep their capacity).
+    Copy(ValueType),
+    /// `[from: Int, to: Float]`: the implicit lossless conversion.
+    IntToFloat,
+
+    // ---- float ----
+    /// Float sum.
+    AddF,
+    /// Float difference.
+    SubF,
+    /// Float product.
+    MulF,
+    /// Float quotient, 0 when dividing by 0.
+    DivF,
+    /// Smaller float.
+    MinF,
+    /// Larger float.
+    MaxF,
+    /// Absolute value.
+    AbsF,
+    /// Negation.
+    NegF,
+    /// Clamp to [min, max].
+    ClampF,
+    /// Sine of degrees.
+    SinF,
+    /// Cosine of degrees.
+    CosF,
+    /// Tangent of degrees.
+    TanF,
+    /// atan2 in degrees.
+    Atan2F,
+    /// Square root (0 for negatives).
+    SqrtF,
+    /// Power.
+    PowF,
+    /// Floored modulo.
+    FmodF,
+    /// Fractional part.
+    FractF,
+    /// Round down.
+    FloorF,
+    /// Round up.
+    CeilF,
+    /// Round to nearest.
+    RoundF,
+    /// Linear interpolation.
+    LerpF,
+    /// Linear remap.
+    RemapF,
+    /// Float → Int, truncating.
+    ToInt,
+    /// Int → Float.
+    ToFloat,
+
+    // ---- int ----
+    /// Int sum (wrapping).
+    AddI,
+    /// Int difference (wrapping).
+    SubI,
+    /// Int product (wrapping).
+    MulI,
+    /// Int quotient, 0 when dividing by 0.
+    DivI,
+    /// Floored modulo, 0 for a zero divisor.
+    ModI,
+    /// Smaller int.
+    MinI,
+    /// Larger int.
+    MaxI,
+    /// Absolute value (wrapping).
+    AbsI,
+    /// Negation (wrapping).
+    NegI,
+    /// Clamp to [min, max].
+    ClampI,
+
+    // ---- bool and comparisons ----
+    /// Logical and.
+    And,
+    /// Logical or.
+    Or,
+    /// Logical not.
+    Not,
+    /// Logical exclusive or.
+    Xor,
+    /// `a == b` for the given scalar type.
+    Equals(Elem),
+    /// `a != b` for the given scalar type.
+    NotEquals(Elem),
+    /// Float `a < b`.
+    LessF,
+    /// Float `a <= b`.
+    LessEqualF,
+    /// Float `a > b`.
+    GreaterF,
+    /// Float `a >= b`.
+    GreaterEqualF,
+    /// Int `a < b`.
+    LessI,
+    /// Int `a <= b`.
+    LessEqualI,
+    /// Int `a > b`.
+    GreaterI,
+    /// Int `a >= b`.
+    GreaterEqualI,
+    /// `[condition, if_true, if_false, result]` of the given type.
+    Select(ValueType),
+
+    // ---- vector ----
+    /// Vector sum.
+    AddV,
+    /// Vector difference.
+    SubV,
+    /// Component-wise product.
+    MulV,
+    /// Component-wise quotient, 0 where the divisor is 0.
+    DivV,
+    /// Vector times float.
+    ScaleV,
+    /// Negation.
+    NegV,
+    /// Component-wise minimum.
+    MinV,
+    /// Component-wise maximum.
+    MaxV,
+    /// Component-wise absolute value.
+    AbsV,
+    /// Component-wise clamp.
+    ClampV,
+    /// Linear interpolation.
+    LerpV,
+    /// Length.
+    LengthV,
+    /// Distance between points.
+    DistanceV,
+    /// Unit vector, zero for a zero vector.
+    UnitV,
+    /// Dot product.
+    DotV,
+    /// Cross product.
+    CrossV,
+    /// `(x, y, z)` from floats.
+    MakeVector,
+    /// Floats from `(x, y, z)`.
+    BreakVector,
+
+    // ---- rotation ----
+    /// Quaternion from axis and angle (degrees).
+    QuatFromAxisAngle,
+    /// Quaternion from Euler degrees and order.
+    QuatFromEuler,
+    /// Euler degrees from a quaternion and order.
+    QuatToEuler,
+    /// Quaternion product (parent · child).
+    MulQ,
+    /// Inverse rotation.
+    InverseQ,
+    /// Normalised quaternion.
+    UnitQ,
+    /// Shortest-path spherical interpolation.
+    SlerpQ,
+    /// Rotate a vector.
+    RotateVector,
+
+    // ---- transform ----
+    /// Transform from parts.
+    MakeTransform,
+    /// Parts of a transform.
+    BreakTransform,
+    /// Composition parent · child.
+    MulT,
+    /// Inverse transform.
+    InverseT,
+    /// `global` relative to `parent`.
+    MakeRelative,
+    /// `local` placed under `parent`.
+    MakeAbsolute,
+    /// Transform a point.
+    TransformPoint,
+    /// Transform a direction.
+    TransformVector,
+
+    // ---- hierarchy and host ----
+    /// Read a bone transform.
+    GetTransform,
+    /// Write a bone transform.
+    SetTransform,
+    /// A bone's parent.
+    GetParent,
+    /// Descendants whose name matches.
+    FindBones,
+    /// Seconds since the last frame.
+    DeltaTime,
+    /// Component-to-world transform of this frame.
+    WorldTransform,
+
+    /// Line trace against the host world.
+    LineTrace,
+    /// Sphere trace against the host world.
+    SphereTrace,
+
+    // ---- arrays ----
+    /// Element at an index.
+    ArrayAt(Elem),
+    /// Number of elements.
+    ArrayCount(Elem),
+    /// Overwrite an element of an array variable.
+    ArraySetAt(Elem),
+    /// Append to an array variable.
+    ArrayAdd(Elem),
+    /// Empty an array variable.
+    ArrayReset(Elem),
+
+    // ---- debug ----
+    /// Draw a point.
+    DrawPoint,
+    /// Draw a line.
+    DrawLine,
+    /// Draw a transform's axes.
+    DrawTransform,
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn an_op_fits_in_two_bytes() {
+        // The executor's instruction is an `Op` plus a 32-bit operand offset; keep it at 8
+        // bytes so a program stays dense in cache.
+        assert!(std::mem::size_of::<Op>() <= 2);
+    }
+}

@@ -1,0 +1,453 @@
+//! The executor: a `match` loop over a program's instructions.
+//!
+//! Handlers trust the compiler: operand counts and slot types match each op (checked by
+//! the compiler's tests and debug assertions, not at run time).
+
+use crate::program::{Instr, Program};
+use crate::slots::Slots;
+use glam::{Quat, Vec3};
+use strider_core::{BoneIndex, DebugColor, DebugDraw, DebugPrimitive, Pose, Transform, WorldQuery};
+use strider_nodes::kernels as k;
+use strider_nodes::{Elem, Op, ValueType};
+
+/// What one run of an event works on.
+pub(crate) struct Ctx<'a> {
+    pub slots: &'a mut Slots,
+    pub pose: &'a mut Pose,
+    pub debug: &'a mut DebugDraw,
+    pub world: &'a dyn WorldQuery,
+    pub dt: f32,
+    pub to_world: Transform,
+}
+
+/// A bone slot's value as an index into the pose, if it names a bone.
+#[inline]
+fn bone(pose: &Pose, value: i32) -> Option<BoneIndex> {
+    (value >= 0 && (value as usize) < pose.len()).then_some(BoneIndex(value as u32))
+}
+
+fn color(v: Vec3) -> DebugColor {
+    DebugColor([v.x, v.y, v.z, 1.0])
+}
+
+/// Dispatches a per-element-type handler: `$m!(scalars, arrays, zero)`.
+macro_rules! by_elem {
+    ($e:expr, $s:expr, $m:ident) => {
+        match $e {
+            Elem::Bool => $m!($s.bools, $s.bool_arrays, false),
+            Elem::Int => $m!($s.ints, $s.int_arrays, 0),
+            Elem::Float => $m!($s.floats, $s.float_arrays, 0.0),
+            Elem::Vec3 => $m!($s.vec3s, $s.vec3_arrays, Vec3::ZERO),
+            Elem::Quat => $m!($s.quats, $s.quat_arrays, Quat::IDENTITY),
+            Elem::Transform => $m!($s.transforms, $s.transform_arrays, Transform::IDENTITY),
+            Elem::Bone => $m!($s.bones, $s.bone_arrays, -1),
+        }
+    };
+}
+
+/// Copies within one slot array; arrays reuse the destination's memory.
+fn copy_vec<T: Clone>(v: &mut [Vec<T>], from: usize, to: usize) {
+    if from != to {
+        let src = std::mem::take(&mut v[from]);
+        v[to].clone_from(&src);
+        v[from] = src;
+    }
+}
+
+/// Runs from `entry` until an `End` instruction.
+pub(crate) fn run(program: &Program, entry: u32, cx: &mut Ctx<'_>) {
+    let code: &[Instr] = &program.code;
+    let operands: &[u32] = &program.operands;
+    let s = &mut *cx.slots;
+    let mut pc = entry as usize;
+    loop {
+        let Instr { op, args } = code[pc];
+        pc += 1;
+        let o = &operands[args as usize..];
+        macro_rules! at {
+            ($k:expr) => {
+                o[$k] as usize
+            };
+        }
+        macro_rules! f {
+            ($k:expr) => {
+                s.floats[at!($k)]
+            };
+        }
+        macro_rules! i {
+            ($k:expr) => {
+                s.ints[at!($k)]
+            };
+        }
+        macro_rules! b {
+            ($k:expr) => {
+                s.bools[at!($k)]
+            };
+        }
+        macro_rules! v {
+            ($k:expr) => {
+                s.vec3s[at!($k)]
+            };
+        }
+        macro_rules! q {
+            ($k:expr) => {
+                s.quats[at!($k)]
+            };
+        }
+        macro_rules! t {
+            ($k:expr) => {
+                s.transforms[at!($k)]
+            };
+        }
+        match op {
+            Op::End => return,
+            Op::Jump => pc = o[0] as usize,
+            Op::JumpIfFalse => {
+                if !b!(0) {
+                    pc = o[1] as usize;
+                }
+            }
+            Op::ForEachNext(e) => {
+                let counter = i!(1);
+                macro_rules! next {
+                    ($sc:expr, $ar:expr, $zero:expr) => {{
+                        let len = $ar[at!(0)].len();
+                        if counter < 0 || counter as usize >= len {
+                            pc = o[5] as usize;
+                        } else {
+                            $sc[at!(2)] = $ar[at!(0)][counter as usize];
+                            i!(3) = counter;
+                            i!(4) = len as i32;
+                            i!(1) = counter + 1;
+                        }
+                    }};
+                }
+                by_elem!(e, s, next);
+            }
+            Op::ForNext => {
+                let counter = i!(0);
+                if counter >= i!(1) {
+                    pc = o[3] as usize;
+                } else {
+                    i!(2) = counter;
+                    i!(0) = counter + 1;
+                }
+            }
+            Op::Copy(ty) => {
+                let (from, to) = (at!(0), at!(1));
+                match ty {
+                    ValueType::Bool => s.bools[to] = s.bools[from],
+                    ValueType::Int => s.ints[to] = s.ints[from],
+                    ValueType::Float => s.floats[to] = s.floats[from],
+                    ValueType::Vec3 => s.vec3s[to] = s.vec3s[from],
+                    ValueType::Quat => s.quats[to] = s.quats[from],
+                    ValueType::Transform => s.transforms[to] = s.transforms[from],
+                    ValueType::Bone => s.bones[to] = s.bones[from],
+                    ValueType::Name => s.names[to] = s.names[from],
+                    ValueType::Array(e) => {
+                        macro_rules! copy {
+                            ($sc:expr, $ar:expr, $zero:expr) => {
+                                copy_vec(&mut $ar, from, to)
+                            };
+                        }
+                        by_elem!(e, s, copy);
+                    }
+                }
+            }
+            Op::IntToFloat | Op::ToFloat => f!(1) = i!(0) as f32,
+
+            Op::AddF => f!(2) = f!(0) + f!(1),
+            Op::SubF => f!(2) = f!(0) - f!(1),
+            Op::MulF => f!(2) = f!(0) * f!(1),
+            Op::DivF => f!(2) = k::div_f(f!(0), f!(1)),
+            Op::MinF => f!(2) = f!(0).min(f!(1)),
+            Op::MaxF => f!(2) = f!(0).max(f!(1)),
+            Op::AbsF => f!(1) = f!(0).abs(),
+            Op::NegF => f!(1) = -f!(0),
+            Op::ClampF => f!(3) = k::clamp_f(f!(0), f!(1), f!(2)),
+            Op::SinF => f!(1) = k::sin_deg(f!(0)),
+            Op::CosF => f!(1) = k::cos_deg(f!(0)),
+            Op::TanF => f!(1) = k::tan_deg(f!(0)),
+            Op::Atan2F => f!(2) = k::atan2_deg(f!(0), f!(1)),
+            Op::SqrtF => f!(1) = k::sqrt(f!(0)),
+            Op::PowF => f!(2) = f!(0).powf(f!(1)),
+            Op::FmodF => f!(2) = k::mod_f(f!(0), f!(1)),
+            Op::FractF => f!(1) = k::fract(f!(0)),
+            Op::FloorF => f!(1) = f!(0).floor(),
+            Op::CeilF => f!(1) = f!(0).ceil(),
+            Op::RoundF => f!(1) = f!(0).round(),
+            Op::LerpF => f!(3) = f!(0) + (f!(1) - f!(0)) * f!(2),
+            Op::RemapF => f!(6) = k::remap(f!(0), f!(1), f!(2), f!(3), f!(4), b!(5)),
+            Op::ToInt => i!(1) = k::to_int(f!(0)),
+
+            Op::AddI => i!(2) = i!(0).wrapping_add(i!(1)),
+            Op::SubI => i!(2) = i!(0).wrapping_sub(i!(1)),
+            Op::MulI => i!(2) = i!(0).wrapping_mul(i!(1)),
+            Op::DivI => i!(2) = k::div_i(i!(0), i!(1)),
+            Op::ModI => i!(2) = k::mod_i(i!(0), i!(1)),
+            Op::MinI => i!(2) = i!(0).min(i!(1)),
+            Op::MaxI => i!(2) = i!(0).max(i!(1)),
+            Op::AbsI => i!(1) = i!(0).wrapping_abs(),
+            Op::NegI => i!(1) = i!(0).wrapping_neg(),
+            Op::ClampI => i!(3) = i!(0).max(i!(1)).min(i!(2)),
+
+            Op::And => b!(2) = b!(0) && b!(1),
+            Op::Or => b!(2) = b!(0) || b!(1),
+            Op::Xor => b!(2) = b!(0) != b!(1),
+            Op::Not => b!(1) = !b!(0),
+            Op::Equals(e) | Op::NotEquals(e) => {
+                let eq = match e {
+                    Elem::Float => f!(0) == f!(1),
+                    Elem::Int => i!(0) == i!(1),
+                    Elem::Bool => b!(0) == b!(1),
+                    Elem::Bone => s.bones[at!(0)] == s.bones[at!(1)],
+                    Elem::Vec3 => v!(0) == v!(1),
+                    Elem::Quat => q!(0) == q!(1),
+                    Elem::Transform => t!(0) == t!(1),
+                };
+                b!(2) = eq == matches!(op, Op::Equals(_));
+            }
+            Op::LessF => b!(2) = f!(0) < f!(1),
+            Op::LessEqualF => b!(2) = f!(0) <= f!(1),
+            Op::GreaterF => b!(2) = f!(0) > f!(1),
+            Op::GreaterEqualF => b!(2) = f!(0) >= f!(1),
+            Op::LessI => b!(2) = i!(0) < i!(1),
+            Op::LessEqualI => b!(2) = i!(0) <= i!(1),
+            Op::GreaterI => b!(2) = i!(0) > i!(1),
+            Op::GreaterEqualI => b!(2) = i!(0) >= i!(1),
+            Op::Select(ty) => {
+                let from = if b!(0) { at!(1) } else { at!(2) };
+                let to = at!(3);
+                match ty {
+                    ValueType::Bool => s.bools[to] = s.bools[from],
+                    ValueType::Int => s.ints[to] = s.ints[from],
+                    ValueType::Float => s.floats[to] = s.floats[from],
+                    ValueType::Vec3 => s.vec3s[to] = s.vec3s[from],
+                    ValueType::Quat => s.quats[to] = s.quats[from],
+                    ValueType::Transform => s.transforms[to] = s.transforms[from],
+                    ValueType::Bone => s.bones[to] = s.bones[from],
+                    ValueType::Name => s.names[to] = s.names[from],
+                    ValueType::Array(e) => {
+                        macro_rules! copy {
+                            ($sc:expr, $ar:expr, $zero:expr) => {
+                                copy_vec(&mut $ar, from, to)
+                            };
+                        }
+                        by_elem!(e, s, copy);
+                    }
+                }
+            }
+
+            Op::AddV => v!(2) = v!(0) + v!(1),
+            Op::SubV => v!(2) = v!(0) - v!(1),
+            Op::MulV => v!(2) = v!(0) * v!(1),
+            Op::DivV => v!(2) = k::div_v(v!(0), v!(1)),
+            Op::ScaleV => v!(2) = v!(0) * f!(1),
+            Op::NegV => v!(1) = -v!(0),
+            Op::MinV => v!(2) = v!(0).min(v!(1)),
+            Op::MaxV => v!(2) = v!(0).max(v!(1)),
+            Op::AbsV => v!(1) = v!(0).abs(),
+            Op::ClampV => v!(3) = v!(0).max(v!(1)).min(v!(2)),
+            Op::LerpV => v!(3) = v!(0).lerp(v!(1), f!(2)),
+            Op::LengthV => f!(1) = v!(0).length(),
+            Op::DistanceV => f!(2) = v!(0).distance(v!(1)),
+            Op::UnitV => v!(1) = k::unit_v(v!(0)),
+            Op::DotV => f!(2) = v!(0).dot(v!(1)),
+            Op::CrossV => v!(2) = v!(0).cross(v!(1)),
+            Op::MakeVector => v!(3) = Vec3::new(f!(0), f!(1), f!(2)),
+            Op::BreakVector => {
+                let x = v!(0);
+                f!(1) = x.x;
+                f!(2) = x.y;
+                f!(3) = x.z;
+            }
+
+            Op::QuatFromAxisAngle => q!(2) = k::quat_from_axis_angle(v!(0), f!(1)),
+            Op::QuatFromEuler => {
+                q!(2) = strider_core::euler::quat_from_euler(v!(0), k::euler_order(i!(1)));
+            }
+            Op::QuatToEuler => {
+                v!(2) = strider_core::euler::euler_from_quat(q!(0), k::euler_order(i!(1)));
+            }
+            Op::MulQ => q!(2) = k::unit_q(q!(0) * q!(1)),
+            Op::InverseQ => q!(1) = k::unit_q(q!(0)).inverse(),
+            Op::UnitQ => q!(1) = k::unit_q(q!(0)),
+            Op::SlerpQ => q!(3) = k::slerp(q!(0), q!(1), f!(2)),
+            Op::RotateVector => v!(2) = q!(0) * v!(1),
+
+            Op::MakeTransform => t!(3) = Transform::new(v!(0), k::unit_q(q!(1)), v!(2)),
+            Op::BreakTransform => {
+                let x = t!(0);
+                v!(1) = x.translation;
+                q!(2) = x.rotation;
+                v!(3) = x.scale;
+            }
+            Op::MulT => t!(2) = t!(0) * t!(1),
+            Op::InverseT => t!(1) = t!(0).inverse(),
+            Op::MakeRelative => t!(2) = t!(0).relative_to(&t!(1)),
+            Op::MakeAbsolute => t!(2) = t!(1) * t!(0),
+            Op::TransformPoint => v!(2) = t!(0).transform_point(v!(1)),
+            Op::TransformVector => v!(2) = t!(0).transform_vector(v!(1)),
+
+            Op::GetTransform => {
+                let result = match bone(cx.pose, s.bones[at!(0)]) {
+                    None => Transform::IDENTITY,
+                    Some(bi) => {
+                        let global = i!(1) == 0;
+                        match (b!(2), global) {
+                            (true, true) => cx.pose.skeleton().rest_global(bi),
+                            (true, false) => cx.pose.skeleton().rest_local(bi),
+                            (false, true) => cx.pose.global(bi),
+                            (false, false) => cx.pose.local(bi),
+                        }
+                    }
+                };
+                t!(3) = result;
+            }
+            Op::SetTransform => {
+                if let Some(bi) = bone(cx.pose, s.bones[at!(0)]) {
+                    let weight = f!(4);
+                    if i!(2) == 0 {
+                        let value = k::blend_transform(cx.pose.global(bi), t!(1), weight);
+                        cx.pose.set_global(bi, value, b!(3));
+                    } else {
+                        let value = k::blend_transform(cx.pose.local(bi), t!(1), weight);
+                        cx.pose.set_local(bi, value);
+                    }
+                }
+            }
+            Op::GetParent => {
+                s.bones[at!(1)] = match bone(cx.pose, s.bones[at!(0)]) {
+                    Some(bi) => cx.pose.skeleton().parent(bi).map_or(-1, |p| p.0 as i32),
+                    None => -1,
+                };
+            }
+            Op::FindBones => {
+                let out = &mut s.bone_arrays[at!(3)];
+                match bone(cx.pose, s.bones[at!(0)]) {
+                    Some(root) => {
+                        let contains = &program.texts[s.names[at!(1)] as usize];
+                        let excludes = &program.texts[s.names[at!(2)] as usize];
+                        k::find_bones(cx.pose.skeleton(), root, contains, excludes, out);
+                    }
+                    None => out.clear(),
+                }
+            }
+            Op::DeltaTime => f!(0) = cx.dt,
+            Op::WorldTransform => t!(0) = cx.to_world,
+            Op::LineTrace | Op::SphereTrace => {
+                let (start, end) = (v!(0), v!(1));
+                let (ws, we) = (
+                    cx.to_world.transform_point(start),
+                    cx.to_world.transform_point(end),
+                );
+                let (hit, outs) = if op == Op::LineTrace {
+                    (cx.world.line_trace(ws, we), 2)
+                } else {
+                    (cx.world.sphere_trace(ws, we, f!(2).max(0.0)), 3)
+                };
+                let hit = hit.filter(|h| {
+                    h.point.is_finite() && h.normal.is_finite() && h.distance.is_finite()
+                });
+                match hit {
+                    Some(h) => {
+                        let from_world = cx.to_world.inverse();
+                        b!(outs) = true;
+                        v!(outs + 1) = from_world.transform_point(h.point);
+                        v!(outs + 2) = k::unit_v(from_world.transform_vector(h.normal));
+                        f!(outs + 3) = h.distance;
+                    }
+                    None => {
+                        b!(outs) = false;
+                        v!(outs + 1) = end;
+                        v!(outs + 2) = Vec3::Z;
+                        f!(outs + 3) = start.distance(end);
+                    }
+                }
+            }
+
+            Op::ArrayAt(e) => {
+                let index = i!(1);
+                macro_rules! get {
+                    ($sc:expr, $ar:expr, $zero:expr) => {{
+                        let a = &$ar[at!(0)];
+                        $sc[at!(2)] = if index >= 0 {
+                            a.get(index as usize).copied().unwrap_or($zero)
+                        } else {
+                            $zero
+                        };
+                    }};
+                }
+                by_elem!(e, s, get);
+            }
+            Op::ArrayCount(e) => {
+                macro_rules! count {
+                    ($sc:expr, $ar:expr, $zero:expr) => {
+                        s.ints[at!(1)] = $ar[at!(0)].len() as i32
+                    };
+                }
+                by_elem!(e, s, count);
+            }
+            Op::ArraySetAt(e) => {
+                let index = i!(1);
+                macro_rules! set {
+                    ($sc:expr, $ar:expr, $zero:expr) => {{
+                        let value = $sc[at!(2)];
+                        if index >= 0 {
+                            if let Some(x) = $ar[at!(0)].get_mut(index as usize) {
+                                *x = value;
+                            }
+                        }
+                    }};
+                }
+                by_elem!(e, s, set);
+            }
+            Op::ArrayAdd(e) => {
+                macro_rules! add {
+                    ($sc:expr, $ar:expr, $zero:expr) => {{
+                        let value = $sc[at!(1)];
+                        $ar[at!(0)].push(value);
+                    }};
+                }
+                by_elem!(e, s, add);
+            }
+            Op::ArrayReset(e) => {
+                macro_rules! reset {
+                    ($sc:expr, $ar:expr, $zero:expr) => {
+                        $ar[at!(0)].clear()
+                    };
+                }
+                by_elem!(e, s, reset);
+            }
+
+            Op::DrawPoint => {
+                if cx.debug.is_enabled() {
+                    cx.debug.push(DebugPrimitive::Point {
+                        position: v!(0),
+                        size: f!(1),
+                        color: color(v!(2)),
+                    });
+                }
+            }
+            Op::DrawLine => {
+                if cx.debug.is_enabled() {
+                    cx.debug.push(DebugPrimitive::Line {
+                        start: v!(0),
+                        end: v!(1),
+                        thickness: f!(2),
+                        color: color(v!(3)),
+                    });
+                }
+            }
+            Op::DrawTransform => {
+                if cx.debug.is_enabled() {
+                    cx.debug.push(DebugPrimitive::Axes {
+                        transform: t!(0),
+                        size: f!(1),
+                        thickness: f!(2),
+                    });
+                }
+            }
+        }
+    }
+}

@@ -1,0 +1,383 @@
+//! [`Instance`]: one character's state for a shared [`Program`].
+
+use crate::exec::{self, Ctx};
+use crate::program::{BoneSlot, Program, VariableId};
+use crate::slots::Slots;
+use std::fmt;
+use std::sync::Arc;
+use strider_core::{DebugDraw, EmptyWorld, Pose, Skeleton, Transform, WorldQuery};
+use strider_nodes::{Value, ValueType};
+
+/// The pose an instance starts each frame from.
+#[derive(Clone, Copy, Debug, Default)]
+pub enum InputPose<'a> {
+    /// Start from the skeleton's rest pose (a pure procedural rig).
+    #[default]
+    Rest,
+    /// Keep last frame's output pose.
+    Previous,
+    /// Start from these local transforms, in the skeleton's storage order (an animation
+    /// the rig post-processes). Missing entries keep the previous value.
+    Locals(&'a [Transform]),
+}
+
+/// What the host gives each frame.
+#[derive(Clone, Copy, Debug)]
+pub struct FrameInput<'a> {
+    /// Seconds since the previous frame. NaN, infinite or negative values are treated as 0.
+    pub dt: f32,
+    /// Where the host placed the character: component (rig) space to world space, cm.
+    /// A transform with NaN or infinity is ignored (last frame's is kept).
+    pub component_to_world: Transform,
+    /// The pose to start from.
+    pub pose: InputPose<'a>,
+}
+
+impl Default for FrameInput<'_> {
+    fn default() -> Self {
+        Self {
+            dt: 0.0,
+            component_to_world: Transform::IDENTITY,
+            pose: InputPose::Rest,
+        }
+    }
+}
+
+/// A bone the graph names that the skeleton lacks.
+#[derive(Clone, Debug, PartialEq)]
+pub struct MissingBone {
+    /// The name in the graph.
+    pub name: String,
+    /// `file:line:col` and node/pin of the reference.
+    pub location: String,
+    /// The closest bone name of the skeleton.
+    pub suggestion: Option<String>,
+}
+
+/// An instance could not be created for this skeleton.
+#[derive(Clone, Debug, PartialEq, thiserror::Error)]
+pub enum InstantiateError {
+    /// Bones named in the graph are missing from the skeleton.
+    #[error("{}", fmt_missing(.skeleton, .missing))]
+    MissingBones {
+        /// The skeleton's name or path, for the message.
+        skeleton: String,
+        /// Every missing reference.
+        missing: Vec<MissingBone>,
+    },
+}
+
+fn fmt_missing(skeleton: &str, missing: &[MissingBone]) -> String {
+    let mut out = String::new();
+    for (i, m) in missing.iter().enumerate() {
+        if i > 0 {
+            out.push('\n');
+        }
+        out.push_str(&format!(
+            "{}: error: unknown bone `{}` in skeleton `{skeleton}`",
+            m.location, m.name
+        ));
+        if let Some(s) = &m.suggestion {
+            out.push_str(&format!("\n  hint: did you mean `{s}`?"));
+        }
+    }
+    out
+}
+
+/// A variable could not be set.
+#[derive(Clone, Debug, PartialEq, thiserror::Error)]
+pub enum VariableError {
+    /// The value's type is not the variable's.
+    #[error("variable `{name}` is {expected}, not {found}")]
+    TypeMismatch {
+        /// The variable.
+        name: String,
+        /// Its type.
+        expected: ValueType,
+        /// The value's type.
+        found: ValueType,
+    },
+    /// A bone value names a bone the skeleton lacks.
+    #[error("variable `{name}`: unknown bone `{bone}`")]
+    UnknownBone {
+        /// The variable.
+        name: String,
+        /// The bone name.
+        bone: String,
+    },
+}
+
+/// One character running a program: all mutable state, allocated at creation.
+///
+/// After the first frames (arrays and debug buffers reach their working size),
+/// [`Instance::run_forward`] performs no heap allocation.
+#[derive(Clone, Debug)]
+pub struct Instance {
+    program: Arc<Program>,
+    slots: Slots,
+    pose: Pose,
+    debug: DebugDraw,
+    to_world: Transform,
+}
+
+impl Instance {
+    /// Creates an instance on `skeleton`: resolves the bone names of the graph, starts
+    /// from the rest pose and runs the `construction` event (with no world geometry).
+    ///
+    /// # Errors
+    /// [`InstantiateError::MissingBones`] listing every bone the graph names that the
+    /// skeleton lacks, with where the graph names it.
+    pub fn new(program: Arc<Program>, skeleton: Arc<Skeleton>) -> Result<Self, InstantiateError> {
+        let slots = program.initial.clone();
+        let mut instance = Self {
+            program,
+            slots,
+            pose: Pose::new(skeleton),
+            debug: DebugDraw::new(false),
+            to_world: Transform::IDENTITY,
+        };
+        instance.resolve_bones("skeleton")?;
+        instance.run_construction(&EmptyWorld);
+        Ok(instance)
+    }
+
+    /// Moves the instance to another skeleton: resolves bones again, resets the pose and
+    /// every variable that is not tunable, and re-runs `construction`. Tunable values are
+    /// kept. On error the instance is unchanged.
+    ///
+    /// # Errors
+    /// As [`Instance::new`].
+    pub fn rebind(
+        &mut self,
+        skeleton: Arc<Skeleton>,
+        world: &dyn WorldQuery,
+    ) -> Result<(), InstantiateError> {
+        let mut next = Self {
+            program: Arc::clone(&self.program),
+            slots: self.program.initial.clone(),
+            pose: Pose::new(skeleton),
+            debug: DebugDraw::new(false),
+            to_world: self.to_world,
+        };
+        next.resolve_bones("skeleton")?;
+        for v in self
+            .program
+            .variables
+            .iter()
+            .filter(|v| v.tunable.is_some())
+        {
+            copy_slot(&self.slots, &mut next.slots, v.ty, v.slot);
+        }
+        next.debug = std::mem::take(&mut self.debug);
+        *self = next;
+        self.run_construction(world);
+        Ok(())
+    }
+
+    fn resolve_bones(&mut self, skeleton_name: &str) -> Result<(), InstantiateError> {
+        let skeleton = Arc::clone(self.pose.skeleton());
+        let mut missing = Vec::new();
+        for lit in &self.program.bones {
+            match skeleton.find(&lit.name) {
+                Some(b) => match lit.slot {
+                    BoneSlot::Scalar(s) => self.slots.bones[s as usize] = b.0 as i32,
+                    BoneSlot::ArrayElement { slot, index } => {
+                        self.slots.bone_arrays[slot as usize][index as usize] = b.0 as i32;
+                    }
+                },
+                None => missing.push(MissingBone {
+                    name: lit.name.clone(),
+                    location: lit.location.clone(),
+                    suggestion: skeleton.suggest(&lit.name),
+                }),
+            }
+        }
+        if missing.is_empty() {
+            Ok(())
+        } else {
+            Err(InstantiateError::MissingBones {
+                skeleton: skeleton_name.to_string(),
+                missing,
+            })
+        }
+    }
+
+    /// The program this instance runs.
+    #[must_use]
+    pub fn program(&self) -> &Arc<Program> {
+        &self.program
+    }
+
+    /// Runs the `construction` event again on the rest pose (dt = 0).
+    pub fn run_construction(&mut self, world: &dyn WorldQuery) {
+        self.pose.reset_to_rest();
+        self.debug.clear();
+        let entry = self.program.construction;
+        let mut cx = Ctx {
+            slots: &mut self.slots,
+            pose: &mut self.pose,
+            debug: &mut self.debug,
+            world,
+            dt: 0.0,
+            to_world: self.to_world,
+        };
+        exec::run(&self.program, entry, &mut cx);
+    }
+
+    /// Runs one frame of the `forward` event.
+    ///
+    /// `debug` turns debug drawing on for this frame; the primitives are then available
+    /// from [`Instance::debug_draw`] until the next frame.
+    pub fn run_forward(&mut self, input: &FrameInput<'_>, world: &dyn WorldQuery, debug: bool) {
+        let dt = if input.dt.is_finite() && input.dt > 0.0 {
+            input.dt
+        } else {
+            0.0
+        };
+        if input.component_to_world.is_finite() {
+            self.to_world = input.component_to_world;
+        }
+        match input.pose {
+            InputPose::Rest => self.pose.reset_to_rest(),
+            InputPose::Previous => {}
+            InputPose::Locals(locals) => self.pose.set_locals(locals),
+        }
+        if self.debug.is_enabled() != debug {
+            self.debug.set_enabled(debug);
+        }
+        self.debug.clear();
+        let entry = self.program.forward;
+        let mut cx = Ctx {
+            slots: &mut self.slots,
+            pose: &mut self.pose,
+            debug: &mut self.debug,
+            world,
+            dt,
+            to_world: self.to_world,
+        };
+        exec::run(&self.program, entry, &mut cx);
+    }
+
+    /// The output pose. Call [`Pose::globals`] on it for rig-space transforms.
+    #[must_use]
+    pub fn pose(&self) -> &Pose {
+        &self.pose
+    }
+
+    /// The output pose, mutable (globals are computed lazily).
+    pub fn pose_mut(&mut self) -> &mut Pose {
+        &mut self.pose
+    }
+
+    /// Debug primitives drawn by the last frame (empty unless it ran with `debug`).
+    #[must_use]
+    pub fn debug_draw(&self) -> &DebugDraw {
+        &self.debug
+    }
+
+    /// The instance's slot memory (for inspection).
+    #[must_use]
+    pub fn slots(&self) -> &Slots {
+        &self.slots
+    }
+
+    /// A variable's current value. Bones read back by name. Allocates for arrays and
+    /// bones: for tools, not for the frame loop.
+    #[must_use]
+    pub fn variable(&self, id: VariableId) -> Value {
+        let info = self.program.variable(id);
+        let skeleton = self.pose.skeleton();
+        let bone_name = |b: i32| {
+            (b >= 0)
+                .then(|| skeleton.names().get(b as usize).cloned())
+                .flatten()
+        };
+        match info.ty {
+            ValueType::Bone => Value::Bone(bone_name(self.slots.bones[info.slot as usize])),
+            ValueType::Array(strider_nodes::Elem::Bone) => Value::Array(
+                strider_nodes::Elem::Bone,
+                self.slots.bone_arrays[info.slot as usize]
+                    .iter()
+                    .map(|&b| Value::Bone(bone_name(b)))
+                    .collect(),
+            ),
+            ty => self.slots.read(ty, info.slot),
+        }
+    }
+
+    /// Sets a variable (a tunable from the host or the inspector, or any state). An `Int`
+    /// value is accepted for a `Float` variable.
+    ///
+    /// # Errors
+    /// When the value's type is not the variable's, or a bone name is unknown.
+    pub fn set_variable(&mut self, id: VariableId, value: &Value) -> Result<(), VariableError> {
+        let info = self.program.variable(id);
+        let value = match (info.ty, value) {
+            (ValueType::Float, Value::Int(i)) => Value::Float(*i as f32),
+            _ => value.clone(),
+        };
+        if value.ty() != info.ty {
+            return Err(VariableError::TypeMismatch {
+                name: info.name.clone(),
+                expected: info.ty,
+                found: value.ty(),
+            });
+        }
+        let skeleton = self.pose.skeleton();
+        let find =
+            |name: &Option<String>| -> Result<i32, VariableError> {
+                match name {
+                    None => Ok(-1),
+                    Some(n) => skeleton.find(n).map(|b| b.0 as i32).ok_or_else(|| {
+                        VariableError::UnknownBone {
+                            name: info.name.clone(),
+                            bone: n.clone(),
+                        }
+                    }),
+                }
+            };
+        match &value {
+            Value::Bone(name) => self.slots.bones[info.slot as usize] = find(name)?,
+            Value::Array(strider_nodes::Elem::Bone, items) => {
+                let mut bones = Vec::with_capacity(items.len());
+                for item in items {
+                    if let Value::Bone(name) = item {
+                        bones.push(find(name)?);
+                    }
+                }
+                self.slots.bone_arrays[info.slot as usize] = bones;
+            }
+            v => self.slots.write(info.slot, v),
+        }
+        Ok(())
+    }
+
+    /// Sets a `Float` variable without allocating: the per-frame path for tunables.
+    /// Ignored if the variable is not a float.
+    pub fn set_float(&mut self, id: VariableId, value: f32) {
+        let info = self.program.variable(id);
+        if info.ty == ValueType::Float {
+            self.slots.floats[info.slot as usize] = value;
+        }
+    }
+}
+
+fn copy_slot(from: &Slots, to: &mut Slots, ty: ValueType, slot: u32) {
+    let s = slot as usize;
+    match ty {
+        ValueType::Bool => to.bools[s] = from.bools[s],
+        ValueType::Int => to.ints[s] = from.ints[s],
+        ValueType::Float => to.floats[s] = from.floats[s],
+        ValueType::Vec3 => to.vec3s[s] = from.vec3s[s],
+        ValueType::Quat => to.quats[s] = from.quats[s],
+        ValueType::Transform => to.transforms[s] = from.transforms[s],
+        // Bones index the old skeleton; arrays of any kind are rebuilt by construction.
+        _ => {}
+    }
+}
+
+impl fmt::Display for MissingBone {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        write!(f, "{}: unknown bone `{}`", self.location, self.name)
+    }
+}

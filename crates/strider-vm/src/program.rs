@@ -1,0 +1,250 @@
+//! [`Program`]: the compiled, immutable form of a graph, and [`ProgramBuilder`], the
+//! compiler's way of making one.
+
+use crate::slots::Slots;
+use strider_nodes::{Op, Value, ValueType};
+
+/// One instruction: an op and where its operands start in [`Program::operands`].
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Instr {
+    /// What to do.
+    pub op: Op,
+    /// Offset of the first operand.
+    pub args: u32,
+}
+
+/// Identifies a graph variable of a program (stable for the program's lifetime).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub struct VariableId(pub u32);
+
+/// A graph variable as the host and the inspector see it.
+#[derive(Clone, Debug, PartialEq)]
+pub struct VariableInfo {
+    /// Name as declared.
+    pub name: String,
+    /// Type as declared.
+    pub ty: ValueType,
+    /// Slot of `ty` holding it.
+    pub slot: u32,
+    /// Value at instantiation.
+    pub default: Value,
+    /// For tunable variables, the range the file gives (`None` if not tunable; bounds may
+    /// be open).
+    pub tunable: Option<(Option<f32>, Option<f32>)>,
+    /// Where it is declared, `file:line:col`.
+    pub location: String,
+}
+
+/// Where a bone named in the graph goes once resolved.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum BoneSlot {
+    /// A bone slot.
+    Scalar(u32),
+    /// Element `index` of a bone-array slot.
+    ArrayElement {
+        /// The bone-array slot.
+        slot: u32,
+        /// Position in the array.
+        index: u32,
+    },
+}
+
+/// A bone named by a literal in the graph; resolved against the skeleton at instantiation.
+#[derive(Clone, Debug, PartialEq)]
+pub struct BoneLiteral {
+    /// The bone name.
+    pub name: String,
+    /// Where the resolved index goes.
+    pub slot: BoneSlot,
+    /// Where the name is written, `file:line:col`, and which node and pin.
+    pub location: String,
+}
+
+/// A compiled graph: flat instructions, operand slot indices, the initial memory image,
+/// and the tables the host needs. Immutable and `Send + Sync`; share it with `Arc`.
+#[derive(Clone, Debug)]
+pub struct Program {
+    pub(crate) name: String,
+    pub(crate) code: Vec<Instr>,
+    pub(crate) operands: Vec<u32>,
+    pub(crate) construction: u32,
+    pub(crate) forward: u32,
+    pub(crate) initial: Slots,
+    pub(crate) texts: Vec<String>,
+    pub(crate) bones: Vec<BoneLiteral>,
+    pub(crate) variables: Vec<VariableInfo>,
+}
+
+impl Program {
+    /// The graph's name.
+    #[must_use]
+    pub fn name(&self) -> &str {
+        &self.name
+    }
+
+    /// The instructions, in execution order.
+    #[must_use]
+    pub fn code(&self) -> &[Instr] {
+        &self.code
+    }
+
+    /// The operand list that instructions index into.
+    #[must_use]
+    pub fn operands(&self) -> &[u32] {
+        &self.operands
+    }
+
+    /// The graph's variables, in declaration order.
+    #[must_use]
+    pub fn variables(&self) -> &[VariableInfo] {
+        &self.variables
+    }
+
+    /// The variable called `name`. A linear search: resolve once, then use the id.
+    #[must_use]
+    pub fn variable_id(&self, name: &str) -> Option<VariableId> {
+        self.variables
+            .iter()
+            .position(|v| v.name == name)
+            .map(|i| VariableId(i as u32))
+    }
+
+    /// A variable's description.
+    #[must_use]
+    pub fn variable(&self, id: VariableId) -> &VariableInfo {
+        &self.variables[id.0 as usize]
+    }
+
+    /// Bone names the graph refers to, with where.
+    #[must_use]
+    pub fn bone_literals(&self) -> &[BoneLiteral] {
+        &self.bones
+    }
+
+    /// The initial memory image every instance starts from.
+    #[must_use]
+    pub fn initial_slots(&self) -> &Slots {
+        &self.initial
+    }
+}
+
+/// Builds a [`Program`]: allocates slots, places constants, emits instructions and patches
+/// jump targets. Used by the compiler; the result is only as valid as what is emitted.
+#[derive(Debug)]
+pub struct ProgramBuilder {
+    program: Program,
+}
+
+impl ProgramBuilder {
+    /// An empty program called `name`.
+    #[must_use]
+    pub fn new(name: &str) -> Self {
+        Self {
+            program: Program {
+                name: name.to_string(),
+                code: Vec::new(),
+                operands: Vec::new(),
+                construction: 0,
+                forward: 0,
+                initial: Slots::default(),
+                texts: Vec::new(),
+                bones: Vec::new(),
+                variables: Vec::new(),
+            },
+        }
+    }
+
+    fn p(&mut self) -> &mut Program {
+        &mut self.program
+    }
+
+    /// A new zeroed slot of type `ty`.
+    pub fn alloc(&mut self, ty: ValueType) -> u32 {
+        self.p().initial.alloc(ty)
+    }
+
+    /// A new slot holding the constant `value`. Bone names inside are recorded for
+    /// resolution at instantiation with `location`; texts go to the text table.
+    pub fn constant(&mut self, value: &Value, location: &str) -> u32 {
+        let slot = self.alloc(value.ty());
+        self.write(slot, value, location);
+        slot
+    }
+
+    /// Writes `value` into an existing slot of its type as its initial content.
+    pub fn write(&mut self, slot: u32, value: &Value, location: &str) {
+        let p = self.p();
+        p.initial.write(slot, value);
+        match value {
+            Value::Bone(Some(name)) => p.bones.push(BoneLiteral {
+                name: name.clone(),
+                slot: BoneSlot::Scalar(slot),
+                location: location.to_string(),
+            }),
+            Value::Name(text) => {
+                p.texts.push(text.clone());
+                p.initial.names[slot as usize] = (p.texts.len() - 1) as u32;
+            }
+            Value::Array(_, items) => {
+                for (i, item) in items.iter().enumerate() {
+                    if let Value::Bone(Some(name)) = item {
+                        p.bones.push(BoneLiteral {
+                            name: name.clone(),
+                            slot: BoneSlot::ArrayElement {
+                                slot,
+                                index: i as u32,
+                            },
+                            location: location.to_string(),
+                        });
+                    }
+                }
+            }
+            _ => {}
+        }
+    }
+
+    /// Declares a graph variable living in `slot` (already holding its default).
+    pub fn variable(&mut self, info: VariableInfo) -> VariableId {
+        let p = self.p();
+        p.variables.push(info);
+        VariableId((p.variables.len() - 1) as u32)
+    }
+
+    /// Position of the next instruction.
+    #[must_use]
+    pub fn here(&self) -> u32 {
+        self.program.code.len() as u32
+    }
+
+    /// Emits an instruction with its operands; returns its position.
+    pub fn emit(&mut self, op: Op, operands: &[u32]) -> u32 {
+        let p = self.p();
+        let args = p.operands.len() as u32;
+        p.operands.extend_from_slice(operands);
+        p.code.push(Instr { op, args });
+        (p.code.len() - 1) as u32
+    }
+
+    /// Sets operand `index` of instruction `at` (used to patch jump targets).
+    pub fn patch(&mut self, at: u32, index: usize, value: u32) {
+        let p = self.p();
+        let args = p.code[at as usize].args as usize;
+        p.operands[args + index] = value;
+    }
+
+    /// Marks where the construction event starts.
+    pub fn set_construction_entry(&mut self, at: u32) {
+        self.p().construction = at;
+    }
+
+    /// Marks where the forward event starts.
+    pub fn set_forward_entry(&mut self, at: u32) {
+        self.p().forward = at;
+    }
+
+    /// The finished program.
+    #[must_use]
+    pub fn finish(self) -> Program {
+        self.program
+    }
+}

@@ -1,0 +1,195 @@
+//! Typed slot memory: one array per value type.
+
+use glam::{Quat, Vec3};
+use strider_core::Transform;
+use strider_nodes::{Elem, Value, ValueType};
+
+/// An instance's memory: variables, node outputs and constants, one array per type.
+/// A slot is an index into the array of its type. Bones are stored as indices into the
+/// instance's skeleton, `-1` for "no bone".
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct Slots {
+    /// Bool slots.
+    pub bools: Vec<bool>,
+    /// Int slots.
+    pub ints: Vec<i32>,
+    /// Float slots.
+    pub floats: Vec<f32>,
+    /// Vector slots.
+    pub vec3s: Vec<Vec3>,
+    /// Rotation slots.
+    pub quats: Vec<Quat>,
+    /// Transform slots.
+    pub transforms: Vec<Transform>,
+    /// Bone slots (bone index or -1).
+    pub bones: Vec<i32>,
+    /// Name slots: indices into the program's text table.
+    pub names: Vec<u32>,
+    /// Bool array slots.
+    pub bool_arrays: Vec<Vec<bool>>,
+    /// Int array slots.
+    pub int_arrays: Vec<Vec<i32>>,
+    /// Float array slots.
+    pub float_arrays: Vec<Vec<f32>>,
+    /// Vector array slots.
+    pub vec3_arrays: Vec<Vec<Vec3>>,
+    /// Rotation array slots.
+    pub quat_arrays: Vec<Vec<Quat>>,
+    /// Transform array slots.
+    pub transform_arrays: Vec<Vec<Transform>>,
+    /// Bone array slots.
+    pub bone_arrays: Vec<Vec<i32>>,
+}
+
+impl Slots {
+    /// Adds a zeroed slot of type `ty` and returns its index.
+    pub fn alloc(&mut self, ty: ValueType) -> u32 {
+        fn push<T>(v: &mut Vec<T>, x: T) -> u32 {
+            v.push(x);
+            (v.len() - 1) as u32
+        }
+        match ty {
+            ValueType::Bool => push(&mut self.bools, false),
+            ValueType::Int => push(&mut self.ints, 0),
+            ValueType::Float => push(&mut self.floats, 0.0),
+            ValueType::Vec3 => push(&mut self.vec3s, Vec3::ZERO),
+            ValueType::Quat => push(&mut self.quats, Quat::IDENTITY),
+            ValueType::Transform => push(&mut self.transforms, Transform::IDENTITY),
+            ValueType::Bone => push(&mut self.bones, -1),
+            ValueType::Name => push(&mut self.names, 0),
+            ValueType::Array(Elem::Bool) => push(&mut self.bool_arrays, Vec::new()),
+            ValueType::Array(Elem::Int) => push(&mut self.int_arrays, Vec::new()),
+            ValueType::Array(Elem::Float) => push(&mut self.float_arrays, Vec::new()),
+            ValueType::Array(Elem::Vec3) => push(&mut self.vec3_arrays, Vec::new()),
+            ValueType::Array(Elem::Quat) => push(&mut self.quat_arrays, Vec::new()),
+            ValueType::Array(Elem::Transform) => push(&mut self.transform_arrays, Vec::new()),
+            ValueType::Array(Elem::Bone) => push(&mut self.bone_arrays, Vec::new()),
+        }
+    }
+
+    /// Writes a value into slot `slot` of the value's type. Bones and names are not
+    /// resolved here: a bone value writes "no bone", a name writes nothing (the program
+    /// builder places both).
+    pub fn write(&mut self, slot: u32, value: &Value) {
+        let s = slot as usize;
+        match value {
+            Value::Bool(b) => self.bools[s] = *b,
+            Value::Int(i) => self.ints[s] = *i,
+            Value::Float(x) => self.floats[s] = *x,
+            Value::Vec3(v) => self.vec3s[s] = *v,
+            Value::Quat(q) => self.quats[s] = *q,
+            Value::Transform(t) => self.transforms[s] = *t,
+            Value::Bone(_) => self.bones[s] = -1,
+            Value::Name(_) => {}
+            Value::Array(e, items) => match e {
+                Elem::Bool => {
+                    self.bool_arrays[s] = items
+                        .iter()
+                        .map(|v| matches!(v, Value::Bool(true)))
+                        .collect()
+                }
+                Elem::Int => {
+                    self.int_arrays[s] = items
+                        .iter()
+                        .map(|v| if let Value::Int(i) = v { *i } else { 0 })
+                        .collect()
+                }
+                Elem::Float => {
+                    self.float_arrays[s] = items
+                        .iter()
+                        .map(|v| match v {
+                            Value::Float(x) => *x,
+                            Value::Int(i) => *i as f32,
+                            _ => 0.0,
+                        })
+                        .collect();
+                }
+                Elem::Vec3 => {
+                    self.vec3_arrays[s] = items
+                        .iter()
+                        .map(|v| {
+                            if let Value::Vec3(x) = v {
+                                *x
+                            } else {
+                                Vec3::ZERO
+                            }
+                        })
+                        .collect()
+                }
+                Elem::Quat => {
+                    self.quat_arrays[s] = items
+                        .iter()
+                        .map(|v| {
+                            if let Value::Quat(x) = v {
+                                *x
+                            } else {
+                                Quat::IDENTITY
+                            }
+                        })
+                        .collect()
+                }
+                Elem::Transform => {
+                    self.transform_arrays[s] = items
+                        .iter()
+                        .map(|v| {
+                            if let Value::Transform(x) = v {
+                                *x
+                            } else {
+                                Transform::IDENTITY
+                            }
+                        })
+                        .collect();
+                }
+                Elem::Bone => self.bone_arrays[s] = vec![-1; items.len()],
+            },
+        }
+    }
+
+    /// Reads slot `slot` of type `ty` as a [`Value`] (allocates for arrays; for
+    /// inspection, not for the frame loop). Bones read as `Bone(None)`; use the instance's
+    /// `variable` to get bone names.
+    #[must_use]
+    pub fn read(&self, ty: ValueType, slot: u32) -> Value {
+        let s = slot as usize;
+        match ty {
+            ValueType::Bool => Value::Bool(self.bools[s]),
+            ValueType::Int => Value::Int(self.ints[s]),
+            ValueType::Float => Value::Float(self.floats[s]),
+            ValueType::Vec3 => Value::Vec3(self.vec3s[s]),
+            ValueType::Quat => Value::Quat(self.quats[s]),
+            ValueType::Transform => Value::Transform(self.transforms[s]),
+            ValueType::Bone => Value::Bone(None),
+            ValueType::Name => Value::Name(String::new()),
+            ValueType::Array(e) => {
+                let items: Vec<Value> = match e {
+                    Elem::Bool => self.bool_arrays[s]
+                        .iter()
+                        .map(|&b| Value::Bool(b))
+                        .collect(),
+                    Elem::Int => self.int_arrays[s].iter().map(|&i| Value::Int(i)).collect(),
+                    Elem::Float => self.float_arrays[s]
+                        .iter()
+                        .map(|&x| Value::Float(x))
+                        .collect(),
+                    Elem::Vec3 => self.vec3_arrays[s]
+                        .iter()
+                        .map(|&x| Value::Vec3(x))
+                        .collect(),
+                    Elem::Quat => self.quat_arrays[s]
+                        .iter()
+                        .map(|&x| Value::Quat(x))
+                        .collect(),
+                    Elem::Transform => self.transform_arrays[s]
+                        .iter()
+                        .map(|&x| Value::Transform(x))
+                        .collect(),
+                    Elem::Bone => self.bone_arrays[s]
+                        .iter()
+                        .map(|_| Value::Bone(None))
+                        .collect(),
+                };
+                Value::Array(e, items)
+            }
+        }
+    }
+}
