@@ -225,7 +225,7 @@ impl Parser<'_> {
                         _ => self
                             .err(
                                 v.span,
-                                format!("unsupported format version {}", v.value.describe()),
+                                "unsupported format version".to_string(),
                             )
                             .hint(format!(
                                 "this build reads version {}",

@@ -1,0 +1,308 @@
+//! Code generation: typed slot layout and a flat instruction list.
+//!
+//! Each function call site gets its own frame of slots (calls are inlined), so per-call
+//! state never aliases. Pure nodes are emitted in front of every step that needs them;
+//! within one step each is emitted once.
+
+use crate::check::{Arg, Body, CStep, Checked, LoopPart, NodeKind, Src, VarRef};
+use std::collections::HashMap;
+use strider_graph::LoadedGraph;
+use strider_nodes::{Elem, Op, Value, ValueType};
+use strider_vm::{Program, ProgramBuilder, VariableInfo};
+
+struct LoopSlots {
+    counter: u32,
+    element: u32,
+    index: u32,
+    count: u32,
+}
+
+struct Frame {
+    body: Option<usize>,
+    node_out: Vec<Vec<u32>>,
+    inputs: Vec<u32>,
+    outputs: Vec<u32>,
+    locals: Vec<u32>,
+    loops: Vec<LoopSlots>,
+    callees: HashMap<usize, usize>,
+}
+
+struct Gen<'a> {
+    pb: ProgramBuilder,
+    checked: &'a Checked,
+    globals: Vec<u32>,
+    consts: HashMap<String, u32>,
+    frames: Vec<Frame>,
+}
+
+pub(crate) fn generate(loaded: &LoadedGraph, checked: &Checked) -> Program {
+    let name = if loaded.main.name.is_empty() {
+        loaded.sources.path(loaded.main.file).file_stem().map(|s| s.to_string_lossy().into_owned()).unwrap_or_default()
+    } else {
+        loaded.main.name.clone()
+    };
+    let mut g = Gen { pb: ProgramBuilder::new(&name), checked, globals: Vec::new(), consts: HashMap::new(), frames: Vec::new() };
+    for v in &checked.globals {
+        let slot = g.pb.alloc(v.ty);
+        g.pb.write(slot, &v.default, &v.location);
+        g.globals.push(slot);
+        g.pb.variable(VariableInfo {
+            name: v.name.clone(),
+            ty: v.ty,
+            slot,
+            default: v.default.clone(),
+            tunable: v.tunable,
+            location: v.location.clone(),
+        });
+    }
+    let top = g.frame(None);
+    for (steps, construction) in [(&checked.graph.construction, true), (&checked.graph.forward, false)] {
+        let entry = g.pb.here();
+        if construction {
+            g.pb.set_construction_entry(entry);
+        } else {
+            g.pb.set_forward_entry(entry);
+        }
+        let mut rets = Vec::new();
+        g.steps(top, steps, &mut rets);
+        let end = g.pb.here();
+        for r in rets {
+            g.pb.patch(r, 0, end);
+        }
+        g.pb.emit(Op::End, &[]);
+    }
+    g.pb.finish()
+}
+
+impl Gen<'_> {
+    fn body(&self, frame: usize) -> &Body {
+        match self.frames[frame].body {
+            None => &self.checked.graph,
+            Some(f) => &self.checked.functions[f],
+        }
+    }
+
+    /// Allocates the slots of one instance of a body (and, recursively, of its calls).
+    fn frame(&mut self, function: Option<usize>) -> usize {
+        let body = match function {
+            None => &self.checked.graph,
+            Some(f) => &self.checked.functions[f],
+        };
+        let inputs = body.inputs.iter().map(|&t| self.pb.alloc(t)).collect();
+        let outputs = body.outputs.iter().map(|&t| self.pb.alloc(t)).collect();
+        let locals = body.locals.iter().map(|(t, _, _)| self.pb.alloc(*t)).collect();
+        let loops = body
+            .loops
+            .iter()
+            .map(|l| LoopSlots {
+                counter: self.pb.alloc(ValueType::Int),
+                element: self.pb.alloc(l.element),
+                index: self.pb.alloc(ValueType::Int),
+                count: self.pb.alloc(ValueType::Int),
+            })
+            .collect();
+        let id = self.frames.len();
+        self.frames.push(Frame { body: function, node_out: Vec::new(), inputs, outputs, locals, loops, callees: HashMap::new() });
+        let node_count = body.nodes.len();
+        let mut node_out = Vec::with_capacity(node_count);
+        for n in 0..node_count {
+            let node = &self.body(id).nodes[n];
+            let kind = node.kind;
+            let out_types = node.outputs.clone();
+            match kind {
+                NodeKind::Call(f) => {
+                    let callee = self.frame(Some(f));
+                    self.frames[id].callees.insert(n, callee);
+                    node_out.push(self.frames[callee].outputs.clone());
+                }
+                NodeKind::Builtin(_) => node_out.push(out_types.iter().map(|&t| self.pb.alloc(t)).collect()),
+            }
+        }
+        self.frames[id].node_out = node_out;
+        id
+    }
+
+    fn constant(&mut self, value: &Value, location: &str) -> u32 {
+        let has_names = match value {
+            Value::Bone(Some(_)) | Value::Name(_) => true,
+            Value::Array(Elem::Bone, items) => !items.is_empty(),
+            _ => false,
+        };
+        if has_names {
+            return self.pb.constant(value, location);
+        }
+        let key = format!("{value:?}");
+        if let Some(&s) = self.consts.get(&key) {
+            return s;
+        }
+        let s = self.pb.constant(value, location);
+        self.consts.insert(key, s);
+        s
+    }
+
+    /// The slot holding `arg` (after emitting its Int → Float conversion, if any).
+    fn slot(&mut self, frame: usize, arg: &Arg) -> u32 {
+        let f = &self.frames[frame];
+        let s = match &arg.src {
+            Src::Node { node, out } => f.node_out[*node][*out],
+            Src::Input(i) => f.inputs[*i],
+            Src::Local(i) => f.locals[*i],
+            Src::Global(i) => self.globals[*i],
+            Src::Loop { lp, part } => {
+                let l = &f.loops[*lp];
+                match part {
+                    LoopPart::Element => l.element,
+                    LoopPart::Index => l.index,
+                    LoopPart::Count => l.count,
+                }
+            }
+            Src::Const { value, location } => {
+                let (value, location) = (value.clone(), location.clone());
+                self.constant(&value, &location)
+            }
+        };
+        if arg.to_float {
+            let tmp = self.pb.alloc(ValueType::Float);
+            self.pb.emit(Op::IntToFloat, &[s, tmp]);
+            tmp
+        } else {
+            s
+        }
+    }
+
+    /// Emits the pure nodes `args` depend on (each once per step), then returns the
+    /// argument slots.
+    fn pull(&mut self, frame: usize, args: &[Arg], done: &mut Vec<usize>) -> Vec<u32> {
+        for a in args {
+            if let Src::Node { node, .. } = a.src {
+                self.pure_node(frame, node, done);
+            }
+        }
+        args.iter().map(|a| self.slot(frame, a)).collect()
+    }
+
+    fn pure_node(&mut self, frame: usize, node: usize, done: &mut Vec<usize>) {
+        if done.contains(&node) || !self.body(frame).nodes[node].pure {
+            return;
+        }
+        done.push(node);
+        self.node(frame, node, done);
+    }
+
+    /// Emits node `n` of `frame` (its pure inputs first).
+    fn node(&mut self, frame: usize, n: usize, done: &mut Vec<usize>) {
+        let node = self.body(frame).nodes[n].clone();
+        let ins = self.pull(frame, &node.inputs, done);
+        match node.kind {
+            NodeKind::Builtin(op) => {
+                let mut operands = ins;
+                operands.extend_from_slice(&self.frames[frame].node_out[n]);
+                self.pb.emit(op, &operands);
+            }
+            NodeKind::Call(f) => {
+                let callee = self.frames[frame].callees[&n];
+                let fbody = &self.checked.functions[f];
+                for (i, &s) in ins.iter().enumerate() {
+                    let to = self.frames[callee].inputs[i];
+                    self.pb.emit(Op::Copy(fbody.inputs[i]), &[s, to]);
+                }
+                for (i, &ty) in fbody.outputs.iter().enumerate() {
+                    let zero = self.constant(&ty.zero(), "");
+                    let to = self.frames[callee].outputs[i];
+                    self.pb.emit(Op::Copy(ty), &[zero, to]);
+                }
+                for (i, (ty, default, location)) in fbody.locals.iter().enumerate() {
+                    let from = self.constant(default, location);
+                    let to = self.frames[callee].locals[i];
+                    self.pb.emit(Op::Copy(*ty), &[from, to]);
+                }
+                let mut rets = Vec::new();
+                let exec = &self.checked.functions[f].exec;
+                self.steps(callee, exec, &mut rets);
+                let end = self.pb.here();
+                for r in rets {
+                    self.pb.patch(r, 0, end);
+                }
+            }
+        }
+    }
+
+    fn steps(&mut self, frame: usize, steps: &[CStep], rets: &mut Vec<u32>) {
+        for s in steps {
+            self.step(frame, s, rets);
+        }
+    }
+
+    fn step(&mut self, frame: usize, step: &CStep, rets: &mut Vec<u32>) {
+        let mut done = Vec::new();
+        match step {
+            CStep::Set { target, ty, arg } => {
+                let from = self.pull(frame, std::slice::from_ref(arg), &mut done)[0];
+                let to = match target {
+                    VarRef::Global(i) => self.globals[*i],
+                    VarRef::Local(i) => self.frames[frame].locals[*i],
+                };
+                self.pb.emit(Op::Copy(*ty), &[from, to]);
+            }
+            CStep::Exec(n) => self.node(frame, *n, &mut done),
+            CStep::Branch { condition, then, otherwise } => {
+                let c = self.pull(frame, std::slice::from_ref(condition), &mut done)[0];
+                let jf = self.pb.emit(Op::JumpIfFalse, &[c, 0]);
+                self.steps(frame, then, rets);
+                let j = self.pb.emit(Op::Jump, &[0]);
+                let else_at = self.pb.here();
+                self.pb.patch(jf, 1, else_at);
+                self.steps(frame, otherwise, rets);
+                let end = self.pb.here();
+                self.pb.patch(j, 0, end);
+            }
+            CStep::ForEach { items, lp, body } => {
+                let arr = self.pull(frame, std::slice::from_ref(items), &mut done)[0];
+                let elem = items.ty.elem().unwrap_or(Elem::Int);
+                let zero = self.constant(&Value::Int(0), "");
+                let (counter, element, index, count) = {
+                    let l = &self.frames[frame].loops[*lp];
+                    (l.counter, l.element, l.index, l.count)
+                };
+                self.pb.emit(Op::Copy(ValueType::Int), &[zero, counter]);
+                let head = self.pb.here();
+                let next = self.pb.emit(Op::ForEachNext(elem), &[arr, counter, element, index, count, 0]);
+                self.steps(frame, body, rets);
+                self.pb.emit(Op::Jump, &[head]);
+                let exit = self.pb.here();
+                self.pb.patch(next, 5, exit);
+            }
+            CStep::For { count, lp, body } => {
+                let n = self.pull(frame, std::slice::from_ref(count), &mut done)[0];
+                let zero = self.constant(&Value::Int(0), "");
+                let (counter, index) = {
+                    let l = &self.frames[frame].loops[*lp];
+                    (l.counter, l.index)
+                };
+                self.pb.emit(Op::Copy(ValueType::Int), &[zero, counter]);
+                let head = self.pb.here();
+                let next = self.pb.emit(Op::ForNext, &[counter, n, index, 0]);
+                self.steps(frame, body, rets);
+                self.pb.emit(Op::Jump, &[head]);
+                let exit = self.pb.here();
+                self.pb.patch(next, 3, exit);
+            }
+            CStep::Sequence(blocks) => {
+                for b in blocks {
+                    self.steps(frame, b, rets);
+                }
+            }
+            CStep::Return(values) => {
+                for (o, arg) in values {
+                    let mut done = Vec::new();
+                    let from = self.pull(frame, std::slice::from_ref(arg), &mut done)[0];
+                    let to = self.frames[frame].outputs[*o];
+                    let ty = self.body(frame).outputs[*o];
+                    self.pb.emit(Op::Copy(ty), &[from, to]);
+                }
+                let j = self.pb.emit(Op::Jump, &[0]);
+                rets.push(j);
+            }
+        }
+    }
+}
