@@ -8,8 +8,8 @@ use petgraph::graph::{DiGraph, NodeIndex};
 use std::collections::HashMap;
 use strider_graph::diagnostic::{Diagnostics, Loc, SourceMap};
 use strider_graph::{
-    Diagnostic, EventKind, Expr, ExprKind, FunctionDecl, Graph, Ident, LoadedGraph, NodeDecl, PinArg, Step,
-    suggest,
+    Diagnostic, EventKind, Expr, ExprKind, FunctionDecl, Graph, Ident, LoadedGraph, NodeDecl,
+    PinArg, Step, suggest,
 };
 use strider_nodes::{Effect, Op, PinSpec, Value, ValueType, registry};
 
@@ -66,11 +66,27 @@ pub(crate) enum VarRef {
 
 #[derive(Clone, Debug)]
 pub(crate) enum CStep {
-    Set { target: VarRef, ty: ValueType, arg: Arg },
+    Set {
+        target: VarRef,
+        ty: ValueType,
+        arg: Arg,
+    },
     Exec(usize),
-    Branch { condition: Arg, then: Vec<CStep>, otherwise: Vec<CStep> },
-    ForEach { items: Arg, lp: usize, body: Vec<CStep> },
-    For { count: Arg, lp: usize, body: Vec<CStep> },
+    Branch {
+        condition: Arg,
+        then: Vec<CStep>,
+        otherwise: Vec<CStep>,
+    },
+    ForEach {
+        items: Arg,
+        lp: usize,
+        body: Vec<CStep>,
+    },
+    For {
+        count: Arg,
+        lp: usize,
+        body: Vec<CStep>,
+    },
     Sequence(Vec<Vec<CStep>>),
     Return(Vec<(usize, Arg)>),
 }
@@ -113,7 +129,9 @@ struct FnSig<'a> {
 pub(crate) fn check(loaded: &LoadedGraph) -> Result<Checked, Vec<Diagnostic>> {
     let mut diags = Diagnostics::default();
     let sources = &loaded.sources;
-    let files: Vec<&Graph> = std::iter::once(&loaded.main).chain(&loaded.libraries).collect();
+    let files: Vec<&Graph> = std::iter::once(&loaded.main)
+        .chain(&loaded.libraries)
+        .collect();
 
     // Variables of every file share one namespace.
     let mut globals: Vec<GlobalVar> = Vec::new();
@@ -122,8 +140,15 @@ pub(crate) fn check(loaded: &LoadedGraph) -> Result<Checked, Vec<Diagnostic>> {
         for v in &g.variables {
             if let Some(&prev) = global_index.get(&v.name.name) {
                 diags
-                    .error(sources, v.name.loc, format!("variable `{}` is declared twice", v.name.name))
-                    .hint(format!("the first declaration is at {}", globals[prev].location))
+                    .error(
+                        sources,
+                        v.name.loc,
+                        format!("variable `{}` is declared twice", v.name.name),
+                    )
+                    .hint(format!(
+                        "the first declaration is at {}",
+                        globals[prev].location
+                    ))
                     .emit();
                 continue;
             }
@@ -132,13 +157,26 @@ pub(crate) fn check(loaded: &LoadedGraph) -> Result<Checked, Vec<Diagnostic>> {
                 Some(lit) => match literal::convert(lit, v.ty, &[]) {
                     Ok((val, _)) => val,
                     Err(m) => {
-                        diags.error(sources, lit.loc, format!("default of variable `{}`: {m}", v.name.name)).emit();
+                        diags
+                            .error(
+                                sources,
+                                lit.loc,
+                                format!("default of variable `{}`: {m}", v.name.name),
+                            )
+                            .emit();
                         v.ty.zero()
                     }
                 },
             };
-            let tunable = v.tunable.map(|t| (t.min.map(|x| x as f32), t.max.map(|x| x as f32)));
-            if tunable.is_some() && !matches!(v.ty, ValueType::Float | ValueType::Int | ValueType::Bool | ValueType::Vec3) {
+            let tunable = v
+                .tunable
+                .map(|t| (t.min.map(|x| x as f32), t.max.map(|x| x as f32)));
+            if tunable.is_some()
+                && !matches!(
+                    v.ty,
+                    ValueType::Float | ValueType::Int | ValueType::Bool | ValueType::Vec3
+                )
+            {
                 diags
                     .error(sources, v.ty_loc, format!("tunable variable `{}` is {}, but only Float, Int, Bool and Vec3 can be tuned", v.name.name, v.ty))
                     .emit();
@@ -161,8 +199,15 @@ pub(crate) fn check(loaded: &LoadedGraph) -> Result<Checked, Vec<Diagnostic>> {
         for f in &g.functions {
             if let Some(&prev) = fn_index.get(&f.name.name) {
                 diags
-                    .error(sources, f.name.loc, format!("function `{}` is defined twice", f.name.name))
-                    .hint(format!("the first definition is at {}", sources.describe(fn_decls[prev].name.loc)))
+                    .error(
+                        sources,
+                        f.name.loc,
+                        format!("function `{}` is defined twice", f.name.name),
+                    )
+                    .hint(format!(
+                        "the first definition is at {}",
+                        sources.describe(fn_decls[prev].name.loc)
+                    ))
                     .emit();
                 continue;
             }
@@ -190,7 +235,11 @@ pub(crate) fn check(loaded: &LoadedGraph) -> Result<Checked, Vec<Diagnostic>> {
             for &n in &names {
                 recursive[n] = true;
             }
-            let path: Vec<&str> = names.iter().chain(names.first()).map(|&n| fn_decls[n].name.name.as_str()).collect();
+            let path: Vec<&str> = names
+                .iter()
+                .chain(names.first())
+                .map(|&n| fn_decls[n].name.name.as_str())
+                .collect();
             let first = fn_decls[names[0]];
             diags
                 .error(sources, first.name.loc, format!("recursion: {}", path.join(" → ")))
@@ -207,10 +256,19 @@ pub(crate) fn check(loaded: &LoadedGraph) -> Result<Checked, Vec<Diagnostic>> {
     let sigs: Vec<FnSig<'_>> = fn_decls
         .iter()
         .enumerate()
-        .map(|(i, d)| FnSig { decl: d, pure: purity[i].unwrap_or(false) })
+        .map(|(i, d)| FnSig {
+            decl: d,
+            pure: purity[i].unwrap_or(false),
+        })
         .collect();
 
-    let ctx = Ctx { sources, globals: &globals, global_index: &global_index, fns: &sigs, fn_index: &fn_index };
+    let ctx = Ctx {
+        sources,
+        globals: &globals,
+        global_index: &global_index,
+        fns: &sigs,
+        fn_index: &fn_index,
+    };
     let mut functions = Vec::new();
     for (i, f) in fn_decls.iter().enumerate() {
         if recursive[i] {
@@ -222,8 +280,18 @@ pub(crate) fn check(loaded: &LoadedGraph) -> Result<Checked, Vec<Diagnostic>> {
         functions.push(body);
     }
     let main = &loaded.main;
-    let construction: Vec<Step> = main.events.iter().filter(|e| e.kind == EventKind::Construction).flat_map(|e| e.steps.clone()).collect();
-    let forward: Vec<Step> = main.events.iter().filter(|e| e.kind == EventKind::Forward).flat_map(|e| e.steps.clone()).collect();
+    let construction: Vec<Step> = main
+        .events
+        .iter()
+        .filter(|e| e.kind == EventKind::Construction)
+        .flat_map(|e| e.steps.clone())
+        .collect();
+    let forward: Vec<Step> = main
+        .events
+        .iter()
+        .filter(|e| e.kind == EventKind::Forward)
+        .flat_map(|e| e.steps.clone())
+        .collect();
     let mut sc = Scope::new(&ctx, None);
     let mut graph = sc.check_body(&main.nodes, &[&construction, &forward], &mut diags);
     let mut lists = std::mem::take(&mut graph.exec_lists());
@@ -231,7 +299,11 @@ pub(crate) fn check(loaded: &LoadedGraph) -> Result<Checked, Vec<Diagnostic>> {
     graph.construction = lists.pop().unwrap_or_default();
 
     if diags.is_empty() {
-        Ok(Checked { globals, functions, graph })
+        Ok(Checked {
+            globals,
+            functions,
+            graph,
+        })
     } else {
         Err(diags.into_vec())
     }
@@ -248,7 +320,12 @@ impl Body {
     }
 }
 
-fn collect_calls(nodes: &[NodeDecl], steps: &[Step], fn_index: &HashMap<String, usize>, out: &mut Vec<usize>) {
+fn collect_calls(
+    nodes: &[NodeDecl],
+    steps: &[Step],
+    fn_index: &HashMap<String, usize>,
+    out: &mut Vec<usize>,
+) {
     for n in nodes {
         if let Some(&f) = fn_index.get(&n.kind.name) {
             out.push(f);
@@ -265,7 +342,9 @@ fn for_each_node_in_steps<'a>(steps: &'a [Step], f: &mut dyn FnMut(&'a NodeDecl)
     for s in steps {
         match s {
             Step::Node(n) => f(n),
-            Step::Branch { then, otherwise, .. } => {
+            Step::Branch {
+                then, otherwise, ..
+            } => {
                 for_each_node_in_steps(then, f);
                 for_each_node_in_steps(otherwise, f);
             }
@@ -318,7 +397,9 @@ fn function_purity(
     fn sets_global(steps: &[Step], locals: &[&str]) -> bool {
         steps.iter().any(|s| match s {
             Step::Set { var, .. } => !locals.contains(&var.name.as_str()),
-            Step::Branch { then, otherwise, .. } => sets_global(then, locals) || sets_global(otherwise, locals),
+            Step::Branch {
+                then, otherwise, ..
+            } => sets_global(then, locals) || sets_global(otherwise, locals),
             Step::ForEach { body, .. } | Step::For { body, .. } => sets_global(body, locals),
             Step::Sequence(blocks, _) => blocks.iter().any(|b| sets_global(b, locals)),
             _ => false,
@@ -410,13 +491,26 @@ impl<'a, 'c> Scope<'a, 'c> {
             match s {
                 Step::Node(n) => {
                     let idx = self.nodes.len();
-                    self.nodes.push(Slot { decl: n, declared: false, resolved: None, failed: false, ran: true });
+                    self.nodes.push(Slot {
+                        decl: n,
+                        declared: false,
+                        resolved: None,
+                        failed: false,
+                        ran: true,
+                    });
                     self.inline_index.insert(n as *const _, idx);
                     if let Some(id) = &n.id {
                         self.declare(id, Name::Node(idx), diags);
                     }
                 }
-                Step::ForEach { items, element, index, count, body, .. } => {
+                Step::ForEach {
+                    items,
+                    element,
+                    index,
+                    count,
+                    body,
+                    ..
+                } => {
                     let lp = self.loops.len();
                     let mut names = vec![element];
                     self.declare(element, Name::Loop(lp, LoopPart::Element), diags);
@@ -428,18 +522,32 @@ impl<'a, 'c> Scope<'a, 'c> {
                         self.declare(c, Name::Loop(lp, LoopPart::Count), diags);
                         names.push(c);
                     }
-                    self.loops.push(LoopDecl { items, is_for: false, element: None, names });
+                    self.loops.push(LoopDecl {
+                        items,
+                        is_for: false,
+                        element: None,
+                        names,
+                    });
                     self.loop_index.insert(s as *const _, lp);
                     self.collect_steps(body, diags);
                 }
-                Step::For { count, index, body, .. } => {
+                Step::For {
+                    count, index, body, ..
+                } => {
                     let lp = self.loops.len();
                     self.declare(index, Name::Loop(lp, LoopPart::Index), diags);
-                    self.loops.push(LoopDecl { items: count, is_for: true, element: Some(ValueType::Int), names: vec![index] });
+                    self.loops.push(LoopDecl {
+                        items: count,
+                        is_for: true,
+                        element: Some(ValueType::Int),
+                        names: vec![index],
+                    });
                     self.loop_index.insert(s as *const _, lp);
                     self.collect_steps(body, diags);
                 }
-                Step::Branch { then, otherwise, .. } => {
+                Step::Branch {
+                    then, otherwise, ..
+                } => {
                     self.collect_steps(then, diags);
                     self.collect_steps(otherwise, diags);
                 }
@@ -453,7 +561,12 @@ impl<'a, 'c> Scope<'a, 'c> {
         }
     }
 
-    fn check_body(&mut self, nodes: &'a [NodeDecl], lists: &[&'a [Step]], diags: &mut Diagnostics) -> Body {
+    fn check_body(
+        &mut self,
+        nodes: &'a [NodeDecl],
+        lists: &[&'a [Step]],
+        diags: &mut Diagnostics,
+    ) -> Body {
         let mut body = Body::default();
         if let Some(f) = self.function {
             for (i, p) in f.inputs.iter().enumerate() {
@@ -463,7 +576,13 @@ impl<'a, 'c> Scope<'a, 'c> {
             let mut seen_out: Vec<&str> = Vec::new();
             for p in &f.outputs {
                 if seen_out.contains(&p.name.name.as_str()) {
-                    diags.error(self.sources(), p.name.loc, format!("output `{}` is declared twice", p.name.name)).emit();
+                    diags
+                        .error(
+                            self.sources(),
+                            p.name.loc,
+                            format!("output `{}` is declared twice", p.name.name),
+                        )
+                        .emit();
                 }
                 seen_out.push(&p.name.name);
                 body.outputs.push(p.ty);
@@ -471,12 +590,25 @@ impl<'a, 'c> Scope<'a, 'c> {
             for l in &f.locals {
                 if self.ctx.global_index.contains_key(&l.name.name) {
                     diags
-                        .error(self.sources(), l.name.loc, format!("local variable `{}` has the name of a graph variable", l.name.name))
+                        .error(
+                            self.sources(),
+                            l.name.loc,
+                            format!(
+                                "local variable `{}` has the name of a graph variable",
+                                l.name.name
+                            ),
+                        )
                         .hint("rename the local; var(\"...\") must name one variable unambiguously")
                         .emit();
                 }
                 if self.locals.contains_key(&l.name.name) {
-                    diags.error(self.sources(), l.name.loc, format!("local variable `{}` is declared twice", l.name.name)).emit();
+                    diags
+                        .error(
+                            self.sources(),
+                            l.name.loc,
+                            format!("local variable `{}` is declared twice", l.name.name),
+                        )
+                        .emit();
                     continue;
                 }
                 let default = match &l.default {
@@ -484,18 +616,31 @@ impl<'a, 'c> Scope<'a, 'c> {
                     Some(lit) => match literal::convert(lit, l.ty, &[]) {
                         Ok((v, _)) => v,
                         Err(m) => {
-                            diags.error(self.sources(), lit.loc, format!("default of local `{}`: {m}", l.name.name)).emit();
+                            diags
+                                .error(
+                                    self.sources(),
+                                    lit.loc,
+                                    format!("default of local `{}`: {m}", l.name.name),
+                                )
+                                .emit();
                             l.ty.zero()
                         }
                     },
                 };
                 self.locals.insert(l.name.name.clone(), body.locals.len());
-                body.locals.push((l.ty, default, self.sources().describe(l.name.loc)));
+                body.locals
+                    .push((l.ty, default, self.sources().describe(l.name.loc)));
             }
         }
         for n in nodes {
             let idx = self.nodes.len();
-            self.nodes.push(Slot { decl: n, declared: true, resolved: None, failed: false, ran: false });
+            self.nodes.push(Slot {
+                decl: n,
+                declared: true,
+                resolved: None,
+                failed: false,
+                ran: false,
+            });
             if let Some(id) = &n.id {
                 self.declare(id, Name::Node(idx), diags);
             }
@@ -512,25 +657,53 @@ impl<'a, 'c> Scope<'a, 'c> {
             blocks.push(self.steps(list, &mut active, diags));
         }
         for slot in &self.nodes {
-            if slot.declared && !slot.ran {
-                if let Some(n) = &slot.resolved {
-                    if !n.pure {
-                        let what = if matches!(n.kind, NodeKind::Call(_)) { "calls a function that changes state" } else { "changes state" };
-                        diags
-                            .error(self.sources(), slot.decl.loc, format!("node `{}` ({}) {what} but is not reachable from any event", slot.decl.label(), slot.decl.kind.name))
-                            .node(slot.decl.label().to_string())
-                            .hint(format!("add `Run(\"{}\")` to an exec list, or write the node inline in one", slot.decl.label()))
-                            .emit();
-                    }
-                }
+            if slot.declared
+                && !slot.ran
+                && let Some(n) = &slot.resolved
+                && !n.pure
+            {
+                let what = if matches!(n.kind, NodeKind::Call(_)) {
+                    "calls a function that changes state"
+                } else {
+                    "changes state"
+                };
+                diags
+                    .error(
+                        self.sources(),
+                        slot.decl.loc,
+                        format!(
+                            "node `{}` ({}) {what} but is not reachable from any event",
+                            slot.decl.label(),
+                            slot.decl.kind.name
+                        ),
+                    )
+                    .node(slot.decl.label().to_string())
+                    .hint(format!(
+                        "add `Run(\"{}\")` to an exec list, or write the node inline in one",
+                        slot.decl.label()
+                    ))
+                    .emit();
             }
         }
         body.nodes = self
             .nodes
             .iter()
-            .map(|s| s.resolved.clone().unwrap_or(CNode { kind: NodeKind::Builtin(Op::End), pure: true, inputs: Vec::new(), outputs: Vec::new() }))
+            .map(|s| {
+                s.resolved.clone().unwrap_or(CNode {
+                    kind: NodeKind::Builtin(Op::End),
+                    pure: true,
+                    inputs: Vec::new(),
+                    outputs: Vec::new(),
+                })
+            })
             .collect();
-        body.loops = self.loops.iter().map(|l| CLoop { element: l.element.unwrap_or(ValueType::Int) }).collect();
+        body.loops = self
+            .loops
+            .iter()
+            .map(|l| CLoop {
+                element: l.element.unwrap_or(ValueType::Int),
+            })
+            .collect();
         if self.function.is_some() {
             body.exec = blocks.pop().unwrap_or_default();
         } else {
@@ -576,10 +749,22 @@ impl<'a, 'c> Scope<'a, 'c> {
                     in_cycle[m] = true;
                 }
                 let label = |m: usize| -> String {
-                    if m < n { self.nodes[m].decl.label().to_string() } else { self.loops[m - n].names[0].name.clone() }
+                    if m < n {
+                        self.nodes[m].decl.label().to_string()
+                    } else {
+                        self.loops[m - n].names[0].name.clone()
+                    }
                 };
-                let path: Vec<String> = members.iter().chain(members.first()).map(|&m| label(m)).collect();
-                let loc = if members[0] < n { self.nodes[members[0]].decl.loc } else { self.loops[members[0] - n].names[0].loc };
+                let path: Vec<String> = members
+                    .iter()
+                    .chain(members.first())
+                    .map(|&m| label(m))
+                    .collect();
+                let loc = if members[0] < n {
+                    self.nodes[members[0]].decl.loc
+                } else {
+                    self.loops[members[0] - n].names[0].loc
+                };
                 diags
                     .error(self.sources(), loc, format!("data-flow cycle: {}", path.join(" → ")))
                     .node(label(members[0]))
@@ -614,14 +799,25 @@ impl<'a, 'c> Scope<'a, 'c> {
         match self.expr_type(items, diags) {
             Some(Ok(ValueType::Array(e))) => self.loops[lp].element = Some(e.scalar()),
             Some(Ok(other)) => diags
-                .error(self.sources(), items.loc, format!("ForEach `items` must be an array, found {other}"))
+                .error(
+                    self.sources(),
+                    items.loc,
+                    format!("ForEach `items` must be an array, found {other}"),
+                )
                 .pin("items")
                 .emit(),
             Some(Err(lit)) => {
                 if let Some(ValueType::Array(e)) = literal::natural_type(&lit) {
                     self.loops[lp].element = Some(e.scalar());
                 } else {
-                    diags.error(self.sources(), items.loc, "ForEach `items` must be an array").pin("items").emit();
+                    diags
+                        .error(
+                            self.sources(),
+                            items.loc,
+                            "ForEach `items` must be an array",
+                        )
+                        .pin("items")
+                        .emit();
                 }
             }
             None => {}
@@ -630,7 +826,11 @@ impl<'a, 'c> Scope<'a, 'c> {
 
     /// The type of a link or variable expression (`Ok`), or the literal to be typed by
     /// its pin (`Err`); `None` after reporting an error (or when the source failed).
-    fn expr_type(&self, e: &Expr, diags: &mut Diagnostics) -> Option<Result<ValueType, strider_graph::Literal>> {
+    fn expr_type(
+        &self,
+        e: &Expr,
+        diags: &mut Diagnostics,
+    ) -> Option<Result<ValueType, strider_graph::Literal>> {
         match self.source(e, diags)? {
             Ok(arg) => Some(Ok(arg.ty)),
             Err(lit) => Some(Err(lit)),
@@ -639,28 +839,51 @@ impl<'a, 'c> Scope<'a, 'c> {
 
     /// Resolves an expression to a typed source, or hands back a literal to be typed by the
     /// pin. `None` after reporting an error, or silently when it depends on a failed node.
-    fn source(&self, e: &Expr, diags: &mut Diagnostics) -> Option<Result<Arg, strider_graph::Literal>> {
+    fn source(
+        &self,
+        e: &Expr,
+        diags: &mut Diagnostics,
+    ) -> Option<Result<Arg, strider_graph::Literal>> {
         match &e.kind {
             ExprKind::Literal(l) => Some(Err(l.clone())),
             ExprKind::Var(name) => {
                 if let Some(&i) = self.locals.get(name) {
                     let f = self.function?;
                     let ty = f.locals.iter().find(|l| &l.name.name == name)?.ty;
-                    return Some(Ok(Arg { src: Src::Local(i), ty, to_float: false }));
+                    return Some(Ok(Arg {
+                        src: Src::Local(i),
+                        ty,
+                        to_float: false,
+                    }));
                 }
                 if let Some(&i) = self.ctx.global_index.get(name) {
-                    return Some(Ok(Arg { src: Src::Global(i), ty: self.ctx.globals[i].ty, to_float: false }));
+                    return Some(Ok(Arg {
+                        src: Src::Global(i),
+                        ty: self.ctx.globals[i].ty,
+                        to_float: false,
+                    }));
                 }
-                let candidates = self.ctx.globals.iter().map(|g| g.name.as_str()).chain(self.locals.keys().map(String::as_str));
+                let candidates = self
+                    .ctx
+                    .globals
+                    .iter()
+                    .map(|g| g.name.as_str())
+                    .chain(self.locals.keys().map(String::as_str));
                 let hint = suggest(name, candidates)
                     .map(|s| format!("did you mean `{s}`?"))
-                    .unwrap_or_else(|| format!("declare it in `variables: {{ \"{name}\": (type: Float), }}`"));
-                diags.error(self.sources(), e.loc, format!("unknown variable `{name}`")).hint(hint).emit();
+                    .unwrap_or_else(|| {
+                        format!("declare it in `variables: {{ \"{name}\": (type: Float), }}`")
+                    });
+                diags
+                    .error(self.sources(), e.loc, format!("unknown variable `{name}`"))
+                    .hint(hint)
+                    .emit();
                 None
             }
             ExprKind::Link { source, pin } => {
                 let Some(name) = self.names.get(source) else {
-                    let mut hint = suggest(source, self.names.keys().map(String::as_str)).map(|s| format!("did you mean `{s}`?"));
+                    let mut hint = suggest(source, self.names.keys().map(String::as_str))
+                        .map(|s| format!("did you mean `{s}`?"));
                     if hint.is_none() && self.ctx.global_index.contains_key(source) {
                         hint = Some(format!("`{source}` is a variable: write var(\"{source}\")"));
                     }
@@ -678,7 +901,14 @@ impl<'a, 'c> Scope<'a, 'c> {
                             None => {
                                 if node.outputs.is_empty() {
                                     diags
-                                        .error(self.sources(), e.loc, format!("node `{source}` ({}) has no output to link to", slot.decl.kind.name))
+                                        .error(
+                                            self.sources(),
+                                            e.loc,
+                                            format!(
+                                                "node `{source}` ({}) has no output to link to",
+                                                slot.decl.kind.name
+                                            ),
+                                        )
                                         .emit();
                                     return None;
                                 }
@@ -691,7 +921,9 @@ impl<'a, 'c> Scope<'a, 'c> {
                                     None => {
                                         let hint = suggest(p, names.iter().map(String::as_str))
                                             .map(|s| format!("did you mean `{source}.{s}`?"))
-                                            .unwrap_or_else(|| format!("its outputs are: {}", names.join(", ")));
+                                            .unwrap_or_else(|| {
+                                                format!("its outputs are: {}", names.join(", "))
+                                            });
                                         diags
                                             .error(self.sources(), e.loc, format!("link to unknown pin `{p}` of node `{source}` ({})", slot.decl.kind.name))
                                             .node(source.clone())
@@ -703,26 +935,50 @@ impl<'a, 'c> Scope<'a, 'c> {
                                 }
                             }
                         };
-                        Some(Ok(Arg { src: Src::Node { node: j, out }, ty: node.outputs[out], to_float: false }))
+                        Some(Ok(Arg {
+                            src: Src::Node { node: j, out },
+                            ty: node.outputs[out],
+                            to_float: false,
+                        }))
                     }
                     Name::Input(i) => {
                         if let Some(p) = pin {
-                            diags.error(self.sources(), e.loc, format!("function input `{source}` has no pin `{p}`")).emit();
+                            diags
+                                .error(
+                                    self.sources(),
+                                    e.loc,
+                                    format!("function input `{source}` has no pin `{p}`"),
+                                )
+                                .emit();
                             return None;
                         }
                         let ty = self.function?.inputs[i].ty;
-                        Some(Ok(Arg { src: Src::Input(i), ty, to_float: false }))
+                        Some(Ok(Arg {
+                            src: Src::Input(i),
+                            ty,
+                            to_float: false,
+                        }))
                     }
                     Name::Loop(lp, part) => {
                         if let Some(p) = pin {
-                            diags.error(self.sources(), e.loc, format!("loop name `{source}` has no pin `{p}`")).emit();
+                            diags
+                                .error(
+                                    self.sources(),
+                                    e.loc,
+                                    format!("loop name `{source}` has no pin `{p}`"),
+                                )
+                                .emit();
                             return None;
                         }
                         let ty = match part {
                             LoopPart::Element => self.loops[lp].element?,
                             LoopPart::Index | LoopPart::Count => ValueType::Int,
                         };
-                        Some(Ok(Arg { src: Src::Loop { lp, part }, ty, to_float: false }))
+                        Some(Ok(Arg {
+                            src: Src::Loop { lp, part },
+                            ty,
+                            to_float: false,
+                        }))
                     }
                 }
             }
@@ -732,12 +988,19 @@ impl<'a, 'c> Scope<'a, 'c> {
     fn output_names(&self, j: usize) -> Vec<String> {
         let decl = self.nodes[j].decl;
         if let Some(&f) = self.ctx.fn_index.get(&decl.kind.name) {
-            return self.ctx.fns[f].decl.outputs.iter().map(|p| p.name.name.clone()).collect();
+            return self.ctx.fns[f]
+                .decl
+                .outputs
+                .iter()
+                .map(|p| p.name.name.clone())
+                .collect();
         }
-        if let (Some(spec), Some(NodeKind::Builtin(op))) = (registry().get(&decl.kind.name), self.nodes[j].resolved.as_ref().map(|r| r.kind)) {
-            if let Some(o) = spec.overloads.iter().find(|o| o.op == op) {
-                return o.outputs.iter().map(|p| p.name.to_string()).collect();
-            }
+        if let (Some(spec), Some(NodeKind::Builtin(op))) = (
+            registry().get(&decl.kind.name),
+            self.nodes[j].resolved.as_ref().map(|r| r.kind),
+        ) && let Some(o) = spec.overloads.iter().find(|o| o.op == op)
+        {
+            return o.outputs.iter().map(|p| p.name.to_string()).collect();
         }
         Vec::new()
     }
@@ -762,12 +1025,25 @@ impl<'a, 'c> Scope<'a, 'c> {
         }
         let Some(spec) = registry().get(kind) else {
             let fn_names = self.ctx.fns.iter().map(|f| f.decl.name.name.as_str());
-            let all: Vec<&str> = registry().nodes().iter().map(|n| n.name).chain(fn_names).collect();
+            let all: Vec<&str> = registry()
+                .nodes()
+                .iter()
+                .map(|n| n.name)
+                .chain(fn_names)
+                .collect();
             let hint = suggest(kind, all.iter().copied())
                 .map(|s| format!("did you mean `{s}`?"))
                 .unwrap_or_else(|| "see `strider nodes` for the node types".into());
-            let what = if parse_statement(kind) { format!("`{kind}` is an exec statement, not a node") } else { format!("unknown node type `{kind}`") };
-            diags.error(self.sources(), decl.kind.loc, what).node(label).hint(hint).emit();
+            let what = if parse_statement(kind) {
+                format!("`{kind}` is an exec statement, not a node")
+            } else {
+                format!("unknown node type `{kind}`")
+            };
+            diags
+                .error(self.sources(), decl.kind.loc, what)
+                .node(label)
+                .hint(hint)
+                .emit();
             self.nodes[i].failed = true;
             return;
         };
@@ -779,14 +1055,27 @@ impl<'a, 'c> Scope<'a, 'c> {
                 let names: Vec<&str> = first.inputs.iter().map(|s| s.name).collect();
                 let is_output = first.outputs.iter().any(|o| o.name == p.name.name);
                 let hint = if is_output {
-                    format!("`{}` is an output of {kind}; link to it from another node as \"{label}.{}\"", p.name.name, p.name.name)
+                    format!(
+                        "`{}` is an output of {kind}; link to it from another node as \"{label}.{}\"",
+                        p.name.name, p.name.name
+                    )
                 } else {
                     suggest(&p.name.name, names.iter().copied())
                         .map(|s| format!("did you mean `{s}`?"))
-                        .unwrap_or_else(|| if names.is_empty() { format!("{kind} has no inputs") } else { format!("{kind} has the inputs: {}", names.join(", ")) })
+                        .unwrap_or_else(|| {
+                            if names.is_empty() {
+                                format!("{kind} has no inputs")
+                            } else {
+                                format!("{kind} has the inputs: {}", names.join(", "))
+                            }
+                        })
                 };
                 diags
-                    .error(self.sources(), p.name.loc, format!("unknown pin `{}` on {kind}", p.name.name))
+                    .error(
+                        self.sources(),
+                        p.name.loc,
+                        format!("unknown pin `{}` on {kind}", p.name.name),
+                    )
                     .node(label.clone())
                     .pin(p.name.name.clone())
                     .hint(hint)
@@ -798,7 +1087,11 @@ impl<'a, 'c> Scope<'a, 'c> {
         for pin in first.inputs.iter().filter(|p| p.default.is_none()) {
             if !given.iter().any(|(p, _)| p.name.name == pin.name) {
                 diags
-                    .error(self.sources(), decl.loc, format!("missing required input `{}` of {kind}", pin.name))
+                    .error(
+                        self.sources(),
+                        decl.loc,
+                        format!("missing required input `{}` of {kind}", pin.name),
+                    )
                     .node(label.clone())
                     .pin(pin.name)
                     .hint(format!("add `{}: ...` ({}: {})", pin.name, pin.ty, pin.doc))
@@ -808,16 +1101,19 @@ impl<'a, 'c> Scope<'a, 'c> {
         }
         // Target pins must be variables.
         for (p, _) in &given {
-            if let Some(pin) = first.inputs.iter().find(|s| s.name == p.name.name && s.target) {
-                if !matches!(p.value.kind, ExprKind::Var(_)) {
-                    diags
+            if let Some(pin) = first
+                .inputs
+                .iter()
+                .find(|s| s.name == p.name.name && s.target)
+                && !matches!(p.value.kind, ExprKind::Var(_))
+            {
+                diags
                         .error(self.sources(), p.value.loc, format!("write to a non-variable: {kind} changes its `{}` input in place, so it must be a variable", pin.name))
                         .node(label.clone())
                         .pin(pin.name)
                         .hint(format!("write `{}: var(\"Name\")` with a {} variable", pin.name, pin.ty))
                         .emit();
-                    bad = true;
-                }
+                bad = true;
             }
         }
         if bad || failed_source {
@@ -827,10 +1123,10 @@ impl<'a, 'c> Scope<'a, 'c> {
         // Overload resolution: first best fit (fewest promotions).
         let mut best: Option<(usize, usize, Vec<Arg>)> = None;
         for (oi, o) in spec.overloads.iter().enumerate() {
-            if let Ok((args, promotions)) = self.bind(o.inputs.as_slice(), &given) {
-                if best.as_ref().is_none_or(|(_, p, _)| promotions < *p) {
-                    best = Some((oi, promotions, args));
-                }
+            if let Ok((args, promotions)) = self.bind(o.inputs.as_slice(), &given)
+                && best.as_ref().is_none_or(|(_, p, _)| promotions < *p)
+            {
+                best = Some((oi, promotions, args));
             }
         }
         match best {
@@ -852,7 +1148,11 @@ impl<'a, 'c> Scope<'a, 'c> {
 
     /// Binds given pins to an overload's inputs: (args in pin order, promotions) or the
     /// first mismatch (pin index, message).
-    fn bind(&self, pins: &[PinSpec], given: &[(&PinArg, Option<Result<Arg, strider_graph::Literal>>)]) -> Result<(Vec<Arg>, usize), (usize, String)> {
+    fn bind(
+        &self,
+        pins: &[PinSpec],
+        given: &[(&PinArg, Option<Result<Arg, strider_graph::Literal>>)],
+    ) -> Result<(Vec<Arg>, usize), (usize, String)> {
         let mut args = Vec::with_capacity(pins.len());
         let mut promotions = 0;
         for (pi, pin) in pins.iter().enumerate() {
@@ -860,14 +1160,24 @@ impl<'a, 'c> Scope<'a, 'c> {
             let arg = match g {
                 None => {
                     let value = pin.default.clone().unwrap_or_else(|| pin.ty.zero());
-                    Arg { src: Src::Const { value, location: String::new() }, ty: pin.ty, to_float: false }
+                    Arg {
+                        src: Src::Const {
+                            value,
+                            location: String::new(),
+                        },
+                        ty: pin.ty,
+                        to_float: false,
+                    }
                 }
                 Some((p, Some(Ok(a)))) => {
                     if a.ty == pin.ty {
                         a.clone()
                     } else if a.ty.converts_to(pin.ty) {
                         promotions += 1;
-                        Arg { to_float: true, ..a.clone() }
+                        Arg {
+                            to_float: true,
+                            ..a.clone()
+                        }
                     } else {
                         let _ = p;
                         return Err((pi, format!("expected {}, found {}", pin.ty, a.ty)));
@@ -878,8 +1188,16 @@ impl<'a, 'c> Scope<'a, 'c> {
                         if fit == Fit::Promoted {
                             promotions += 1;
                         }
-                        let location = format!("{} [pin `{}`]", self.sources().describe(lit.loc), p.name.name);
-                        Arg { src: Src::Const { value, location }, ty: pin.ty, to_float: false }
+                        let location = format!(
+                            "{} [pin `{}`]",
+                            self.sources().describe(lit.loc),
+                            p.name.name
+                        );
+                        Arg {
+                            src: Src::Const { value, location },
+                            ty: pin.ty,
+                            to_float: false,
+                        }
                     }
                     Err(m) => return Err((pi, m)),
                 },
@@ -902,10 +1220,23 @@ impl<'a, 'c> Scope<'a, 'c> {
         if spec.overloads.len() == 1 {
             if let Err((pi, msg)) = self.bind(&spec.overloads[0].inputs, given) {
                 let pin = &spec.overloads[0].inputs[pi];
-                let at = given.iter().find(|(p, _)| p.name.name == pin.name).map_or(decl.loc, |(p, _)| p.value.loc);
-                let hint = conversion_hint(pin.ty, given.iter().find(|(p, _)| p.name.name == pin.name).and_then(|(_, s)| s.as_ref()));
+                let at = given
+                    .iter()
+                    .find(|(p, _)| p.name.name == pin.name)
+                    .map_or(decl.loc, |(p, _)| p.value.loc);
+                let hint = conversion_hint(
+                    pin.ty,
+                    given
+                        .iter()
+                        .find(|(p, _)| p.name.name == pin.name)
+                        .and_then(|(_, s)| s.as_ref()),
+                );
                 diags
-                    .error(self.sources(), at, format!("type mismatch on pin `{}` of {kind}: {msg}", pin.name))
+                    .error(
+                        self.sources(),
+                        at,
+                        format!("type mismatch on pin `{}` of {kind}: {msg}", pin.name),
+                    )
                     .node(label.to_string())
                     .pin(pin.name)
                     .maybe_hint(hint)
@@ -917,20 +1248,33 @@ impl<'a, 'c> Scope<'a, 'c> {
             .inputs
             .iter()
             .filter_map(|pin| {
-                given.iter().find(|(p, _)| p.name.name == pin.name).map(|(p, s)| {
-                    let t = match s {
-                        Some(Ok(a)) => a.ty.name().to_string(),
-                        Some(Err(l)) => literal::natural_type(l).map_or_else(|| literal::describe(l), |t| t.name().to_string()),
-                        None => "?".into(),
-                    };
-                    format!("{}: {t}", p.name.name)
-                })
+                given
+                    .iter()
+                    .find(|(p, _)| p.name.name == pin.name)
+                    .map(|(p, s)| {
+                        let t = match s {
+                            Some(Ok(a)) => a.ty.name().to_string(),
+                            Some(Err(l)) => literal::natural_type(l)
+                                .map_or_else(|| literal::describe(l), |t| t.name().to_string()),
+                            None => "?".into(),
+                        };
+                        format!("{}: {t}", p.name.name)
+                    })
             })
             .collect();
         let sigs: Vec<String> = spec
             .overloads
             .iter()
-            .map(|o| format!("({})", o.inputs.iter().map(|p| format!("{}: {}", p.name, p.ty)).collect::<Vec<_>>().join(", ")))
+            .map(|o| {
+                format!(
+                    "({})",
+                    o.inputs
+                        .iter()
+                        .map(|p| format!("{}: {}", p.name, p.ty))
+                        .collect::<Vec<_>>()
+                        .join(", ")
+                )
+            })
             .collect();
         let hint = given.iter().find_map(|(_, s)| match s {
             Some(Ok(a)) if a.ty == ValueType::Float && spec.overloads.iter().any(|o| o.inputs.iter().any(|p| p.ty == ValueType::Vec3)) => {
@@ -939,7 +1283,11 @@ impl<'a, 'c> Scope<'a, 'c> {
             _ => None,
         });
         diags
-            .error(self.sources(), decl.loc, format!("type mismatch: {kind} does not take ({})", found.join(", ")))
+            .error(
+                self.sources(),
+                decl.loc,
+                format!("type mismatch: {kind} does not take ({})", found.join(", ")),
+            )
             .node(label.to_string())
             .hint(match hint {
                 Some(h) => format!("{h}; {kind} takes {}", sigs.join(" or ")),
@@ -948,7 +1296,14 @@ impl<'a, 'c> Scope<'a, 'c> {
             .emit();
     }
 
-    fn resolve_call(&mut self, i: usize, f: usize, given: &[(&PinArg, Option<Result<Arg, strider_graph::Literal>>)], failed_source: bool, diags: &mut Diagnostics) {
+    fn resolve_call(
+        &mut self,
+        i: usize,
+        f: usize,
+        given: &[(&PinArg, Option<Result<Arg, strider_graph::Literal>>)],
+        failed_source: bool,
+        diags: &mut Diagnostics,
+    ) {
         let decl = self.nodes[i].decl;
         let label = decl.label().to_string();
         let sig = &self.ctx.fns[f];
@@ -958,12 +1313,24 @@ impl<'a, 'c> Scope<'a, 'c> {
             if !fd.inputs.iter().any(|q| q.name.name == p.name.name) {
                 let names: Vec<&str> = fd.inputs.iter().map(|q| q.name.name.as_str()).collect();
                 diags
-                    .error(self.sources(), p.name.loc, format!("wrong arguments: function `{}` has no input `{}`", fd.name.name, p.name.name))
+                    .error(
+                        self.sources(),
+                        p.name.loc,
+                        format!(
+                            "wrong arguments: function `{}` has no input `{}`",
+                            fd.name.name, p.name.name
+                        ),
+                    )
                     .node(label.clone())
                     .pin(p.name.name.clone())
                     .hint(match suggest(&p.name.name, names.iter().copied()) {
                         Some(s) => format!("did you mean `{s}`?"),
-                        None => format!("`{}` takes {} input(s): {}", fd.name.name, names.len(), names.join(", ")),
+                        None => format!(
+                            "`{}` takes {} input(s): {}",
+                            fd.name.name,
+                            names.len(),
+                            names.join(", ")
+                        ),
                     })
                     .emit();
                 bad = true;
@@ -975,17 +1342,41 @@ impl<'a, 'c> Scope<'a, 'c> {
             let arg = match g {
                 None => match &q.default {
                     Some(lit) => match literal::convert(lit, q.ty, &[]) {
-                        Ok((value, _)) => Arg { src: Src::Const { value, location: self.sources().describe(lit.loc) }, ty: q.ty, to_float: false },
+                        Ok((value, _)) => Arg {
+                            src: Src::Const {
+                                value,
+                                location: self.sources().describe(lit.loc),
+                            },
+                            ty: q.ty,
+                            to_float: false,
+                        },
                         Err(m) => {
-                            diags.error(self.sources(), lit.loc, format!("default of input `{}`: {m}", q.name.name)).emit();
+                            diags
+                                .error(
+                                    self.sources(),
+                                    lit.loc,
+                                    format!("default of input `{}`: {m}", q.name.name),
+                                )
+                                .emit();
                             bad = true;
                             continue;
                         }
                     },
                     None => {
-                        let names: Vec<String> = fd.inputs.iter().map(|q| format!("{}: {}", q.name.name, q.ty)).collect();
+                        let names: Vec<String> = fd
+                            .inputs
+                            .iter()
+                            .map(|q| format!("{}: {}", q.name.name, q.ty))
+                            .collect();
                         diags
-                            .error(self.sources(), decl.loc, format!("wrong arguments: call of `{}` is missing input `{}`", fd.name.name, q.name.name))
+                            .error(
+                                self.sources(),
+                                decl.loc,
+                                format!(
+                                    "wrong arguments: call of `{}` is missing input `{}`",
+                                    fd.name.name, q.name.name
+                                ),
+                            )
                             .node(label.clone())
                             .pin(q.name.name.clone())
                             .hint(format!("`{}` takes ({})", fd.name.name, names.join(", ")))
@@ -999,10 +1390,20 @@ impl<'a, 'c> Scope<'a, 'c> {
                     if a.ty == q.ty {
                         a.clone()
                     } else if a.ty.converts_to(q.ty) {
-                        Arg { to_float: true, ..a.clone() }
+                        Arg {
+                            to_float: true,
+                            ..a.clone()
+                        }
                     } else {
                         diags
-                            .error(self.sources(), p.value.loc, format!("type mismatch on input `{}` of `{}`: expected {}, found {}", q.name.name, fd.name.name, q.ty, a.ty))
+                            .error(
+                                self.sources(),
+                                p.value.loc,
+                                format!(
+                                    "type mismatch on input `{}` of `{}`: expected {}, found {}",
+                                    q.name.name, fd.name.name, q.ty, a.ty
+                                ),
+                            )
                             .node(label.clone())
                             .pin(q.name.name.clone())
                             .maybe_hint(conversion_hint(q.ty, Some(&Ok(a.clone()))))
@@ -1013,12 +1414,27 @@ impl<'a, 'c> Scope<'a, 'c> {
                 }
                 Some((p, Some(Err(lit)))) => match literal::convert(lit, q.ty, &[]) {
                     Ok((value, _)) => {
-                        let location = format!("{} [pin `{}`]", self.sources().describe(lit.loc), p.name.name);
-                        Arg { src: Src::Const { value, location }, ty: q.ty, to_float: false }
+                        let location = format!(
+                            "{} [pin `{}`]",
+                            self.sources().describe(lit.loc),
+                            p.name.name
+                        );
+                        Arg {
+                            src: Src::Const { value, location },
+                            ty: q.ty,
+                            to_float: false,
+                        }
                     }
                     Err(m) => {
                         diags
-                            .error(self.sources(), lit.loc, format!("type mismatch on input `{}` of `{}`: {m}", q.name.name, fd.name.name))
+                            .error(
+                                self.sources(),
+                                lit.loc,
+                                format!(
+                                    "type mismatch on input `{}` of `{}`: {m}",
+                                    q.name.name, fd.name.name
+                                ),
+                            )
                             .node(label.clone())
                             .pin(q.name.name.clone())
                             .emit();
@@ -1042,18 +1458,46 @@ impl<'a, 'c> Scope<'a, 'c> {
     }
 
     /// An argument for a step input of a fixed type.
-    fn step_arg(&self, e: &Expr, ty: ValueType, what: &str, diags: &mut Diagnostics) -> Option<Arg> {
+    fn step_arg(
+        &self,
+        e: &Expr,
+        ty: ValueType,
+        what: &str,
+        diags: &mut Diagnostics,
+    ) -> Option<Arg> {
         match self.source(e, diags)? {
             Ok(a) if a.ty == ty => Some(a),
-            Ok(a) if a.ty.converts_to(ty) => Some(Arg { to_float: true, ..a }),
+            Ok(a) if a.ty.converts_to(ty) => Some(Arg {
+                to_float: true,
+                ..a
+            }),
             Ok(a) => {
-                diags.error(self.sources(), e.loc, format!("type mismatch: {what} expects {ty}, found {}", a.ty)).emit();
+                diags
+                    .error(
+                        self.sources(),
+                        e.loc,
+                        format!("type mismatch: {what} expects {ty}, found {}", a.ty),
+                    )
+                    .emit();
                 None
             }
             Err(lit) => match literal::convert(&lit, ty, &[]) {
-                Ok((value, _)) => Some(Arg { src: Src::Const { value, location: self.sources().describe(lit.loc) }, ty, to_float: false }),
+                Ok((value, _)) => Some(Arg {
+                    src: Src::Const {
+                        value,
+                        location: self.sources().describe(lit.loc),
+                    },
+                    ty,
+                    to_float: false,
+                }),
                 Err(m) => {
-                    diags.error(self.sources(), lit.loc, format!("type mismatch: {what}: {m}")).emit();
+                    diags
+                        .error(
+                            self.sources(),
+                            lit.loc,
+                            format!("type mismatch: {what}: {m}"),
+                        )
+                        .emit();
                     None
                 }
             },
@@ -1061,28 +1505,33 @@ impl<'a, 'c> Scope<'a, 'c> {
     }
 
     /// Checks that the pure nodes an argument pulls read loop names only inside their loop.
-    fn check_scope(&self, arg: &Arg, active: &[usize], at: Loc, diags: &mut Diagnostics, seen: &mut Vec<usize>) {
+    fn check_scope(
+        &self,
+        arg: &Arg,
+        active: &[usize],
+        at: Loc,
+        diags: &mut Diagnostics,
+        seen: &mut Vec<usize>,
+    ) {
         match &arg.src {
-            Src::Loop { lp, .. } => {
-                if !active.contains(lp) {
-                    let name = &self.loops[*lp].names[0].name;
-                    diags
+            Src::Loop { lp, .. } if !active.contains(lp) => {
+                let name = &self.loops[*lp].names[0].name;
+                diags
                         .error(self.sources(), at, format!("`{name}` is used outside its loop"))
                         .hint(format!("loop names exist only inside the body of the loop that declares them (at {})", self.sources().describe(self.loops[*lp].names[0].loc)))
                         .emit();
-                }
             }
             Src::Node { node, .. } => {
                 if seen.contains(node) {
                     return;
                 }
                 seen.push(*node);
-                if let Some(n) = &self.nodes[*node].resolved {
-                    if n.pure {
-                        let loc = self.nodes[*node].decl.loc;
-                        for a in &n.inputs {
-                            self.check_scope(a, active, loc, diags, seen);
-                        }
+                if let Some(n) = &self.nodes[*node].resolved
+                    && n.pure
+                {
+                    let loc = self.nodes[*node].decl.loc;
+                    for a in &n.inputs {
+                        self.check_scope(a, active, loc, diags, seen);
                     }
                 }
             }
@@ -1090,7 +1539,12 @@ impl<'a, 'c> Scope<'a, 'c> {
         }
     }
 
-    fn steps(&mut self, steps: &'a [Step], active: &mut Vec<usize>, diags: &mut Diagnostics) -> Vec<CStep> {
+    fn steps(
+        &mut self,
+        steps: &'a [Step],
+        active: &mut Vec<usize>,
+        diags: &mut Diagnostics,
+    ) -> Vec<CStep> {
         let mut out = Vec::new();
         for s in steps {
             if let Some(c) = self.step(s, active, diags) {
@@ -1100,11 +1554,21 @@ impl<'a, 'c> Scope<'a, 'c> {
         out
     }
 
-    fn step(&mut self, s: &'a Step, active: &mut Vec<usize>, diags: &mut Diagnostics) -> Option<CStep> {
+    fn step(
+        &mut self,
+        s: &'a Step,
+        active: &mut Vec<usize>,
+        diags: &mut Diagnostics,
+    ) -> Option<CStep> {
         match s {
             Step::Set { var, value, loc } => {
                 let target = if let Some(&i) = self.locals.get(&var.name) {
-                    let ty = self.function?.locals.iter().find(|l| l.name.name == var.name)?.ty;
+                    let ty = self
+                        .function?
+                        .locals
+                        .iter()
+                        .find(|l| l.name.name == var.name)?
+                        .ty;
                     (VarRef::Local(i), ty)
                 } else if let Some(&i) = self.ctx.global_index.get(&var.name) {
                     (VarRef::Global(i), self.ctx.globals[i].ty)
@@ -1131,14 +1595,27 @@ impl<'a, 'c> Scope<'a, 'c> {
                     }
                     return None;
                 };
-                let arg = self.step_arg(value, target.1, &format!("Set(\"{}\")", var.name), diags)?;
+                let arg =
+                    self.step_arg(value, target.1, &format!("Set(\"{}\")", var.name), diags)?;
                 self.check_scope(&arg, active, *loc, diags, &mut Vec::new());
-                Some(CStep::Set { target: target.0, ty: target.1, arg })
+                Some(CStep::Set {
+                    target: target.0,
+                    ty: target.1,
+                    arg,
+                })
             }
             Step::Run(id) => {
                 let Some(Name::Node(j)) = self.names.get(&id.name).copied() else {
-                    let hint = suggest(&id.name, self.names.keys().map(String::as_str)).map(|s| format!("did you mean `{s}`?"));
-                    diags.error(self.sources(), id.loc, format!("Run names unknown node `{}`", id.name)).maybe_hint(hint).emit();
+                    let hint = suggest(&id.name, self.names.keys().map(String::as_str))
+                        .map(|s| format!("did you mean `{s}`?"));
+                    diags
+                        .error(
+                            self.sources(),
+                            id.loc,
+                            format!("Run names unknown node `{}`", id.name),
+                        )
+                        .maybe_hint(hint)
+                        .emit();
                     return None;
                 };
                 self.nodes[j].ran = true;
@@ -1172,23 +1649,41 @@ impl<'a, 'c> Scope<'a, 'c> {
                 }
                 Some(CStep::Exec(j))
             }
-            Step::Branch { condition, then, otherwise, loc } => {
+            Step::Branch {
+                condition,
+                then,
+                otherwise,
+                loc,
+            } => {
                 let c = self.step_arg(condition, ValueType::Bool, "Branch condition", diags);
                 if let Some(c) = &c {
                     self.check_scope(c, active, *loc, diags, &mut Vec::new());
                 }
                 let then = self.steps(then, active, diags);
                 let otherwise = self.steps(otherwise, active, diags);
-                Some(CStep::Branch { condition: c?, then, otherwise })
+                Some(CStep::Branch {
+                    condition: c?,
+                    then,
+                    otherwise,
+                })
             }
-            Step::ForEach { items, body, loc, .. } => {
+            Step::ForEach {
+                items, body, loc, ..
+            } => {
                 let lp = *self.loop_index.get(&(s as *const _))?;
                 let items_arg = match self.source(items, diags) {
                     Some(Ok(a)) => Some(a),
                     Some(Err(lit)) => {
                         let ty = literal::natural_type(&lit).filter(|t| t.is_array());
                         match ty.map(|t| literal::convert(&lit, t, &[])) {
-                            Some(Ok((value, _))) => Some(Arg { src: Src::Const { value, location: self.sources().describe(lit.loc) }, ty: ty?, to_float: false }),
+                            Some(Ok((value, _))) => Some(Arg {
+                                src: Src::Const {
+                                    value,
+                                    location: self.sources().describe(lit.loc),
+                                },
+                                ty: ty?,
+                                to_float: false,
+                            }),
                             _ => None,
                         }
                     }
@@ -1205,9 +1700,15 @@ impl<'a, 'c> Scope<'a, 'c> {
                     return None;
                 }
                 self.loops[lp].element = items_arg.ty.elem().map(|e| e.scalar());
-                Some(CStep::ForEach { items: items_arg, lp, body })
+                Some(CStep::ForEach {
+                    items: items_arg,
+                    lp,
+                    body,
+                })
             }
-            Step::For { count, body, loc, .. } => {
+            Step::For {
+                count, body, loc, ..
+            } => {
                 let lp = *self.loop_index.get(&(s as *const _))?;
                 let c = self.step_arg(count, ValueType::Int, "For count", diags);
                 if let Some(c) = &c {
@@ -1216,17 +1717,28 @@ impl<'a, 'c> Scope<'a, 'c> {
                 active.push(lp);
                 let body = self.steps(body, active, diags);
                 active.pop();
-                Some(CStep::For { count: c?, lp, body })
+                Some(CStep::For {
+                    count: c?,
+                    lp,
+                    body,
+                })
             }
             Step::Sequence(blocks, _) => {
-                let blocks = blocks.iter().map(|b| self.steps(b, active, diags)).collect();
+                let blocks = blocks
+                    .iter()
+                    .map(|b| self.steps(b, active, diags))
+                    .collect();
                 Some(CStep::Sequence(blocks))
             }
             Step::Return { values, loc } => {
                 let Some(f) = self.function else {
                     if let Some(v) = values.first() {
                         diags
-                            .error(self.sources(), v.name.loc, "an event has no outputs; `Return` in an event takes no values")
+                            .error(
+                                self.sources(),
+                                v.name.loc,
+                                "an event has no outputs; `Return` in an event takes no values",
+                            )
                             .hint("write `Return` to leave the event early")
                             .emit();
                         return None;
@@ -1236,15 +1748,29 @@ impl<'a, 'c> Scope<'a, 'c> {
                 let mut out = Vec::new();
                 for v in values {
                     let Some(o) = f.outputs.iter().position(|p| p.name.name == v.name.name) else {
-                        let names: Vec<&str> = f.outputs.iter().map(|p| p.name.name.as_str()).collect();
+                        let names: Vec<&str> =
+                            f.outputs.iter().map(|p| p.name.name.as_str()).collect();
                         diags
-                            .error(self.sources(), v.name.loc, format!("function `{}` has no output `{}`", f.name.name, v.name.name))
-                            .hint(if names.is_empty() { "the function declares no outputs".to_string() } else { format!("its outputs are: {}", names.join(", ")) })
+                            .error(
+                                self.sources(),
+                                v.name.loc,
+                                format!(
+                                    "function `{}` has no output `{}`",
+                                    f.name.name, v.name.name
+                                ),
+                            )
+                            .hint(if names.is_empty() {
+                                "the function declares no outputs".to_string()
+                            } else {
+                                format!("its outputs are: {}", names.join(", "))
+                            })
                             .emit();
                         continue;
                     };
                     let ty = f.outputs[o].ty;
-                    if let Some(a) = self.step_arg(&v.value, ty, &format!("output `{}`", v.name.name), diags) {
+                    if let Some(a) =
+                        self.step_arg(&v.value, ty, &format!("output `{}`", v.name.name), diags)
+                    {
                         self.check_scope(&a, active, *loc, diags, &mut Vec::new());
                         out.push((o, a));
                     }
@@ -1256,22 +1782,42 @@ impl<'a, 'c> Scope<'a, 'c> {
 }
 
 fn parse_statement(kind: &str) -> bool {
-    ["Set", "Run", "Branch", "ForEach", "For", "Sequence", "Return"].contains(&kind)
+    [
+        "Set", "Run", "Branch", "ForEach", "For", "Sequence", "Return",
+    ]
+    .contains(&kind)
 }
 
-fn conversion_hint(expected: ValueType, found: Option<&Result<Arg, strider_graph::Literal>>) -> Option<String> {
+fn conversion_hint(
+    expected: ValueType,
+    found: Option<&Result<Arg, strider_graph::Literal>>,
+) -> Option<String> {
     let found_ty = match found? {
         Ok(a) => a.ty,
         Err(l) => literal::natural_type(l)?,
     };
     Some(match (found_ty, expected) {
-        (ValueType::Float, ValueType::Vec3) => "insert a MakeVector node (e.g. MakeVector(z: ...)) to build a Vec3 from a Float".into(),
-        (ValueType::Vec3, ValueType::Float) => "take one component with BreakVector (\"node.x\") or the size with Length".into(),
-        (ValueType::Float, ValueType::Int) => "convert with ToInt (truncates) or Round then ToInt".into(),
-        (ValueType::Transform, ValueType::Vec3) => "take the position with BreakTransform (\"node.translation\")".into(),
-        (ValueType::Transform, ValueType::Quat) => "take the rotation with BreakTransform (\"node.rotation\")".into(),
-        (ValueType::Vec3 | ValueType::Quat, ValueType::Transform) => "build one with MakeTransform".into(),
-        (ValueType::Array(_), t) if !t.is_array() => "pick an element with At(array: ..., index: ...)".into(),
+        (ValueType::Float, ValueType::Vec3) => {
+            "insert a MakeVector node (e.g. MakeVector(z: ...)) to build a Vec3 from a Float".into()
+        }
+        (ValueType::Vec3, ValueType::Float) => {
+            "take one component with BreakVector (\"node.x\") or the size with Length".into()
+        }
+        (ValueType::Float, ValueType::Int) => {
+            "convert with ToInt (truncates) or Round then ToInt".into()
+        }
+        (ValueType::Transform, ValueType::Vec3) => {
+            "take the position with BreakTransform (\"node.translation\")".into()
+        }
+        (ValueType::Transform, ValueType::Quat) => {
+            "take the rotation with BreakTransform (\"node.rotation\")".into()
+        }
+        (ValueType::Vec3 | ValueType::Quat, ValueType::Transform) => {
+            "build one with MakeTransform".into()
+        }
+        (ValueType::Array(_), t) if !t.is_array() => {
+            "pick an element with At(array: ..., index: ...)".into()
+        }
         _ => return None,
     })
 }

@@ -37,11 +37,22 @@ struct Gen<'a> {
 
 pub(crate) fn generate(loaded: &LoadedGraph, checked: &Checked) -> Program {
     let name = if loaded.main.name.is_empty() {
-        loaded.sources.path(loaded.main.file).file_stem().map(|s| s.to_string_lossy().into_owned()).unwrap_or_default()
+        loaded
+            .sources
+            .path(loaded.main.file)
+            .file_stem()
+            .map(|s| s.to_string_lossy().into_owned())
+            .unwrap_or_default()
     } else {
         loaded.main.name.clone()
     };
-    let mut g = Gen { pb: ProgramBuilder::new(&name), checked, globals: Vec::new(), consts: HashMap::new(), frames: Vec::new() };
+    let mut g = Gen {
+        pb: ProgramBuilder::new(&name),
+        checked,
+        globals: Vec::new(),
+        consts: HashMap::new(),
+        frames: Vec::new(),
+    };
     for v in &checked.globals {
         let slot = g.pb.alloc(v.ty);
         g.pb.write(slot, &v.default, &v.location);
@@ -56,7 +67,10 @@ pub(crate) fn generate(loaded: &LoadedGraph, checked: &Checked) -> Program {
         });
     }
     let top = g.frame(None);
-    for (steps, construction) in [(&checked.graph.construction, true), (&checked.graph.forward, false)] {
+    for (steps, construction) in [
+        (&checked.graph.construction, true),
+        (&checked.graph.forward, false),
+    ] {
         let entry = g.pb.here();
         if construction {
             g.pb.set_construction_entry(entry);
@@ -90,7 +104,11 @@ impl Gen<'_> {
         };
         let inputs = body.inputs.iter().map(|&t| self.pb.alloc(t)).collect();
         let outputs = body.outputs.iter().map(|&t| self.pb.alloc(t)).collect();
-        let locals = body.locals.iter().map(|(t, _, _)| self.pb.alloc(*t)).collect();
+        let locals = body
+            .locals
+            .iter()
+            .map(|(t, _, _)| self.pb.alloc(*t))
+            .collect();
         let loops = body
             .loops
             .iter()
@@ -102,7 +120,15 @@ impl Gen<'_> {
             })
             .collect();
         let id = self.frames.len();
-        self.frames.push(Frame { body: function, node_out: Vec::new(), inputs, outputs, locals, loops, callees: HashMap::new() });
+        self.frames.push(Frame {
+            body: function,
+            node_out: Vec::new(),
+            inputs,
+            outputs,
+            locals,
+            loops,
+            callees: HashMap::new(),
+        });
         let node_count = body.nodes.len();
         let mut node_out = Vec::with_capacity(node_count);
         for n in 0..node_count {
@@ -115,7 +141,9 @@ impl Gen<'_> {
                     self.frames[id].callees.insert(n, callee);
                     node_out.push(self.frames[callee].outputs.clone());
                 }
-                NodeKind::Builtin(_) => node_out.push(out_types.iter().map(|&t| self.pb.alloc(t)).collect()),
+                NodeKind::Builtin(_) => {
+                    node_out.push(out_types.iter().map(|&t| self.pb.alloc(t)).collect())
+                }
             }
         }
         self.frames[id].node_out = node_out;
@@ -245,7 +273,11 @@ impl Gen<'_> {
                 self.pb.emit(Op::Copy(*ty), &[from, to]);
             }
             CStep::Exec(n) => self.node(frame, *n, &mut done),
-            CStep::Branch { condition, then, otherwise } => {
+            CStep::Branch {
+                condition,
+                then,
+                otherwise,
+            } => {
                 let c = self.pull(frame, std::slice::from_ref(condition), &mut done)[0];
                 let jf = self.pb.emit(Op::JumpIfFalse, &[c, 0]);
                 self.steps(frame, then, rets);
@@ -266,7 +298,10 @@ impl Gen<'_> {
                 };
                 self.pb.emit(Op::Copy(ValueType::Int), &[zero, counter]);
                 let head = self.pb.here();
-                let next = self.pb.emit(Op::ForEachNext(elem), &[arr, counter, element, index, count, 0]);
+                let next = self.pb.emit(
+                    Op::ForEachNext(elem),
+                    &[arr, counter, element, index, count, 0],
+                );
                 self.steps(frame, body, rets);
                 self.pb.emit(Op::Jump, &[head]);
                 let exit = self.pb.here();

@@ -14,7 +14,11 @@ pub(crate) enum Fit {
 
 /// Converts `lit` to a value of type `ty`. `choices` names the values of an `Int` mode
 /// pin. Errors are worded for the file's author.
-pub(crate) fn convert(lit: &Literal, ty: ValueType, choices: &[&str]) -> Result<(Value, Fit), String> {
+pub(crate) fn convert(
+    lit: &Literal,
+    ty: ValueType,
+    choices: &[&str],
+) -> Result<(Value, Fit), String> {
     use LiteralKind as L;
     let found = || describe(lit);
     match (&lit.kind, ty) {
@@ -24,18 +28,36 @@ pub(crate) fn convert(lit: &Literal, ty: ValueType, choices: &[&str]) -> Result<
             .map_err(|_| format!("{i} does not fit in a 32-bit Int")),
         (L::Int(i), ValueType::Float) => Ok((Value::Float(*i as f32), Fit::Promoted)),
         (L::Float(f), ValueType::Float) => float(*f).map(|f| (Value::Float(f), Fit::Exact)),
-        (L::Word(w), ValueType::Int) if !choices.is_empty() => match choices.iter().position(|c| c == w) {
-            Some(i) => Ok((Value::Int(i as i32), Fit::Exact)),
-            None => Err(format!("`{w}` is not one of {}", choices.join(", "))),
-        },
-        (L::Numbers(n), ValueType::Vec3) if n.len() == 3 => vec3(n).map(|v| (Value::Vec3(v), Fit::Exact)),
-        (L::Numbers(_) | L::Euler(_), ValueType::Quat) => quat(lit).map(|q| (Value::Quat(q), Fit::Exact)),
-        (L::Transform { translation, rotation, scale }, ValueType::Transform) => {
+        (L::Word(w), ValueType::Int) if !choices.is_empty() => {
+            match choices.iter().position(|c| c == w) {
+                Some(i) => Ok((Value::Int(i as i32), Fit::Exact)),
+                None => Err(format!("`{w}` is not one of {}", choices.join(", "))),
+            }
+        }
+        (L::Numbers(n), ValueType::Vec3) if n.len() == 3 => {
+            vec3(n).map(|v| (Value::Vec3(v), Fit::Exact))
+        }
+        (L::Numbers(_) | L::Euler(_), ValueType::Quat) => {
+            quat(lit).map(|q| (Value::Quat(q), Fit::Exact))
+        }
+        (
+            L::Transform {
+                translation,
+                rotation,
+                scale,
+            },
+            ValueType::Transform,
+        ) => {
             let mut t = Transform::IDENTITY;
             if let Some(l) = translation {
                 t.translation = match &l.kind {
                     L::Numbers(n) if n.len() == 3 => vec3(n)?,
-                    _ => return Err(format!("a translation is (x, y, z) in cm, found {}", describe(l))),
+                    _ => {
+                        return Err(format!(
+                            "a translation is (x, y, z) in cm, found {}",
+                            describe(l)
+                        ));
+                    }
                 };
             }
             if let Some(l) = rotation {
@@ -56,7 +78,8 @@ pub(crate) fn convert(lit: &Literal, ty: ValueType, choices: &[&str]) -> Result<
             let mut out = Vec::with_capacity(items.len());
             let mut fit = Fit::Exact;
             for (i, item) in items.iter().enumerate() {
-                let (v, f) = convert(item, e.scalar(), &[]).map_err(|m| format!("element {i}: {m}"))?;
+                let (v, f) =
+                    convert(item, e.scalar(), &[]).map_err(|m| format!("element {i}: {m}"))?;
                 fit = fit.max(f);
                 out.push(v);
             }
@@ -78,7 +101,13 @@ pub(crate) fn natural_type(lit: &Literal) -> Option<ValueType> {
         L::Transform { .. } => ValueType::Transform,
         L::Bone(_) | L::NoBone => ValueType::Bone,
         L::Name(_) => ValueType::Name,
-        L::List(items) => ValueType::Array(items.first().and_then(natural_type).and_then(|t| t.elem()).unwrap_or(Elem::Float)),
+        L::List(items) => ValueType::Array(
+            items
+                .first()
+                .and_then(natural_type)
+                .and_then(|t| t.elem())
+                .unwrap_or(Elem::Float),
+        ),
         L::Word(_) => return None,
     })
 }
@@ -110,9 +139,15 @@ fn quat(lit: &Literal) -> Result<Quat, String> {
         }
         LiteralKind::Euler(e) => {
             let v = Vec3::new(float(e[0])?, float(e[1])?, float(e[2])?);
-            Ok(strider_core::euler::quat_from_euler(v, strider_core::EulerOrder::XYZ))
+            Ok(strider_core::euler::quat_from_euler(
+                v,
+                strider_core::EulerOrder::XYZ,
+            ))
         }
-        _ => Err(format!("a rotation is (x, y, z, w) or euler(x, y, z), found {}", describe(lit))),
+        _ => Err(format!(
+            "a rotation is (x, y, z, w) or euler(x, y, z), found {}",
+            describe(lit)
+        )),
     }
 }
 

@@ -220,8 +220,8 @@ mod tests {
         );
         let mut b = a.clone();
         let all = a.globals().to_vec();
-        for i in 0..s.len() {
-            assert_eq!(all[i], b.global(BoneIndex(i as u32)));
+        for (i, g) in all.iter().enumerate() {
+            assert_eq!(*g, b.global(BoneIndex(i as u32)));
         }
     }
 }

@@ -223,10 +223,7 @@ impl Parser<'_> {
                             g.version = n as u32
                         }
                         _ => self
-                            .err(
-                                v.span,
-                                "unsupported format version".to_string(),
-                            )
+                            .err(v.span, "unsupported format version".to_string())
                             .hint(format!(
                                 "this build reads version {}",
                                 crate::FORMAT_VERSION
@@ -251,10 +248,10 @@ impl Parser<'_> {
                 "variables" => g.variables = self.variables(v, "variables"),
                 "functions" => {
                     for (k, body) in self.map_entries(v, "functions") {
-                        if let Some(name) = self.string(k, "a function name") {
-                            if let Some(f) = self.function(name, body) {
-                                g.functions.push(f);
-                            }
+                        if let Some(name) = self.string(k, "a function name")
+                            && let Some(f) = self.function(name, body)
+                        {
+                            g.functions.push(f);
                         }
                     }
                 }
@@ -361,14 +358,14 @@ impl Parser<'_> {
                         _ => {}
                     }
                 }
-                if let (Some(lo), Some(hi)) = (t.min, t.max) {
-                    if lo > hi {
-                        self.err(
-                            v.span,
-                            format!("tunable range is empty: min {lo} > max {hi}"),
-                        )
-                        .emit();
-                    }
+                if let (Some(lo), Some(hi)) = (t.min, t.max)
+                    && lo > hi
+                {
+                    self.err(
+                        v.span,
+                        format!("tunable range is empty: min {lo} > max {hi}"),
+                    )
+                    .emit();
                 }
                 Some(t)
             }
@@ -700,19 +697,19 @@ impl Parser<'_> {
                 }
             },
             Value::Struct(name, fields) => {
-                if let Some(n) = name {
-                    if n.value != "Transform" {
-                        self.err(
-                            n.span,
-                            format!(
-                                "`{}(...)` is a node; a node cannot be written inside a pin",
-                                n.value
-                            ),
-                        )
-                        .hint("give it an id in `nodes` and link to it by that id")
-                        .emit();
-                        return None;
-                    }
+                if let Some(n) = name
+                    && n.value != "Transform"
+                {
+                    self.err(
+                        n.span,
+                        format!(
+                            "`{}(...)` is a node; a node cannot be written inside a pin",
+                            n.value
+                        ),
+                    )
+                    .hint("give it an id in `nodes` and link to it by that id")
+                    .emit();
+                    return None;
                 }
                 self.check_fields(fields, &["translation", "rotation", "scale"], "a transform");
                 let mut t = (None, None, None);

@@ -115,22 +115,22 @@ impl SkelReader<'_> {
     }
 
     fn numbers<const N: usize>(&mut self, v: &Spanned<Value>, what: &str) -> Option<[f32; N]> {
-        if let Value::Tuple(None, items) = &v.value {
-            if items.len() == N {
-                let mut out = [0.0; N];
-                for (o, item) in out.iter_mut().zip(items) {
-                    *o = match item.value {
-                        Value::Int(i) => i as f32,
-                        Value::Float(f) => f as f32,
-                        _ => {
-                            self.err(item.span, format!("expected a number in {what}"))
-                                .emit();
-                            return None;
-                        }
-                    };
-                }
-                return Some(out);
+        if let Value::Tuple(None, items) = &v.value
+            && items.len() == N
+        {
+            let mut out = [0.0; N];
+            for (o, item) in out.iter_mut().zip(items) {
+                *o = match item.value {
+                    Value::Int(i) => i as f32,
+                    Value::Float(f) => f as f32,
+                    _ => {
+                        self.err(item.span, format!("expected a number in {what}"))
+                            .emit();
+                        return None;
+                    }
+                };
             }
+            return Some(out);
         }
         self.err(v.span, format!("expected {what} as a tuple of {N} numbers"))
             .emit();
@@ -138,24 +138,24 @@ impl SkelReader<'_> {
     }
 
     fn rotation(&mut self, v: &Spanned<Value>) -> Option<Quat> {
-        if let Value::Tuple(Some(n), _) = &v.value {
-            if n.value == "euler" {
-                let inner = Spanned {
-                    value: Value::Tuple(
-                        None,
-                        match &v.value {
-                            Value::Tuple(_, i) => i.clone(),
-                            _ => Vec::new(),
-                        },
-                    ),
-                    span: v.span,
-                };
-                let [x, y, z] = self.numbers::<3>(&inner, "euler angles (degrees)")?;
-                return Some(strider_core::euler::quat_from_euler(
-                    Vec3::new(x, y, z),
-                    strider_core::EulerOrder::XYZ,
-                ));
-            }
+        if let Value::Tuple(Some(n), _) = &v.value
+            && n.value == "euler"
+        {
+            let inner = Spanned {
+                value: Value::Tuple(
+                    None,
+                    match &v.value {
+                        Value::Tuple(_, i) => i.clone(),
+                        _ => Vec::new(),
+                    },
+                ),
+                span: v.span,
+            };
+            let [x, y, z] = self.numbers::<3>(&inner, "euler angles (degrees)")?;
+            return Some(strider_core::euler::quat_from_euler(
+                Vec3::new(x, y, z),
+                strider_core::EulerOrder::XYZ,
+            ));
         }
         let [x, y, z, w] = self.numbers::<4>(v, "a rotation (x, y, z, w) or euler(x, y, z)")?;
         Some(Quat::from_xyzw(x, y, z, w))
