@@ -183,3 +183,96 @@ pub(crate) fn describe(lit: &Literal) -> String {
         L::List(_) => "a list".into(),
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn lit(kind: LiteralKind) -> Literal {
+        Literal {
+            kind,
+            loc: strider_graph::Loc::default(),
+        }
+    }
+
+    #[test]
+    fn int_literals_promote_to_float_and_nothing_else_converts() {
+        assert_eq!(
+            convert(&lit(LiteralKind::Int(3)), ValueType::Float, &[]),
+            Ok((Value::Float(3.0), Fit::Promoted))
+        );
+        assert!(convert(&lit(LiteralKind::Float(1.5)), ValueType::Int, &[]).is_err());
+        assert!(convert(&lit(LiteralKind::Int(1)), ValueType::Bool, &[]).is_err());
+        assert!(
+            convert(
+                &lit(LiteralKind::Int(i64::from(i32::MAX) + 1)),
+                ValueType::Int,
+                &[]
+            )
+            .is_err()
+        );
+    }
+
+    #[test]
+    fn quaternions_must_be_unit_and_euler_is_degrees() {
+        let err = convert(
+            &lit(LiteralKind::Numbers(vec![0.0, 0.0, 0.0, 2.0])),
+            ValueType::Quat,
+            &[],
+        )
+        .unwrap_err();
+        assert!(err.contains("length 2"), "{err}");
+        let (Value::Quat(q), _) = convert(
+            &lit(LiteralKind::Euler([0.0, 0.0, 90.0])),
+            ValueType::Quat,
+            &[],
+        )
+        .unwrap() else {
+            panic!()
+        };
+        // 90° about Z: (0, 0, sin 45°, cos 45°).
+        let h = std::f32::consts::FRAC_1_SQRT_2;
+        assert!((q.z - h).abs() < 1e-6 && (q.w - h).abs() < 1e-6);
+    }
+
+    #[test]
+    fn words_select_named_choices() {
+        let choices = ["Global", "Local"];
+        assert_eq!(
+            convert(
+                &lit(LiteralKind::Word("Local".into())),
+                ValueType::Int,
+                &choices
+            ),
+            Ok((Value::Int(1), Fit::Exact))
+        );
+        let err = convert(
+            &lit(LiteralKind::Word("World".into())),
+            ValueType::Int,
+            &choices,
+        )
+        .unwrap_err();
+        assert_eq!(err, "`World` is not one of Global, Local");
+    }
+
+    #[test]
+    fn lists_convert_element_by_element() {
+        let l = lit(LiteralKind::List(vec![
+            lit(LiteralKind::Int(1)),
+            lit(LiteralKind::Float(2.5)),
+        ]));
+        assert_eq!(
+            convert(&l, ValueType::Array(Elem::Float), &[]),
+            Ok((
+                Value::Array(Elem::Float, vec![Value::Float(1.0), Value::Float(2.5)]),
+                Fit::Promoted
+            ))
+        );
+        let bad = lit(LiteralKind::List(vec![lit(LiteralKind::Bool(true))]));
+        assert!(
+            convert(&bad, ValueType::Array(Elem::Float), &[])
+                .unwrap_err()
+                .starts_with("element 0:")
+        );
+    }
+}

@@ -33,3 +33,22 @@ pub use program::{
 };
 pub use slots::Slots;
 pub use strider_core::{DebugDraw, EmptyWorld, TraceHit, WorldQuery};
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn programs_are_shareable_across_threads() {
+        fn assert_send_sync<T: Send + Sync>() {}
+        assert_send_sync::<Program>();
+        assert_send_sync::<std::sync::Arc<Program>>();
+    }
+
+    #[test]
+    fn an_instruction_is_eight_bytes() {
+        // An op (2 bytes) and a 32-bit operand offset, padded: dense code keeps the
+        // dispatch loop in cache.
+        assert_eq!(std::mem::size_of::<Instr>(), 8);
+    }
+}
