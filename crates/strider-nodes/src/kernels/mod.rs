@@ -2,6 +2,10 @@
 //! fallback for degenerate input written down. No VM, no allocation (except where a
 //! kernel fills a caller-owned buffer).
 
+pub mod locomotion;
+pub mod spline;
+pub mod two_bone_ik;
+
 use glam::{Quat, Vec3};
 use strider_core::{BoneIndex, Skeleton, Transform};
 
