@@ -51,6 +51,8 @@ pub(crate) struct CNode {
     pub pure: bool,
     pub inputs: Vec<Arg>,
     pub outputs: Vec<ValueType>,
+    /// Hidden persistent state slots of a stateful built-in node.
+    pub state: Vec<ValueType>,
 }
 
 #[derive(Clone, Debug)]
@@ -694,6 +696,7 @@ impl<'a, 'c> Scope<'a, 'c> {
                     pure: true,
                     inputs: Vec::new(),
                     outputs: Vec::new(),
+                    state: Vec::new(),
                 })
             })
             .collect();
@@ -1137,6 +1140,7 @@ impl<'a, 'c> Scope<'a, 'c> {
                     pure: spec.effect == Effect::Pure,
                     inputs: args,
                     outputs: o.outputs.iter().map(|p| p.ty).collect(),
+                    state: o.state.clone(),
                 });
             }
             None => {
@@ -1454,6 +1458,7 @@ impl<'a, 'c> Scope<'a, 'c> {
             pure: sig.pure,
             inputs: args,
             outputs: fd.outputs.iter().map(|p| p.ty).collect(),
+            state: Vec::new(),
         });
     }
 

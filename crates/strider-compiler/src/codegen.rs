@@ -20,6 +20,7 @@ struct LoopSlots {
 struct Frame {
     body: Option<usize>,
     node_out: Vec<Vec<u32>>,
+    node_state: Vec<Vec<u32>>,
     inputs: Vec<u32>,
     outputs: Vec<u32>,
     locals: Vec<u32>,
@@ -123,6 +124,7 @@ impl Gen<'_> {
         self.frames.push(Frame {
             body: function,
             node_out: Vec::new(),
+            node_state: Vec::new(),
             inputs,
             outputs,
             locals,
@@ -131,10 +133,13 @@ impl Gen<'_> {
         });
         let node_count = body.nodes.len();
         let mut node_out = Vec::with_capacity(node_count);
+        let mut node_state = Vec::with_capacity(node_count);
         for n in 0..node_count {
             let node = &self.body(id).nodes[n];
             let kind = node.kind;
             let out_types = node.outputs.clone();
+            let state_types = node.state.clone();
+            node_state.push(state_types.iter().map(|&t| self.pb.alloc(t)).collect());
             match kind {
                 NodeKind::Call(f) => {
                     let callee = self.frame(Some(f));
@@ -147,6 +152,7 @@ impl Gen<'_> {
             }
         }
         self.frames[id].node_out = node_out;
+        self.frames[id].node_state = node_state;
         id
     }
 
@@ -225,6 +231,7 @@ impl Gen<'_> {
             NodeKind::Builtin(op) => {
                 let mut operands = ins;
                 operands.extend_from_slice(&self.frames[frame].node_out[n]);
+                operands.extend_from_slice(&self.frames[frame].node_state[n]);
                 self.pb.emit(op, &operands);
             }
             NodeKind::Call(f) => {

@@ -37,7 +37,7 @@ pub struct PinSpec {
 }
 
 /// One typed signature of a node and the op it compiles to. Operands of the op are the
-/// input slots in this order, then the output slots.
+/// input slots in this order, then the output slots, then the state slots.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Overload {
     /// The instruction this signature compiles to.
@@ -46,6 +46,10 @@ pub struct Overload {
     pub inputs: Vec<PinSpec>,
     /// Output pins, in operand order after the inputs.
     pub outputs: Vec<PinSpec>,
+    /// Hidden per-instance state of a stateful node (e.g. a spring's velocity), in operand
+    /// order after the outputs. Allocated once per node and call site, kept across frames,
+    /// zero at instantiation.
+    pub state: Vec<ValueType>,
 }
 
 /// A built-in node: name, docs, effect and its overloads.
@@ -251,6 +255,7 @@ fn ov(op: Op, inputs: Vec<PinSpec>, outputs: Vec<PinSpec>) -> Overload {
         op,
         inputs,
         outputs,
+        state: Vec::new(),
     }
 }
 
