@@ -81,6 +81,35 @@ pub enum DebugPrimitive {
         /// Colour.
         color: DebugColor,
     },
+    /// An arrow from `start` to `end` (head at `end`).
+    Arrow {
+        /// Tail.
+        start: Vec3,
+        /// Head.
+        end: Vec3,
+        /// Line width, centimetres.
+        thickness: f32,
+        /// Colour.
+        color: DebugColor,
+    },
+    /// A wire sphere.
+    Sphere {
+        /// Centre.
+        center: Vec3,
+        /// Radius, centimetres.
+        radius: f32,
+        /// Colour.
+        color: DebugColor,
+    },
+    /// A wire box: the cube `[-1, 1]³` scaled by `half_extents`, then placed by `transform`.
+    Box {
+        /// Placement of the box centre.
+        transform: crate::Transform,
+        /// Half size per local axis, centimetres.
+        half_extents: Vec3,
+        /// Colour.
+        color: DebugColor,
+    },
     /// Axes of a transform: X red, Y green, Z blue, each `size` centimetres long.
     Axes {
         /// The transform drawn.

@@ -177,7 +177,7 @@ pub enum Op {
     /// Quaternion from Euler degrees and order.
     QuatFromEuler,
     /// Euler degrees from a quaternion and order.
-    QuatToEuler,
+    EulerFromQuat,
     /// Quaternion product (parent · child).
     MulQ,
     /// Inverse rotation.
@@ -188,6 +188,10 @@ pub enum Op {
     SlerpQ,
     /// Rotate a vector.
     RotateVector,
+    /// Scale a rotation's angle.
+    QuatScale,
+    /// Shortest rotation between two directions.
+    FindQuatBetween,
 
     // ---- transform ----
     /// Transform from parts.
@@ -206,6 +210,18 @@ pub enum Op {
     TransformPoint,
     /// Transform a direction.
     TransformVector,
+    /// Rotate a transform about a pivot.
+    RotateAroundPoint,
+    /// Lerp/slerp between transforms.
+    InterpolateTransform,
+    /// Aim an axis at a direction or point.
+    AimMath,
+    /// Align an axis with a normal.
+    AlignToNormal,
+    /// Limit a vector's length.
+    ClampLength,
+    /// Keep a point within a spherical shell.
+    ClampSpatially,
 
     // ---- hierarchy and host ----
     /// Read a bone transform.
@@ -245,6 +261,12 @@ pub enum Op {
     DrawLine,
     /// Draw a transform's axes.
     DrawTransform,
+    /// Draw an arrow.
+    DrawArrow,
+    /// Draw a sphere.
+    DrawSphere,
+    /// Draw a box.
+    DrawBox,
 }
 
 #[cfg(test)]

@@ -706,6 +706,38 @@ fn build() -> Vec<NodeSpec> {
         )],
     );
     b.pure(
+        "ClampLength",
+        "`value` with its length limited to `[min, max]` cm, direction kept. A zero vector \
+         has no direction and stays zero.",
+        r#""step": ClampLength(value: "delta", max: 30.0),"#,
+        vec![ov(
+            Op::ClampLength,
+            vec![
+                input("value", V, "The vector."),
+                opt("min", f0(), "Shortest length, cm."),
+                opt("max", Value::Float(1.0e9), "Longest length, cm."),
+            ],
+            vec![output("result", V, "The clamped vector.")],
+        )],
+    );
+    b.pure(
+        "ClampSpatially",
+        "Keeps `point` between `min_radius` and `max_radius` cm from `center`: too far is \
+         pulled in, too close pushed out, along the line to the centre. A point exactly at \
+         the centre is returned unchanged.",
+        r#""kept": ClampSpatially(point: "locked_foot", center: "pelvis_pos", max_radius: 100.0),"#,
+        vec![ov(
+            Op::ClampSpatially,
+            vec![
+                input("point", V, "The point, rig space, cm."),
+                input("center", V, "Sphere centre, rig space, cm."),
+                opt("min_radius", f0(), "Inner radius, cm."),
+                opt("max_radius", Value::Float(100.0), "Outer radius, cm."),
+            ],
+            vec![output("result", V, "The clamped point.")],
+        )],
+    );
+    b.pure(
         "Length",
         "Euclidean length `|value|`, centimetres for positions.",
         r#""speed": Length(value: var("RigSpaceVelocity")),"#,
@@ -799,12 +831,12 @@ fn build() -> Vec<NodeSpec> {
         )],
     );
     b.pure(
-        "QuatToEuler",
+        "EulerFromQuat",
         "Euler angles in degrees of a rotation (inverse of QuatFromEuler). The middle angle \
          is in [−90, 90], the others in (−180, 180].",
         r#""angles": QuatToEuler(value: "rotation"),"#,
         vec![ov(
-            Op::QuatToEuler,
+            Op::EulerFromQuat,
             vec![
                 input("value", Q, "The rotation."),
                 choice("order", EULER_ORDERS, 0, "Which rotation applies first."),
@@ -854,6 +886,36 @@ fn build() -> Vec<NodeSpec> {
                 opt("vector", v0(), "The vector."),
             ],
             vec![output("result", V, "The rotated vector.")],
+        )],
+    );
+
+    b.pure(
+        "QuatScale",
+        "Scales a rotation's angle about its own axis, along the shortest path: \
+         `scale` 0.5 is half the rotation, −1 its inverse (the seed's `quat_scale`).",
+        r#""counter": QuatScale(rotation: "pelvis_twist", scale: -0.667),"#,
+        vec![ov(
+            Op::QuatScale,
+            vec![
+                input("rotation", Q, "The rotation."),
+                opt("scale", Value::Float(1.0), "Angle multiplier."),
+            ],
+            vec![output("result", Q, "The scaled rotation.")],
+        )],
+    );
+    b.pure(
+        "FindQuatBetween",
+        "The shortest rotation taking direction `from` to direction `to` (lengths ignored). \
+         A zero vector gives the identity; opposite directions give 180° about an axis \
+         perpendicular to `from` (`from × X`, or `from × Y` when `from` is along X).",
+        r#""facing": FindQuatBetween(from: (0.0, 1.0, 0.0), to: "velocity"),"#,
+        vec![ov(
+            Op::FindQuatBetween,
+            vec![
+                input("from", V, "Start direction."),
+                input("to", V, "End direction."),
+            ],
+            vec![output("result", Q, "Rotation with `result · from ∥ to`.")],
         )],
     );
 
@@ -936,6 +998,81 @@ fn build() -> Vec<NodeSpec> {
                 opt("vector", v0(), "The direction."),
             ],
             vec![output("result", V, "The transformed direction.")],
+        )],
+    );
+
+    b.pure(
+        "RotateAroundPoint",
+        "Rotates a transform about a pivot: translation `R·(t − p) + p`, rotation `R·r` \
+         (applied after the transform's own rotation), scale kept. Foot roll uses it to \
+         turn the foot about its heel, ball or toe tip.",
+        r#""rolled": RotateAroundPoint(transform: "foot", pivot: "ball_pivot", rotation: "pitch"),"#,
+        vec![ov(
+            Op::RotateAroundPoint,
+            vec![
+                input("transform", T, "The transform to move, rig space."),
+                input("pivot", V, "Point to rotate about, rig space, cm."),
+                input("rotation", Q, "Rotation applied about the pivot (rig axes)."),
+            ],
+            vec![output("result", T, "The rotated transform.")],
+        )],
+    );
+    b.pure(
+        "InterpolateTransform",
+        "Blend of two transforms: lerp translation and scale, shortest-path slerp rotation. \
+         `alpha` is not clamped for translation and scale; NaN gives `a`.",
+        r#""blend": InterpolateTransform(a: "start", b: "end", alpha: "t"),"#,
+        vec![ov(
+            Op::InterpolateTransform,
+            vec![
+                input("a", T, "Transform at alpha 0."),
+                input("b", T, "Transform at alpha 1."),
+                opt("alpha", f0(), "Blend, 0..1."),
+            ],
+            vec![output("result", T, "The blend.")],
+        )],
+    );
+    b.pure(
+        "AimMath",
+        "Rotates a transform by the shortest rotation that points its local `axis` at the \
+         target — a rig-space direction or a point (`mode`) — blended by `weight`. \
+         Translation and scale are kept. A zero axis or direction changes nothing.",
+        r#""aimed": AimMath(transform: "head", axis: (0.0, 1.0, 0.0), target: "look_at", mode: Location),"#,
+        vec![ov(
+            Op::AimMath,
+            vec![
+                input("transform", T, "The transform to rotate, rig space."),
+                opt("axis", Value::Vec3(Vec3::Y), "The transform's local axis to aim."),
+                input("target", V, "Direction (rig space) or point (rig space, cm)."),
+                choice("mode", &["Direction", "Location"], 0, "How to read `target`."),
+                opt("weight", Value::Float(1.0), "0 = unchanged, 1 = fully aimed (clamped)."),
+            ],
+            vec![output("result", T, "The aimed transform.")],
+        )],
+    );
+    b.pure(
+        "AlignToNormal",
+        "Tilts a transform so its local `axis` (default up) lines up with a surface normal, \
+         by the shortest rotation (its yaw about the normal is kept), blended by `weight`. \
+         A zero normal changes nothing.",
+        r#""on_slope": AlignToNormal(transform: "foot", normal: "ground.normal"),"#,
+        vec![ov(
+            Op::AlignToNormal,
+            vec![
+                input("transform", T, "The transform to tilt, rig space."),
+                opt(
+                    "axis",
+                    Value::Vec3(Vec3::Z),
+                    "The transform's local axis to align.",
+                ),
+                input("normal", V, "Surface normal, rig space."),
+                opt(
+                    "weight",
+                    Value::Float(1.0),
+                    "0 = unchanged, 1 = fully aligned (clamped).",
+                ),
+            ],
+            vec![output("result", T, "The aligned transform.")],
         )],
     );
 
@@ -1215,6 +1352,59 @@ fn build() -> Vec<NodeSpec> {
                 input("start", V, "First end, cm, rig space."),
                 input("end", V, "Second end, cm, rig space."),
                 opt("thickness", Value::Float(0.5), "Width, cm."),
+                color(Vec3::ONE),
+            ],
+            vec![],
+        )],
+    );
+    b.node(
+        "DrawArrow",
+        Effect::Mutating,
+        "Draws an arrow from `start` to `end` (rig space), e.g. a velocity. Free when the \
+         host asked for no debug drawing.",
+        r#"DrawArrow(start: "pelvis_pos", end: "velocity_tip", color: (1.0, 1.0, 0.0)),"#,
+        vec![ov(
+            Op::DrawArrow,
+            vec![
+                input("start", V, "Tail, cm, rig space."),
+                input("end", V, "Head, cm, rig space."),
+                opt("thickness", Value::Float(0.5), "Width, cm."),
+                color(Vec3::new(1.0, 1.0, 0.0)),
+            ],
+            vec![],
+        )],
+    );
+    b.node(
+        "DrawSphere",
+        Effect::Mutating,
+        "Draws a wire sphere (rig space), e.g. a sphere trace's hit. Free when the host \
+         asked for no debug drawing.",
+        r#"DrawSphere(center: "hit.point", radius: 5.0),"#,
+        vec![ov(
+            Op::DrawSphere,
+            vec![
+                input("center", V, "Centre, cm, rig space."),
+                opt("radius", Value::Float(5.0), "Radius, cm."),
+                color(Vec3::ONE),
+            ],
+            vec![],
+        )],
+    );
+    b.node(
+        "DrawBox",
+        Effect::Mutating,
+        "Draws a wire box: `half_extents` along the transform's local axes, placed by \
+         `transform` (rig space). Free when the host asked for no debug drawing.",
+        r#"DrawBox(transform: "foot", half_extents: (5.0, 12.0, 3.0)),"#,
+        vec![ov(
+            Op::DrawBox,
+            vec![
+                input("transform", T, "Box centre and orientation, rig space."),
+                opt(
+                    "half_extents",
+                    Value::Vec3(Vec3::splat(5.0)),
+                    "Half size per local axis, cm.",
+                ),
                 color(Vec3::ONE),
             ],
             vec![],

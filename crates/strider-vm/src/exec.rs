@@ -266,7 +266,7 @@ pub(crate) fn run(program: &Program, entry: u32, cx: &mut Ctx<'_>) {
             Op::QuatFromEuler => {
                 q!(2) = strider_core::euler::quat_from_euler(v!(0), k::euler_order(i!(1)));
             }
-            Op::QuatToEuler => {
+            Op::EulerFromQuat => {
                 v!(2) = strider_core::euler::euler_from_quat(q!(0), k::euler_order(i!(1)));
             }
             Op::MulQ => q!(2) = k::unit_q(q!(0) * q!(1)),
@@ -274,6 +274,8 @@ pub(crate) fn run(program: &Program, entry: u32, cx: &mut Ctx<'_>) {
             Op::UnitQ => q!(1) = k::unit_q(q!(0)),
             Op::SlerpQ => q!(3) = k::slerp(q!(0), q!(1), f!(2)),
             Op::RotateVector => v!(2) = q!(0) * v!(1),
+            Op::QuatScale => q!(2) = k::quat_scale(q!(0), f!(1)),
+            Op::FindQuatBetween => q!(2) = k::find_quat_between(v!(0), v!(1)),
 
             Op::MakeTransform => t!(3) = Transform::new(v!(0), k::unit_q(q!(1)), v!(2)),
             Op::BreakTransform => {
@@ -288,6 +290,28 @@ pub(crate) fn run(program: &Program, entry: u32, cx: &mut Ctx<'_>) {
             Op::MakeAbsolute => t!(2) = t!(1) * t!(0),
             Op::TransformPoint => v!(2) = t!(0).transform_point(v!(1)),
             Op::TransformVector => v!(2) = t!(0).transform_vector(v!(1)),
+            Op::RotateAroundPoint => t!(3) = k::rotate_around_point(t!(0), v!(1), q!(2)),
+            Op::InterpolateTransform => {
+                let w = f!(2);
+                t!(3) = if w.is_nan() {
+                    t!(0)
+                } else {
+                    t!(0).interpolate(&t!(1), w)
+                };
+            }
+            Op::AimMath => {
+                let tr = t!(0);
+                let target = v!(2);
+                let direction = if i!(3) == 0 {
+                    target
+                } else {
+                    target - tr.translation
+                };
+                t!(5) = k::aim(tr, v!(1), direction, f!(4));
+            }
+            Op::AlignToNormal => t!(4) = k::aim(t!(0), v!(1), v!(2), f!(3)),
+            Op::ClampLength => v!(3) = k::clamp_length(v!(0), f!(1), f!(2)),
+            Op::ClampSpatially => v!(4) = k::clamp_spatially(v!(0), v!(1), f!(2), f!(3)),
 
             Op::GetTransform => {
                 let result = match bone(cx.pose, s.bones[at!(0)]) {
@@ -436,6 +460,34 @@ pub(crate) fn run(program: &Program, entry: u32, cx: &mut Ctx<'_>) {
                         end: v!(1),
                         thickness: f!(2),
                         color: color(v!(3)),
+                    });
+                }
+            }
+            Op::DrawArrow => {
+                if cx.debug.is_enabled() {
+                    cx.debug.push(DebugPrimitive::Arrow {
+                        start: v!(0),
+                        end: v!(1),
+                        thickness: f!(2),
+                        color: color(v!(3)),
+                    });
+                }
+            }
+            Op::DrawSphere => {
+                if cx.debug.is_enabled() {
+                    cx.debug.push(DebugPrimitive::Sphere {
+                        center: v!(0),
+                        radius: f!(1),
+                        color: color(v!(2)),
+                    });
+                }
+            }
+            Op::DrawBox => {
+                if cx.debug.is_enabled() {
+                    cx.debug.push(DebugPrimitive::Box {
+                        transform: t!(0),
+                        half_extents: v!(1),
+                        color: color(v!(2)),
                     });
                 }
             }

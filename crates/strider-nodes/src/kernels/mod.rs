@@ -213,6 +213,101 @@ pub fn find_bones(
     }
 }
 
+/// `transform` rotated by `rotation` about `pivot` (rig space): the translation moves to
+/// `R·(t − p) + p`, the rotation becomes `R · r` (applied after the transform's own
+/// rotation, parent · child), the scale is kept.
+#[must_use]
+pub fn rotate_around_point(transform: Transform, pivot: Vec3, rotation: Quat) -> Transform {
+    let r = unit_q(rotation);
+    Transform {
+        translation: r * (transform.translation - pivot) + pivot,
+        rotation: unit_q(r * transform.rotation),
+        scale: transform.scale,
+    }
+}
+
+/// The rotation `rotation` with its angle multiplied by `scale` about the same axis, along
+/// the shortest path (`quat_scale(q, 0.5)` is half of `q`; negative scales reverse it).
+#[must_use]
+pub fn quat_scale(rotation: Quat, scale: f32) -> Quat {
+    let mut q = unit_q(rotation);
+    if q.w < 0.0 {
+        q = -q;
+    }
+    let (axis, angle) = q.to_axis_angle();
+    if !angle.is_finite() || !scale.is_finite() || angle == 0.0 {
+        return Quat::IDENTITY;
+    }
+    unit_q(Quat::from_axis_angle(axis, angle * scale))
+}
+
+/// The shortest rotation taking direction `from` to direction `to`. A zero (or non-finite)
+/// vector gives the identity. Opposite directions give 180° about an axis perpendicular
+/// to `from`: `from × X` when that is not tiny, else `from × Y`.
+#[must_use]
+pub fn find_quat_between(from: Vec3, to: Vec3) -> Quat {
+    let (Some(a), Some(b)) = (from.try_normalize(), to.try_normalize()) else {
+        return Quat::IDENTITY;
+    };
+    let d = a.dot(b);
+    if d < -0.999_999 {
+        let axis = a
+            .cross(Vec3::X)
+            .try_normalize()
+            .unwrap_or_else(|| a.cross(Vec3::Y).normalize());
+        return Quat::from_axis_angle(axis, core::f32::consts::PI);
+    }
+    unit_q(Quat::from_xyzw(
+        a.y * b.z - a.z * b.y,
+        a.z * b.x - a.x * b.z,
+        a.x * b.y - a.y * b.x,
+        1.0 + d,
+    ))
+}
+
+/// `vector` with its length limited to `[min, max]` (cm). A zero vector has no direction
+/// and stays zero. `min > max` gives length `max`.
+#[must_use]
+pub fn clamp_length(vector: Vec3, min: f32, max: f32) -> Vec3 {
+    let len = vector.length();
+    if len == 0.0 || !len.is_finite() {
+        return if len.is_finite() { vector } else { Vec3::ZERO };
+    }
+    let clamped = len.max(min).min(max).max(0.0);
+    vector * (clamped / len)
+}
+
+/// `point` kept inside the shell between `min_radius` and `max_radius` around `center`
+/// (cm): too far is pulled in along the line to the centre, too close pushed out. A point
+/// exactly at the centre has no direction to be pushed along and is returned unchanged.
+#[must_use]
+pub fn clamp_spatially(point: Vec3, center: Vec3, min_radius: f32, max_radius: f32) -> Vec3 {
+    let offset = point - center;
+    if offset == Vec3::ZERO {
+        return point;
+    }
+    center + clamp_length(offset, min_radius.max(0.0), max_radius.max(0.0))
+}
+
+/// Rotates `transform` so that its local `axis` points along `direction` (rig space), by
+/// the shortest rotation, blended by `weight` (0 = unchanged, 1 = aligned; clamped).
+/// A zero axis or direction leaves the transform unchanged.
+#[must_use]
+pub fn aim(transform: Transform, axis: Vec3, direction: Vec3, weight: f32) -> Transform {
+    let current = transform.rotation * axis;
+    let full = find_quat_between(current, direction);
+    let w = if weight.is_nan() {
+        0.0
+    } else {
+        weight.clamp(0.0, 1.0)
+    };
+    let delta = Quat::IDENTITY.slerp(full, w);
+    Transform {
+        rotation: unit_q(delta * transform.rotation),
+        ..transform
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -276,6 +371,124 @@ mod tests {
         assert_eq!(sqrt(-4.0), 0.0);
         assert_eq!(to_int(f32::NAN), 0);
         assert_eq!(to_int(-2.7), -2);
+    }
+
+    fn near(a: Vec3, b: Vec3) -> bool {
+        (a - b).length() < 1e-5
+    }
+
+    #[test]
+    fn rotate_around_point_by_hand() {
+        // A foot at (0, 10, 0) rotated 90° about Z around the pivot (0, 5, 0): the offset
+        // (0, 5, 0) turns to (-5, 0, 0), so the foot lands at (-5, 5, 0).
+        let foot = Transform::new(Vec3::new(0.0, 10.0, 0.0), Quat::IDENTITY, Vec3::splat(2.0));
+        let r = Quat::from_rotation_z(core::f32::consts::FRAC_PI_2);
+        let out = rotate_around_point(foot, Vec3::new(0.0, 5.0, 0.0), r);
+        assert!(near(out.translation, Vec3::new(-5.0, 5.0, 0.0)));
+        assert!(out.rotation.dot(r).abs() > 1.0 - 1e-6);
+        assert_eq!(out.scale, Vec3::splat(2.0));
+        // Rotating about the point itself only turns it.
+        let out = rotate_around_point(foot, foot.translation, r);
+        assert!(near(out.translation, foot.translation));
+        // A zero quaternion counts as no rotation.
+        let out = rotate_around_point(foot, Vec3::ZERO, Quat::from_xyzw(0.0, 0.0, 0.0, 0.0));
+        assert_eq!(out.translation, foot.translation);
+    }
+
+    #[test]
+    fn quat_scale_scales_the_angle() {
+        let q = Quat::from_rotation_z(1.0);
+        let half = quat_scale(q, 0.5);
+        assert!(half.dot(Quat::from_rotation_z(0.5)).abs() > 1.0 - 1e-6);
+        let back = quat_scale(q, -2.0);
+        assert!(back.dot(Quat::from_rotation_z(-2.0)).abs() > 1.0 - 1e-6);
+        // The long way round (w < 0) is scaled along the short way: 300° is -60°.
+        let long = Quat::from_rotation_z(300f32.to_radians());
+        let s = quat_scale(long, 0.5);
+        assert!(s.dot(Quat::from_rotation_z(-30f32.to_radians())).abs() > 1.0 - 1e-5);
+        assert_eq!(quat_scale(Quat::IDENTITY, 3.0), Quat::IDENTITY);
+        assert_eq!(quat_scale(q, f32::NAN), Quat::IDENTITY);
+    }
+
+    #[test]
+    fn find_quat_between_cases() {
+        let q = find_quat_between(Vec3::Y, Vec3::new(-1.0, 0.0, 0.0));
+        // +Y to -X is +90° about Z.
+        assert!(
+            q.dot(Quat::from_rotation_z(core::f32::consts::FRAC_PI_2))
+                .abs()
+                > 1.0 - 1e-6
+        );
+        assert!(near(q * Vec3::Y, -Vec3::X));
+        // Lengths do not matter.
+        assert!(near(
+            find_quat_between(Vec3::Y * 5.0, Vec3::Z * 0.1) * Vec3::Y,
+            Vec3::Z
+        ));
+        // Antiparallel: 180° about an axis perpendicular to `from`.
+        for from in [
+            Vec3::X,
+            Vec3::Y,
+            Vec3::Z,
+            Vec3::new(1.0, 2.0, 3.0).normalize(),
+        ] {
+            let q = find_quat_between(from, -from);
+            assert!(near(q * from, -from), "{from}");
+        }
+        assert_eq!(find_quat_between(Vec3::ZERO, Vec3::X), Quat::IDENTITY);
+        assert_eq!(
+            find_quat_between(Vec3::X, Vec3::new(f32::NAN, 0.0, 0.0)),
+            Quat::IDENTITY
+        );
+    }
+
+    #[test]
+    fn clamps() {
+        assert!(near(
+            clamp_length(Vec3::new(0.0, 30.0, 40.0), 0.0, 10.0),
+            Vec3::new(0.0, 6.0, 8.0)
+        ));
+        assert!(near(
+            clamp_length(Vec3::new(0.0, 3.0, 4.0), 10.0, 20.0),
+            Vec3::new(0.0, 6.0, 8.0)
+        ));
+        assert_eq!(clamp_length(Vec3::ZERO, 5.0, 10.0), Vec3::ZERO);
+        assert_eq!(
+            clamp_length(Vec3::new(f32::INFINITY, 0.0, 0.0), 0.0, 1.0),
+            Vec3::ZERO
+        );
+        // A foot 150 cm from the body centre is pulled back to the 100 cm sphere.
+        let c = Vec3::new(0.0, 0.0, 90.0);
+        let p = clamp_spatially(Vec3::new(0.0, 150.0, 90.0), c, 0.0, 100.0);
+        assert!(near(p, Vec3::new(0.0, 100.0, 90.0)));
+        // Inside the shell: unchanged. Too close: pushed out to the inner radius.
+        assert_eq!(
+            clamp_spatially(Vec3::new(0.0, 50.0, 90.0), c, 10.0, 100.0),
+            Vec3::new(0.0, 50.0, 90.0)
+        );
+        assert!(near(
+            clamp_spatially(Vec3::new(0.0, 0.0, 95.0), c, 10.0, 100.0),
+            Vec3::new(0.0, 0.0, 100.0)
+        ));
+        assert_eq!(clamp_spatially(c, c, 10.0, 100.0), c);
+    }
+
+    #[test]
+    fn aim_aligns_an_axis_with_weight() {
+        // Align the local up axis with a 30° slope normal (tilted towards +Y).
+        let n = Vec3::new(0.0, -0.5, 3f32.sqrt() / 2.0);
+        let t = Transform::from_translation(Vec3::new(1.0, 2.0, 3.0));
+        let out = aim(t, Vec3::Z, n, 1.0);
+        assert!(near(out.rotation * Vec3::Z, n));
+        assert_eq!(out.translation, t.translation);
+        // Half weight: half the angle (15°).
+        let half = aim(t, Vec3::Z, n, 0.5);
+        let angle = (half.rotation * Vec3::Z)
+            .angle_between(Vec3::Z)
+            .to_degrees();
+        assert!((angle - 15.0).abs() < 1e-3, "{angle}");
+        assert_eq!(aim(t, Vec3::Z, n, 0.0).rotation, Quat::IDENTITY);
+        assert_eq!(aim(t, Vec3::ZERO, n, 1.0).rotation, Quat::IDENTITY);
     }
 
     #[test]
