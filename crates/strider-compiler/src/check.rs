@@ -1248,6 +1248,29 @@ impl<'a, 'c> Scope<'a, 'c> {
             }
             return;
         }
+        // A literal of the right kind that is malformed (e.g. a quaternion that is not
+        // unit length) is the real problem: say that rather than "no overload fits".
+        for o in &spec.overloads {
+            if let Err((pi, msg)) = self.bind(&o.inputs, given) {
+                let pin = &o.inputs[pi];
+                if let Some((p, Some(Err(lit)))) =
+                    given.iter().find(|(p, _)| p.name.name == pin.name)
+                {
+                    if literal::natural_type(lit) == Some(pin.ty) && !msg.is_empty() {
+                        diags
+                            .error(
+                                self.sources(),
+                                p.value.loc,
+                                format!("invalid value for pin `{}` of {kind}: {msg}", pin.name),
+                            )
+                            .node(label.to_string())
+                            .pin(pin.name)
+                            .emit();
+                        return;
+                    }
+                }
+            }
+        }
         let found: Vec<String> = spec.overloads[0]
             .inputs
             .iter()

@@ -1,0 +1,597 @@
+//! Every built-in node used from RON: a one-node graph per case, run for one frame, its
+//! output read back through a variable. Expected values are worked out by hand in the
+//! comments. A last test checks that every node of the table appears here or in a shipped
+//! example graph.
+
+use std::path::Path;
+use std::sync::Arc;
+use strider_core::{EmptyWorld, Quat, TraceHit, Transform, Vec3, WorldQuery};
+use strider_nodes::{Value, ValueType};
+use strider_vm::{FrameInput, Instance};
+
+/// A flat floor at world z = 0 (normal +Z) for trace nodes.
+struct Floor;
+
+impl WorldQuery for Floor {
+    fn line_trace(&self, start: Vec3, end: Vec3) -> Option<TraceHit> {
+        if (start.z >= 0.0) == (end.z >= 0.0) {
+            return None;
+        }
+        let t = start.z / (start.z - end.z);
+        let point = start.lerp(end, t);
+        Some(TraceHit {
+            point,
+            normal: Vec3::Z,
+            distance: start.distance(point),
+        })
+    }
+
+    fn sphere_trace(&self, start: Vec3, end: Vec3, radius: f32) -> Option<TraceHit> {
+        // The centre stops `radius` above the floor; the contact is right below it.
+        let lifted = Vec3::new(0.0, 0.0, radius);
+        let hit = self.line_trace(start - lifted, end - lifted)?;
+        Some(TraceHit {
+            point: hit.point,
+            normal: Vec3::Z,
+            distance: hit.distance,
+        })
+    }
+}
+
+fn skeleton() -> Arc<strider_core::Skeleton> {
+    strider_graph::load_skeleton(Path::new("graphs/skeletons/mannequin.ron"))
+        .unwrap()
+        .skeleton
+}
+
+/// Runs `node` (RON, e.g. `Add(a: 1.0, b: 2.0)`) once and returns output `pin` as type `ty`.
+fn eval_with(
+    node: &str,
+    pin: &str,
+    ty: ValueType,
+    dt: f32,
+    world: &dyn WorldQuery,
+    to_world: Transform,
+) -> Value {
+    let link = if pin.is_empty() {
+        "n".to_string()
+    } else {
+        format!("n.{pin}")
+    };
+    let text = format!(
+        "Graph(version: 1, name: \"t\", variables: {{ \"Out\": (type: {ty}) }}, nodes: {{ \"n\": {node} }}, events: {{ forward: [ Set(\"Out\", \"{link}\") ] }})"
+    );
+    let program =
+        strider_compiler::compile_str(Path::new("node_test.ron"), &text).unwrap_or_else(|d| {
+            panic!(
+                "{node}: {}",
+                d.iter()
+                    .map(ToString::to_string)
+                    .collect::<Vec<_>>()
+                    .join("\n")
+            )
+        });
+    let program = Arc::new(program);
+    let mut instance = Instance::new(program.clone(), skeleton()).unwrap();
+    instance.run_forward(
+        &FrameInput {
+            dt,
+            component_to_world: to_world,
+            ..Default::default()
+        },
+        world,
+        false,
+    );
+    instance.variable(program.variable_id("Out").unwrap())
+}
+
+fn eval(node: &str, pin: &str, ty: ValueType) -> Value {
+    eval_with(node, pin, ty, 1.0 / 60.0, &EmptyWorld, Transform::IDENTITY)
+}
+
+fn float(node: &str) -> f32 {
+    match eval(node, "", ValueType::Float) {
+        Value::Float(x) => x,
+        v => panic!("{v:?}"),
+    }
+}
+
+fn int(node: &str) -> i32 {
+    match eval(node, "", ValueType::Int) {
+        Value::Int(x) => x,
+        v => panic!("{v:?}"),
+    }
+}
+
+fn boolean(node: &str) -> bool {
+    match eval(node, "", ValueType::Bool) {
+        Value::Bool(x) => x,
+        v => panic!("{v:?}"),
+    }
+}
+
+fn vec3(node: &str, pin: &str) -> Vec3 {
+    match eval(node, pin, ValueType::Vec3) {
+        Value::Vec3(x) => x,
+        v => panic!("{v:?}"),
+    }
+}
+
+fn quat(node: &str) -> Quat {
+    match eval(node, "", ValueType::Quat) {
+        Value::Quat(x) => x,
+        v => panic!("{v:?}"),
+    }
+}
+
+fn transform(node: &str) -> Transform {
+    match eval(node, "", ValueType::Transform) {
+        Value::Transform(x) => x,
+        v => panic!("{v:?}"),
+    }
+}
+
+fn close(a: f32, b: f32) {
+    assert!((a - b).abs() < 1e-4, "{a} != {b}");
+}
+
+fn close_v(a: Vec3, b: Vec3) {
+    assert!((a - b).length() < 1e-4, "{a} != {b}");
+}
+
+fn same_rotation(a: Quat, b: Quat) {
+    assert!(a.dot(b).abs() > 1.0 - 1e-6, "{a} != {b}");
+}
+
+#[test]
+fn arithmetic() {
+    close(float("Add(a: 1.5, b: 2.25)"), 3.75);
+    assert_eq!(int("Add(a: 2, b: 3)"), 5);
+    // Int literal on a Float pin: 1 + 0.5.
+    close(float("Add(a: 1, b: 0.5)"), 1.5);
+    close_v(
+        vec3("Add(a: (1.0, 2.0, 3.0), b: (1.0, 1.0, 1.0))", ""),
+        Vec3::new(2.0, 3.0, 4.0),
+    );
+    close(float("Subtract(a: 1.0, b: 3.0)"), -2.0);
+    assert_eq!(int("Multiply(a: 6, b: 7)"), 42);
+    close_v(
+        vec3("Multiply(a: (1.0, 2.0, 3.0), b: (2.0, 2.0, -1.0))", ""),
+        Vec3::new(2.0, 4.0, -3.0),
+    );
+    close(float("Divide(a: 1.0, b: 4.0)"), 0.25);
+    close(float("Divide(a: 1.0, b: 0.0)"), 0.0);
+    assert_eq!(int("Divide(a: 7, b: 2)"), 3);
+    close(float("Modulo(a: -30.0, b: 360.0)"), 330.0);
+    assert_eq!(int("Modulo(a: -1, b: 3)"), 2);
+    close(float("Min(a: 2.0, b: -1.0)"), -1.0);
+    close(float("Max(a: 2.0, b: -1.0)"), 2.0);
+    close(float("Abs(value: -2.5)"), 2.5);
+    close(float("Negate(value: 2.5)"), -2.5);
+    close(float("Clamp(value: 50.0, min: -30.0, max: 40.0)"), 40.0);
+    close_v(
+        vec3(
+            "Clamp(value: (5.0, -5.0, 0.5), min: (0.0, 0.0, 0.0), max: (1.0, 1.0, 1.0))",
+            "",
+        ),
+        Vec3::new(1.0, 0.0, 0.5),
+    );
+    close(float("Sin(value: 30.0)"), 0.5);
+    close(float("Cos(value: 60.0)"), 0.5);
+    close(float("Tan(value: 45.0)"), 1.0);
+    close(float("Atan2(y: 1.0, x: -1.0)"), 135.0);
+    close(float("Sqrt(value: 2.25)"), 1.5);
+    close(float("Pow(base: 2.0, exponent: 10.0)"), 1024.0);
+    close(float("Fract(value: 2.75)"), 0.75);
+    close(float("Floor(value: -1.5)"), -2.0);
+    close(float("Ceil(value: -1.5)"), -1.0);
+    close(float("Round(value: 2.5)"), 3.0);
+    assert_eq!(int("ToInt(value: -2.7)"), -2);
+    close(float("ToFloat(value: 7)"), 7.0);
+    close(float("Lerp(a: 10.0, b: 20.0, alpha: 0.25)"), 12.5);
+    close_v(
+        vec3(
+            "Lerp(a: (0.0, 0.0, 0.0), b: (4.0, 8.0, 0.0), alpha: 0.5)",
+            "",
+        ),
+        Vec3::new(2.0, 4.0, 0.0),
+    );
+    // The seed's stride remap: 250 cm/s in 200..300 → 65..45 is 55.
+    close(
+        float("Remap(value: 250.0, in_min: 200.0, in_max: 300.0, out_min: 65.0, out_max: 45.0)"),
+        55.0,
+    );
+    close(
+        float(
+            "Remap(value: 400.0, in_min: 0.0, in_max: 200.0, out_min: 0.0, out_max: 1.0, clamp: false)",
+        ),
+        2.0,
+    );
+}
+
+#[test]
+fn logic_and_comparisons() {
+    assert!(boolean("And(a: true, b: true)"));
+    assert!(!boolean("And(a: true, b: false)"));
+    assert!(boolean("Or(a: false, b: true)"));
+    assert!(boolean("Xor(a: false, b: true)"));
+    assert!(!boolean("Not(value: true)"));
+    assert!(boolean("Equals(a: 0, b: 0)"));
+    assert!(boolean("NotEquals(a: 1.0, b: 2.0)"));
+    assert!(boolean("Less(a: 1.0, b: 2.0)"));
+    assert!(boolean("LessEqual(a: 2, b: 2)"));
+    assert!(!boolean("Greater(a: 1.0, b: 2.0)"));
+    assert!(boolean("GreaterEqual(a: 3, b: 2)"));
+    close_v(
+        vec3(
+            "Select(condition: false, if_true: (1.0, 0.0, 0.0), if_false: (-1.0, 0.0, 0.0))",
+            "",
+        ),
+        Vec3::new(-1.0, 0.0, 0.0),
+    );
+}
+
+#[test]
+fn vectors() {
+    close_v(
+        vec3("Scale(value: (1.0, 2.0, 3.0), factor: -2.0)", ""),
+        Vec3::new(-2.0, -4.0, -6.0),
+    );
+    close(float("Length(value: (3.0, 4.0, 12.0))"), 13.0);
+    close(
+        float("Distance(a: (1.0, 1.0, 1.0), b: (4.0, 5.0, 1.0))"),
+        5.0,
+    );
+    close_v(
+        vec3("Unit(value: (0.0, 3.0, 4.0))", ""),
+        Vec3::new(0.0, 0.6, 0.8),
+    );
+    close_v(vec3("Unit(value: (0.0, 0.0, 0.0))", ""), Vec3::ZERO);
+    close(float("Dot(a: (1.0, 2.0, 3.0), b: (4.0, -5.0, 6.0))"), 12.0);
+    // X × Y = Z (right-handed).
+    close_v(
+        vec3("Cross(a: (1.0, 0.0, 0.0), b: (0.0, 1.0, 0.0))", ""),
+        Vec3::Z,
+    );
+    close_v(
+        vec3("MakeVector(x: 1.0, z: 3.0)", ""),
+        Vec3::new(1.0, 0.0, 3.0),
+    );
+    close(
+        match eval("BreakVector(value: (1.0, 2.0, 3.0))", "y", ValueType::Float) {
+            Value::Float(x) => x,
+            v => panic!("{v:?}"),
+        },
+        2.0,
+    );
+    // A 200 cm step clamped to 50 cm keeps its direction.
+    close_v(
+        vec3("ClampLength(value: (0.0, 120.0, 160.0), max: 50.0)", ""),
+        Vec3::new(0.0, 30.0, 40.0),
+    );
+    // A foot 150 cm ahead of the pelvis pulled into the 100 cm sphere.
+    close_v(
+        vec3(
+            "ClampSpatially(point: (0.0, 150.0, 90.0), center: (0.0, 0.0, 90.0), max_radius: 100.0)",
+            "",
+        ),
+        Vec3::new(0.0, 100.0, 90.0),
+    );
+}
+
+#[test]
+fn rotations() {
+    let h = std::f32::consts::FRAC_1_SQRT_2;
+    // 90° about +Z.
+    same_rotation(
+        quat("QuatFromAxisAngle(axis: (0.0, 0.0, 1.0), angle: 90.0)"),
+        Quat::from_xyzw(0.0, 0.0, h, h),
+    );
+    // Euler XYZ (90, 0, 90) = Rz(90)·Rx(90) = (0.5, 0.5, 0.5, 0.5), derived in strider-core.
+    same_rotation(
+        quat("QuatFromEuler(euler: (90.0, 0.0, 90.0))"),
+        Quat::from_xyzw(0.5, 0.5, 0.5, 0.5),
+    );
+    // ZYX applies Z first: Rx(90)·Rz(90) = (0.5, -0.5, 0.5, 0.5).
+    same_rotation(
+        quat("QuatFromEuler(euler: (90.0, 0.0, 90.0), order: ZYX)"),
+        Quat::from_xyzw(0.5, -0.5, 0.5, 0.5),
+    );
+    close_v(
+        vec3("EulerFromQuat(value: (0.5, 0.5, 0.5, 0.5))", ""),
+        Vec3::new(90.0, 0.0, 90.0),
+    );
+    // (Rz90)·(Rz90) = Rz180 = (0, 0, 1, 0).
+    same_rotation(
+        quat("Multiply(a: euler(0.0, 0.0, 90.0), b: euler(0.0, 0.0, 90.0))"),
+        Quat::from_xyzw(0.0, 0.0, 1.0, 0.0),
+    );
+    same_rotation(
+        quat("Inverse(value: euler(0.0, 0.0, 90.0))"),
+        Quat::from_xyzw(0.0, 0.0, -h, h),
+    );
+    same_rotation(
+        quat("Unit(value: (0.0, 0.0, 0.7071068, 0.7071068))"),
+        Quat::from_xyzw(0.0, 0.0, h, h),
+    );
+    // Halfway between 0° and 90° about Z is 45°.
+    same_rotation(
+        quat("Slerp(b: euler(0.0, 0.0, 90.0), alpha: 0.5)"),
+        Quat::from_rotation_z(45f32.to_radians()),
+    );
+    // Rz90 maps +Y to -X.
+    close_v(
+        vec3(
+            "RotateVector(rotation: euler(0.0, 0.0, 90.0), vector: (0.0, 1.0, 0.0))",
+            "",
+        ),
+        -Vec3::X,
+    );
+    // Two thirds of a 30° twist, negated: -20°.
+    same_rotation(
+        quat("QuatScale(rotation: euler(0.0, 0.0, 30.0), scale: -0.6666667)"),
+        Quat::from_rotation_z(-20f32.to_radians()),
+    );
+    // +Y to +Z is +90° about X.
+    same_rotation(
+        quat("FindQuatBetween(from: (0.0, 1.0, 0.0), to: (0.0, 0.0, 5.0))"),
+        Quat::from_rotation_x(90f32.to_radians()),
+    );
+}
+
+#[test]
+fn transforms() {
+    let t = transform(
+        "MakeTransform(translation: (1.0, 2.0, 3.0), rotation: euler(0.0, 0.0, 90.0), scale: (2.0, 2.0, 2.0))",
+    );
+    close_v(t.translation, Vec3::new(1.0, 2.0, 3.0));
+    close_v(t.scale, Vec3::splat(2.0));
+    close_v(
+        vec3(
+            "BreakTransform(value: (translation: (4.0, 5.0, 6.0)))",
+            "translation",
+        ),
+        Vec3::new(4.0, 5.0, 6.0),
+    );
+    // Parent at z = 95 rotated 90° about Z; child 10 along its X → rig (0, 10, 95).
+    let c = transform(
+        "Multiply(a: (translation: (0.0, 0.0, 95.0), rotation: euler(0.0, 0.0, 90.0)), b: (translation: (10.0, 0.0, 0.0)))",
+    );
+    close_v(c.translation, Vec3::new(0.0, 10.0, 95.0));
+    let r = transform(
+        "MakeRelative(global: (translation: (0.0, 10.0, 95.0)), parent: (translation: (0.0, 0.0, 95.0), rotation: euler(0.0, 0.0, 90.0)))",
+    );
+    close_v(r.translation, Vec3::new(10.0, 0.0, 0.0));
+    let a = transform(
+        "MakeAbsolute(local: (translation: (10.0, 0.0, 0.0)), parent: (translation: (0.0, 0.0, 95.0), rotation: euler(0.0, 0.0, 90.0)))",
+    );
+    close_v(a.translation, Vec3::new(0.0, 10.0, 95.0));
+    close_v(
+        transform("Inverse(value: (translation: (1.0, 2.0, 3.0)))").translation,
+        Vec3::new(-1.0, -2.0, -3.0),
+    );
+    close_v(
+        vec3(
+            "TransformPoint(transform: (translation: (0.0, 0.0, 5.0), rotation: euler(0.0, 0.0, 90.0)), point: (0.0, 1.0, 0.0))",
+            "",
+        ),
+        Vec3::new(-1.0, 0.0, 5.0),
+    );
+    close_v(
+        vec3(
+            "TransformVector(transform: (translation: (0.0, 0.0, 5.0), rotation: euler(0.0, 0.0, 90.0)), vector: (0.0, 1.0, 0.0))",
+            "",
+        ),
+        -Vec3::X,
+    );
+    // Heel roll: a foot at (0, 10, 13.5) pitched 90° about +X around the heel (0, 0, 13.5):
+    // offset (0, 10, 0) turns to (0, 0, 10).
+    let rolled = transform(
+        "RotateAroundPoint(transform: (translation: (0.0, 10.0, 13.5)), pivot: (0.0, 0.0, 13.5), rotation: euler(90.0, 0.0, 0.0))",
+    );
+    close_v(rolled.translation, Vec3::new(0.0, 0.0, 23.5));
+    let i = transform(
+        "InterpolateTransform(a: (translation: (0.0, 0.0, 0.0)), b: (translation: (10.0, 0.0, 0.0), rotation: euler(0.0, 0.0, 90.0)), alpha: 0.5)",
+    );
+    close_v(i.translation, Vec3::new(5.0, 0.0, 0.0));
+    same_rotation(i.rotation, Quat::from_rotation_z(45f32.to_radians()));
+    // Aim the Y axis of a transform at (0, 0, 10) from (0, 0, 0): +Y to +Z.
+    let aimed = transform(
+        "AimMath(transform: (translation: (0.0, 0.0, 0.0)), target: (0.0, 0.0, 10.0), mode: Location)",
+    );
+    close_v(aimed.rotation * Vec3::Y, Vec3::Z);
+    // Align up with a 45° slope normal towards -X: the up axis follows the normal.
+    let n = Vec3::new(-1.0, 0.0, 1.0).normalize();
+    let aligned = transform(
+        "AlignToNormal(transform: (translation: (0.0, 0.0, 0.0)), normal: (-1.0, 0.0, 1.0))",
+    );
+    close_v(aligned.rotation * Vec3::Z, n);
+}
+
+#[test]
+fn hierarchy_and_host() {
+    // The mannequin's pelvis rests at z = 95 (skeleton file).
+    close_v(
+        transform("GetTransform(bone: bone(\"pelvis\"), initial: true)").translation,
+        Vec3::new(0.0, 0.0, 95.0),
+    );
+    close_v(
+        transform("GetTransform(bone: bone(\"pelvis\"), space: Local)").translation,
+        Vec3::new(0.0, 0.0, 95.0),
+    );
+    assert_eq!(transform("GetTransform(bone: None)"), Transform::IDENTITY);
+    close(float("DeltaTime()"), 1.0 / 60.0);
+    let to_world = Transform::from_translation(Vec3::new(100.0, 0.0, 0.0));
+    let w = eval_with(
+        "WorldTransform()",
+        "",
+        ValueType::Transform,
+        0.1,
+        &EmptyWorld,
+        to_world,
+    );
+    assert_eq!(w, Value::Transform(to_world));
+}
+
+#[test]
+fn traces() {
+    // The rig stands 20 cm above a world floor at z = 0: rig z = -20 is the floor.
+    let to_world = Transform::from_translation(Vec3::new(0.0, 0.0, 20.0));
+    let hit = |pin: &str, ty| {
+        eval_with(
+            "LineTrace(start: (0.0, 0.0, 50.0), end: (0.0, 0.0, -50.0))",
+            pin,
+            ty,
+            0.1,
+            &Floor,
+            to_world,
+        )
+    };
+    assert_eq!(hit("hit", ValueType::Bool), Value::Bool(true));
+    assert_eq!(
+        hit("point", ValueType::Vec3),
+        Value::Vec3(Vec3::new(0.0, 0.0, -20.0))
+    );
+    assert_eq!(hit("normal", ValueType::Vec3), Value::Vec3(Vec3::Z));
+    assert_eq!(hit("distance", ValueType::Float), Value::Float(70.0));
+    // A sphere of radius 5 stops with its centre 5 cm above the floor: it travelled 65 cm.
+    let s = eval_with(
+        "SphereTrace(start: (0.0, 0.0, 50.0), end: (0.0, 0.0, -50.0), radius: 5.0)",
+        "distance",
+        ValueType::Float,
+        0.1,
+        &Floor,
+        to_world,
+    );
+    assert_eq!(s, Value::Float(65.0));
+    // Missing: hit false, point = end, distance = full length.
+    let miss = |pin: &str, ty| {
+        eval_with(
+            "LineTrace(start: (0.0, 0.0, 50.0), end: (0.0, 0.0, 10.0))",
+            pin,
+            ty,
+            0.1,
+            &Floor,
+            to_world,
+        )
+    };
+    assert_eq!(miss("hit", ValueType::Bool), Value::Bool(false));
+    assert_eq!(
+        miss("point", ValueType::Vec3),
+        Value::Vec3(Vec3::new(0.0, 0.0, 10.0))
+    );
+    assert_eq!(miss("distance", ValueType::Float), Value::Float(40.0));
+}
+
+#[test]
+fn malformed_quaternion_literals_are_reported_as_such() {
+    let text = "Graph(version: 1, name: \"t\", variables: { \"Out\": (type: Quat) }, nodes: { \"n\": Unit(value: (0.0, 0.0, 0.0, 2.0)) }, events: { forward: [ Set(\"Out\", \"n\") ] })";
+    let errors = strider_compiler::compile_str(Path::new("q.ron"), text).unwrap_err();
+    assert_eq!(errors.len(), 1);
+    assert_eq!(
+        errors[0].message,
+        "invalid value for pin `value` of Unit: quaternion (x, y, z, w) has length 2, not 1; write a unit quaternion or euler(x, y, z) in degrees"
+    );
+}
+
+#[test]
+fn arrays() {
+    let run = |steps: &str| -> Vec<Value> {
+        let text = format!(
+            "Graph(version: 1, name: \"t\", variables: {{ \"A\": (type: FloatArray, default: [1.0, 2.0, 3.0]), \"N\": (type: Int), \"X\": (type: Float) }}, \
+             nodes: {{ \"count\": Count(array: var(\"A\")), \"at\": At(array: var(\"A\"), index: 1) }}, events: {{ forward: [ {steps} ] }})"
+        );
+        let program = Arc::new(
+            strider_compiler::compile_str(Path::new("a.ron"), &text)
+                .unwrap_or_else(|d| panic!("{d:?}")),
+        );
+        let mut i = Instance::new(program.clone(), skeleton()).unwrap();
+        i.run_forward(&FrameInput::default(), &EmptyWorld, false);
+        ["A", "N", "X"]
+            .iter()
+            .map(|v| i.variable(program.variable_id(v).unwrap()))
+            .collect()
+    };
+    let f = |xs: &[f32]| {
+        Value::Array(
+            strider_nodes::Elem::Float,
+            xs.iter().map(|&x| Value::Float(x)).collect(),
+        )
+    };
+    // SetAt overwrites element 1; Count is 3; At reads the new value.
+    let out = run(
+        "SetAt(array: var(\"A\"), index: 1, value: 9.0), Set(\"N\", \"count\"), Set(\"X\", \"at\")",
+    );
+    assert_eq!(
+        out,
+        vec![f(&[1.0, 9.0, 3.0]), Value::Int(3), Value::Float(9.0)]
+    );
+    // Out of range: SetAt does nothing, At gives 0.
+    let out = run(
+        "SetAt(array: var(\"A\"), index: 7, value: 9.0), Reset(array: var(\"A\")), Set(\"X\", \"at\")",
+    );
+    assert_eq!(out, vec![f(&[]), Value::Int(0), Value::Float(0.0)]);
+    let out = run("Append(array: var(\"A\"), value: 4), Set(\"N\", \"count\")");
+    assert_eq!(
+        out,
+        vec![f(&[1.0, 2.0, 3.0, 4.0]), Value::Int(4), Value::Float(0.0)]
+    );
+}
+
+#[test]
+fn debug_drawing() {
+    let text = "Graph(version: 1, name: \"d\", events: { forward: [ \
+        DrawArrow(start: (0.0, 0.0, 0.0), end: (0.0, 10.0, 0.0)), \
+        DrawSphere(center: (1.0, 2.0, 3.0), radius: 4.0, color: (1.0, 0.0, 0.0)), \
+        DrawBox(transform: (translation: (0.0, 0.0, 1.0)), half_extents: (1.0, 2.0, 3.0)) ] })";
+    let program = Arc::new(strider_compiler::compile_str(Path::new("d.ron"), text).unwrap());
+    let mut i = Instance::new(program, skeleton()).unwrap();
+    i.run_forward(&FrameInput::default(), &EmptyWorld, true);
+    use strider_core::{DebugColor, DebugPrimitive as P};
+    assert_eq!(
+        i.debug_draw().primitives(),
+        &[
+            P::Arrow {
+                start: Vec3::ZERO,
+                end: Vec3::new(0.0, 10.0, 0.0),
+                thickness: 0.5,
+                color: DebugColor([1.0, 1.0, 0.0, 1.0])
+            },
+            P::Sphere {
+                center: Vec3::new(1.0, 2.0, 3.0),
+                radius: 4.0,
+                color: DebugColor::RED
+            },
+            P::Box {
+                transform: Transform::from_translation(Vec3::Z),
+                half_extents: Vec3::new(1.0, 2.0, 3.0),
+                color: DebugColor::WHITE
+            },
+        ]
+    );
+    i.run_forward(&FrameInput::default(), &EmptyWorld, false);
+    assert!(i.debug_draw().primitives().is_empty());
+}
+
+#[test]
+fn every_node_is_exercised_somewhere() {
+    let mut corpus = std::fs::read_to_string("tests/nodes.rs").unwrap();
+    for dir in ["graphs", "graphs/examples", "tests"] {
+        for e in std::fs::read_dir(dir).unwrap().flatten() {
+            let p = e.path();
+            if p.extension().is_some_and(|x| x == "ron" || x == "rs") {
+                corpus.push_str(&std::fs::read_to_string(&p).unwrap());
+            }
+        }
+    }
+    let missing: Vec<&str> = strider_nodes::registry()
+        .nodes()
+        .iter()
+        .map(|n| n.name)
+        .filter(|name| !corpus.contains(&format!("{name}(")))
+        .collect();
+    assert!(
+        missing.is_empty(),
+        "nodes never used from RON in tests or graphs: {missing:?}"
+    );
+}
