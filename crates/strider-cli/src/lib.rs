@@ -1,1 +1,183 @@
-//! placeholder
+//! The `strider` command line.
+//!
+//! ```text
+//! strider check FILE...                       validate graph and skeleton files
+//! strider run GRAPH --skeleton SKEL [...]     run a graph headless, optionally dump poses
+//! strider nodes [--markdown]                  list the built-in nodes
+//! strider                                     the demo: pelvis_bob on the mannequin
+//! ```
+//!
+//! The binary itself lives in the root `strider` package (`src/main.rs`), which only calls
+//! [`main`]. Exit codes: 0 on success, 1 on any failure (invalid files, I/O errors), 2 for
+//! bad command-line arguments (clap's code).
+
+mod check;
+mod jsonl;
+mod nodes;
+mod output;
+mod run;
+mod value;
+
+use clap::{Parser, Subcommand};
+use std::path::PathBuf;
+use std::process::ExitCode;
+
+/// The demo graph `strider` runs without a subcommand, relative to the current directory.
+const DEMO_GRAPH: &str = "graphs/pelvis_bob.ron";
+/// The skeleton the demo runs on.
+const DEMO_SKELETON: &str = "graphs/skeletons/mannequin.ron";
+/// Frames the demo runs (two seconds at 60 Hz).
+const DEMO_FRAMES: u32 = 120;
+
+#[derive(Debug, Parser)]
+#[command(
+    name = "strider",
+    version,
+    about = "Strider: procedural character animation graphs, compiled and run headless",
+    long_about = "Strider: procedural character animation graphs, compiled and run headless.\n\n\
+        Graphs are RON files (`Graph( ... )`) describing a rig: variables, nodes and events. \
+        Skeletons are RON files (`Skeleton( ... )`) listing bones with rest transforms. \
+        Rig space is +Z up, +Y forward, +X the character's left; lengths are centimetres, \
+        angles degrees, time seconds.\n\n\
+        Without a subcommand, runs the demo: `strider run graphs/pelvis_bob.ron \
+        --skeleton graphs/skeletons/mannequin.ron --frames 120`, with paths relative to the \
+        current directory.",
+    after_help = "Exit codes: 0 success, 1 failure (invalid files, I/O), 2 bad arguments."
+)]
+struct Cli {
+    #[command(subcommand)]
+    command: Option<Command>,
+}
+
+#[derive(Debug, Subcommand)]
+enum Command {
+    Check(check::CheckArgs),
+    Run(run::RunArgs),
+    Nodes(nodes::NodesArgs),
+}
+
+/// Parses the command line, runs the command and returns the process exit code.
+///
+/// Failures are reported on standard error as one `error: ...` line, preceded by any
+/// diagnostics (`path:line:col: error: ...`), and give exit code 1; argument errors keep
+/// clap's exit code 2. `--help` and `--version` exit with 0.
+pub fn main() -> ExitCode {
+    run_cli()
+}
+
+fn run_cli() -> ExitCode {
+    let cli = match Cli::try_parse() {
+        Ok(cli) => cli,
+        Err(e) => {
+            // Help and version go to stdout with code 0; errors to stderr with code 2.
+            let _ = e.print();
+            return ExitCode::from(u8::try_from(e.exit_code()).unwrap_or(2));
+        }
+    };
+    let result = match cli.command {
+        Some(Command::Check(args)) => check::run(&args),
+        Some(Command::Run(args)) => run::run(&args),
+        Some(Command::Nodes(args)) => nodes::run(&args),
+        None => demo(),
+    };
+    match result {
+        Ok(code) => code,
+        Err(e) => {
+            // `{:#}` puts the whole context chain on one line.
+            output::error_line(&format!("error: {e:#}"));
+            ExitCode::FAILURE
+        }
+    }
+}
+
+/// `strider` with no subcommand: the headless demo, then a hint about the subcommands.
+fn demo() -> anyhow::Result<ExitCode> {
+    if !std::path::Path::new(DEMO_GRAPH).is_file() {
+        anyhow::bail!(
+            "`{DEMO_GRAPH}` not found in the current directory: run `strider` from the \
+             repository root, or see `strider --help`"
+        );
+    }
+    let args = run::RunArgs {
+        graph: PathBuf::from(DEMO_GRAPH),
+        skeleton: PathBuf::from(DEMO_SKELETON),
+        frames: DEMO_FRAMES,
+        hz: run::DEFAULT_HZ,
+        set: Vec::new(),
+        out: None,
+        debug: false,
+    };
+    let code = run::run(&args)?;
+    output::print_stdout(
+        "\nhint: this was the demo; subcommands: `strider check FILE...`, \
+         `strider run GRAPH --skeleton SKEL`, `strider nodes` (see `strider --help`)\n",
+    )?;
+    Ok(code)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use clap::CommandFactory;
+
+    #[test]
+    fn the_command_line_definition_is_consistent() {
+        Cli::command().debug_assert();
+    }
+
+    #[test]
+    fn no_subcommand_means_the_demo() {
+        let cli = Cli::try_parse_from(["strider"]).unwrap();
+        assert!(cli.command.is_none());
+    }
+
+    #[test]
+    fn bad_arguments_are_clap_errors_with_code_2() {
+        let e = Cli::try_parse_from(["strider", "run", "g.ron"]).unwrap_err();
+        assert_eq!(e.exit_code(), 2);
+        let e = Cli::try_parse_from([
+            "strider",
+            "run",
+            "g.ron",
+            "--skeleton",
+            "s.ron",
+            "--hz",
+            "0",
+        ])
+        .unwrap_err();
+        assert_eq!(e.exit_code(), 2);
+        let e = Cli::try_parse_from(["strider", "check"]).unwrap_err();
+        assert_eq!(e.exit_code(), 2);
+    }
+
+    #[test]
+    fn run_arguments_parse() {
+        let cli = Cli::try_parse_from([
+            "strider",
+            "run",
+            "g.ron",
+            "--skeleton",
+            "s.ron",
+            "--frames",
+            "10",
+            "--hz",
+            "30",
+            "--set",
+            "Amplitude=3",
+            "--set",
+            "Offset=(1,2,-3)",
+            "--out",
+            "o.jsonl",
+            "--debug",
+        ])
+        .unwrap();
+        let Some(Command::Run(args)) = cli.command else {
+            panic!("not run: {cli:?}");
+        };
+        assert_eq!(args.frames, 10);
+        assert_eq!(args.hz, 30.0);
+        assert_eq!(args.set, ["Amplitude=3", "Offset=(1,2,-3)"]);
+        assert_eq!(args.out, Some(PathBuf::from("o.jsonl")));
+        assert!(args.debug);
+    }
+}

@@ -3,7 +3,7 @@
 //! known, or the list of every problem found.
 
 use crate::literal::{self, Fit};
-use petgraph::algo::{tarjan_scc, toposort};
+use petgraph::algo::{kosaraju_scc, toposort};
 use petgraph::graph::{DiGraph, NodeIndex};
 use std::collections::HashMap;
 use strider_graph::diagnostic::{Diagnostics, Loc, SourceMap};
@@ -229,22 +229,17 @@ pub(crate) fn check(loaded: &LoadedGraph) -> Result<Checked, Vec<Diagnostic>> {
         }
     }
     let mut recursive = vec![false; fn_decls.len()];
-    for scc in tarjan_scc(&calls) {
+    for scc in kosaraju_scc(&calls) {
         let self_loop = scc.len() == 1 && calls.contains_edge(scc[0], scc[0]);
         if scc.len() > 1 || self_loop {
-            let mut names: Vec<usize> = scc.iter().map(|v| calls[*v]).collect();
-            names.sort_unstable();
-            for &n in &names {
-                recursive[n] = true;
+            for v in &scc {
+                recursive[calls[*v]] = true;
             }
-            let path: Vec<&str> = names
-                .iter()
-                .chain(names.first())
-                .map(|&n| fn_decls[n].name.name.as_str())
-                .collect();
-            let first = fn_decls[names[0]];
+            let cycle: Vec<usize> = cycle_path(&calls, &scc).iter().map(|v| calls[*v]).collect();
+            let path = format_path(cycle.iter().map(|&n| fn_decls[n].name.name.clone()));
+            let first = fn_decls[cycle[0]];
             diags
-                .error(sources, first.name.loc, format!("recursion: {}", path.join(" → ")))
+                .error(sources, first.name.loc, format!("recursion: {path}"))
                 .hint("function calls are inlined; a function may not call itself, directly or through others — use a For or ForEach loop")
                 .emit();
         }
@@ -743,14 +738,13 @@ impl<'a, 'c> Scope<'a, 'c> {
             }
         }
         let mut in_cycle = vec![false; n + self.loops.len()];
-        for scc in tarjan_scc(&g) {
+        for scc in kosaraju_scc(&g) {
             let self_loop = scc.len() == 1 && g.contains_edge(scc[0], scc[0]);
             if scc.len() > 1 || self_loop {
-                let mut members: Vec<usize> = scc.iter().map(|x| g[*x]).collect();
-                members.sort_unstable();
-                for &m in &members {
-                    in_cycle[m] = true;
+                for x in &scc {
+                    in_cycle[g[*x]] = true;
                 }
+                let members: Vec<usize> = cycle_path(&g, &scc).iter().map(|x| g[*x]).collect();
                 let label = |m: usize| -> String {
                     if m < n {
                         self.nodes[m].decl.label().to_string()
@@ -758,18 +752,14 @@ impl<'a, 'c> Scope<'a, 'c> {
                         self.loops[m - n].names[0].name.clone()
                     }
                 };
-                let path: Vec<String> = members
-                    .iter()
-                    .chain(members.first())
-                    .map(|&m| label(m))
-                    .collect();
+                let path = format_path(members.iter().map(|&m| label(m)));
                 let loc = if members[0] < n {
                     self.nodes[members[0]].decl.loc
                 } else {
                     self.loops[members[0] - n].names[0].loc
                 };
                 diags
-                    .error(self.sources(), loc, format!("data-flow cycle: {}", path.join(" → ")))
+                    .error(self.sources(), loc, format!("data-flow cycle: {path}"))
                     .node(label(members[0]))
                     .hint("a node cannot depend on its own output; keep state across frames in a variable (Set it in the exec list, read it with var(...))")
                     .emit();
@@ -1533,37 +1523,33 @@ impl<'a, 'c> Scope<'a, 'c> {
     }
 
     /// Checks that the pure nodes an argument pulls read loop names only inside their loop.
-    fn check_scope(
-        &self,
-        arg: &Arg,
-        active: &[usize],
-        at: Loc,
-        diags: &mut Diagnostics,
-        seen: &mut Vec<usize>,
-    ) {
-        match &arg.src {
-            Src::Loop { lp, .. } if !active.contains(lp) => {
-                let name = &self.loops[*lp].names[0].name;
-                diags
-                        .error(self.sources(), at, format!("`{name}` is used outside its loop"))
-                        .hint(format!("loop names exist only inside the body of the loop that declares them (at {})", self.sources().describe(self.loops[*lp].names[0].loc)))
+    /// Checks that the pure nodes an argument pulls read loop names only inside their loop.
+    /// Iterative, so arbitrarily long data-flow chains cannot overflow the stack.
+    fn check_scope(&self, arg: &Arg, active: &[usize], at: Loc, diags: &mut Diagnostics) {
+        let mut seen = std::collections::HashSet::new();
+        let mut stack: Vec<(&Arg, Loc)> = vec![(arg, at)];
+        while let Some((arg, at)) = stack.pop() {
+            match &arg.src {
+                Src::Loop { lp, .. } if !active.contains(lp) => {
+                    let decl = &self.loops[*lp].names[0];
+                    diags
+                        .error(self.sources(), at, format!("`{}` is used outside its loop", decl.name))
+                        .hint(format!(
+                            "loop names exist only inside the body of the loop that declares them (at {})",
+                            self.sources().describe(decl.loc)
+                        ))
                         .emit();
-            }
-            Src::Node { node, .. } => {
-                if seen.contains(node) {
-                    return;
                 }
-                seen.push(*node);
-                if let Some(n) = &self.nodes[*node].resolved
-                    && n.pure
-                {
-                    let loc = self.nodes[*node].decl.loc;
-                    for a in &n.inputs {
-                        self.check_scope(a, active, loc, diags, seen);
+                Src::Node { node, .. } if seen.insert(*node) => {
+                    if let Some(n) = &self.nodes[*node].resolved
+                        && n.pure
+                    {
+                        let loc = self.nodes[*node].decl.loc;
+                        stack.extend(n.inputs.iter().map(|a| (a, loc)));
                     }
                 }
+                _ => {}
             }
-            _ => {}
         }
     }
 
@@ -1625,7 +1611,7 @@ impl<'a, 'c> Scope<'a, 'c> {
                 };
                 let arg =
                     self.step_arg(value, target.1, &format!("Set(\"{}\")", var.name), diags)?;
-                self.check_scope(&arg, active, *loc, diags, &mut Vec::new());
+                self.check_scope(&arg, active, *loc, diags);
                 Some(CStep::Set {
                     target: target.0,
                     ty: target.1,
@@ -1657,7 +1643,7 @@ impl<'a, 'c> Scope<'a, 'c> {
                     return None;
                 }
                 for a in &node.inputs {
-                    self.check_scope(a, active, id.loc, diags, &mut Vec::new());
+                    self.check_scope(a, active, id.loc, diags);
                 }
                 Some(CStep::Exec(j))
             }
@@ -1673,7 +1659,7 @@ impl<'a, 'c> Scope<'a, 'c> {
                     return None;
                 }
                 for a in &node.inputs {
-                    self.check_scope(a, active, n.loc, diags, &mut Vec::new());
+                    self.check_scope(a, active, n.loc, diags);
                 }
                 Some(CStep::Exec(j))
             }
@@ -1685,7 +1671,7 @@ impl<'a, 'c> Scope<'a, 'c> {
             } => {
                 let c = self.step_arg(condition, ValueType::Bool, "Branch condition", diags);
                 if let Some(c) = &c {
-                    self.check_scope(c, active, *loc, diags, &mut Vec::new());
+                    self.check_scope(c, active, *loc, diags);
                 }
                 let then = self.steps(then, active, diags);
                 let otherwise = self.steps(otherwise, active, diags);
@@ -1718,7 +1704,7 @@ impl<'a, 'c> Scope<'a, 'c> {
                     None => None,
                 };
                 if let Some(a) = &items_arg {
-                    self.check_scope(a, active, *loc, diags, &mut Vec::new());
+                    self.check_scope(a, active, *loc, diags);
                 }
                 active.push(lp);
                 let body = self.steps(body, active, diags);
@@ -1740,7 +1726,7 @@ impl<'a, 'c> Scope<'a, 'c> {
                 let lp = *self.loop_index.get(&(s as *const _))?;
                 let c = self.step_arg(count, ValueType::Int, "For count", diags);
                 if let Some(c) = &c {
-                    self.check_scope(c, active, *loc, diags, &mut Vec::new());
+                    self.check_scope(c, active, *loc, diags);
                 }
                 active.push(lp);
                 let body = self.steps(body, active, diags);
@@ -1799,7 +1785,7 @@ impl<'a, 'c> Scope<'a, 'c> {
                     if let Some(a) =
                         self.step_arg(&v.value, ty, &format!("output `{}`", v.name.name), diags)
                     {
-                        self.check_scope(&a, active, *loc, diags, &mut Vec::new());
+                        self.check_scope(&a, active, *loc, diags);
                         out.push((o, a));
                     }
                 }
@@ -1807,6 +1793,50 @@ impl<'a, 'c> Scope<'a, 'c> {
             }
         }
     }
+}
+
+/// One actual cycle through a strongly connected component, following edges, starting
+/// at the member with the lowest index and ending back at it (the start repeated last):
+/// the shortest way back, found breadth-first.
+fn cycle_path(g: &DiGraph<usize, ()>, scc: &[NodeIndex]) -> Vec<NodeIndex> {
+    let start = *scc.iter().min_by_key(|v| g[**v]).unwrap_or(&scc[0]);
+    let members: std::collections::HashSet<NodeIndex> = scc.iter().copied().collect();
+    let mut previous: HashMap<NodeIndex, NodeIndex> = HashMap::new();
+    let mut queue = std::collections::VecDeque::from([start]);
+    while let Some(v) = queue.pop_front() {
+        let mut next: Vec<NodeIndex> = g.neighbors(v).filter(|w| members.contains(w)).collect();
+        next.sort_by_key(|w| g[*w]);
+        for w in next {
+            if w == start {
+                // Walk back from `v` to `start`, then turn it around: start → … → v → start.
+                let mut path = vec![v];
+                let mut cur = v;
+                while cur != start {
+                    cur = previous[&cur];
+                    path.push(cur);
+                }
+                path.reverse();
+                path.push(start);
+                return path;
+            }
+            if let std::collections::hash_map::Entry::Vacant(e) = previous.entry(w) {
+                e.insert(v);
+                queue.push_back(w);
+            }
+        }
+    }
+    vec![start, start]
+}
+
+/// `a → b → c → a`, shortened in the middle for very long cycles.
+fn format_path(names: impl ExactSizeIterator<Item = String>) -> String {
+    let names: Vec<String> = names.collect();
+    if names.len() <= 12 {
+        return names.join(" → ");
+    }
+    let head = names[..6].join(" → ");
+    let tail = names[names.len() - 3..].join(" → ");
+    format!("{head} → … ({} more) → {tail}", names.len() - 9)
 }
 
 fn parse_statement(kind: &str) -> bool {

@@ -5,7 +5,7 @@
 //! within one step each is emitted once.
 
 use crate::check::{Arg, Body, CStep, Checked, LoopPart, NodeKind, Src, VarRef};
-use std::collections::HashMap;
+use std::collections::{HashMap, HashSet};
 use strider_graph::LoadedGraph;
 use strider_nodes::{Elem, Op, Value, ValueType};
 use strider_vm::{Program, ProgramBuilder, VariableInfo};
@@ -206,25 +206,43 @@ impl Gen<'_> {
 
     /// Emits the pure nodes `args` depend on (each once per step), then returns the
     /// argument slots.
-    fn pull(&mut self, frame: usize, args: &[Arg], done: &mut Vec<usize>) -> Vec<u32> {
+    fn pull(&mut self, frame: usize, args: &[Arg], done: &mut HashSet<usize>) -> Vec<u32> {
         for a in args {
             if let Src::Node { node, .. } = a.src {
-                self.pure_node(frame, node, done);
+                self.pure_closure(frame, node, done);
             }
         }
         args.iter().map(|a| self.slot(frame, a)).collect()
     }
 
-    fn pure_node(&mut self, frame: usize, node: usize, done: &mut Vec<usize>) {
-        if done.contains(&node) || !self.body(frame).nodes[node].pure {
-            return;
+    /// Emits pure node `root` after the pure nodes it depends on, in dependency order,
+    /// skipping those already emitted for this step. Iterative (post-order with an explicit
+    /// stack), so long data-flow chains cannot overflow the stack; the checker guarantees
+    /// the dependencies are acyclic.
+    fn pure_closure(&mut self, frame: usize, root: usize, done: &mut HashSet<usize>) {
+        let mut stack = vec![(root, false)];
+        while let Some((n, inputs_done)) = stack.pop() {
+            if inputs_done {
+                self.node(frame, n, done);
+                continue;
+            }
+            if !self.body(frame).nodes[n].pure || !done.insert(n) {
+                continue;
+            }
+            stack.push((n, true));
+            for a in self.body(frame).nodes[n].inputs.iter().rev() {
+                if let Src::Node { node, .. } = a.src
+                    && !done.contains(&node)
+                {
+                    stack.push((node, false));
+                }
+            }
         }
-        done.push(node);
-        self.node(frame, node, done);
     }
 
-    /// Emits node `n` of `frame` (its pure inputs first).
-    fn node(&mut self, frame: usize, n: usize, done: &mut Vec<usize>) {
+    /// Emits node `n` of `frame` itself; the pure nodes it reads must already be emitted
+    /// for this step (see [`Gen::pull`]).
+    fn node(&mut self, frame: usize, n: usize, done: &mut HashSet<usize>) {
         let node = self.body(frame).nodes[n].clone();
         let ins = self.pull(frame, &node.inputs, done);
         match node.kind {
@@ -269,7 +287,7 @@ impl Gen<'_> {
     }
 
     fn step(&mut self, frame: usize, step: &CStep, rets: &mut Vec<u32>) {
-        let mut done = Vec::new();
+        let mut done = HashSet::new();
         match step {
             CStep::Set { target, ty, arg } => {
                 let from = self.pull(frame, std::slice::from_ref(arg), &mut done)[0];
@@ -336,7 +354,7 @@ impl Gen<'_> {
             }
             CStep::Return(values) => {
                 for (o, arg) in values {
-                    let mut done = Vec::new();
+                    let mut done = HashSet::new();
                     let from = self.pull(frame, std::slice::from_ref(arg), &mut done)[0];
                     let to = self.frames[frame].outputs[*o];
                     let ty = self.body(frame).outputs[*o];
