@@ -409,6 +409,51 @@ fn transforms() {
 }
 
 #[test]
+fn splines() {
+    // Three points: the B-spline is the quadratic Bézier (1−u)²p0 + 2u(1−u)p1 + u²p2.
+    // At u = 0.5: 0.25·(0,0,0) + 0.5·(0,10,20) + 0.25·(0,20,0) = (0, 10, 10); the tangent
+    // 2(1−u)(p1 − p0) + 2u(p2 − p1) = p2 − p0 = (0, 20, 0).
+    let pts = "[(0.0, 0.0, 0.0), (0.0, 10.0, 20.0), (0.0, 20.0, 0.0)]";
+    close_v(
+        vec3(&format!("BSpline(points: {pts}, u: 0.5)"), "position"),
+        Vec3::new(0.0, 10.0, 10.0),
+    );
+    close_v(
+        vec3(&format!("BSpline(points: {pts}, u: 0.5)"), "tangent"),
+        Vec3::new(0.0, 20.0, 0.0),
+    );
+    // Catmull-Rom passes through the middle point at u = 1/2.
+    close_v(
+        vec3(
+            &format!("BSpline(points: {pts}, u: 0.5, mode: CatmullRom)"),
+            "position",
+        ),
+        Vec3::new(0.0, 10.0, 20.0),
+    );
+    // u is clamped: past the end is the last point.
+    close_v(
+        vec3(&format!("BSpline(points: {pts}, u: 3.0)"), "position"),
+        Vec3::new(0.0, 20.0, 0.0),
+    );
+
+    let text = format!(
+        "Graph(version: 1, name: \"s\", events: {{ forward: [ DrawSpline(points: {pts}, segments: 4) ] }})"
+    );
+    let program = Arc::new(strider_compiler::compile_str(Path::new("s.ron"), &text).unwrap());
+    let mut i = Instance::new(program, skeleton()).unwrap();
+    i.run_forward(&FrameInput::default(), &EmptyWorld, true);
+    let prims = i.debug_draw().primitives();
+    assert_eq!(prims.len(), 4);
+    // The second piece runs from u = 0.25 to u = 0.5: B(0.25) = 0.5625·p0 + 0.375·p1 + 0.0625·p2
+    // = (0, 5, 7.5).
+    let strider_core::DebugPrimitive::Line { start, end, .. } = prims[1] else {
+        panic!()
+    };
+    close_v(start, Vec3::new(0.0, 5.0, 7.5));
+    close_v(end, Vec3::new(0.0, 10.0, 10.0));
+}
+
+#[test]
 fn hierarchy_and_host() {
     // The mannequin's pelvis rests at z = 95 (skeleton file).
     close_v(

@@ -218,6 +218,8 @@ pub enum Op {
     AimMath,
     /// Align an axis with a normal.
     AlignToNormal,
+    /// Position and tangent on a spline through points.
+    Spline,
     /// Limit a vector's length.
     ClampLength,
     /// Keep a point within a spherical shell.
@@ -267,6 +269,8 @@ pub enum Op {
     DrawSphere,
     /// Draw a box.
     DrawBox,
+    /// Draw a spline as a polyline.
+    DrawSpline,
 }
 
 #[cfg(test)]

@@ -706,6 +706,33 @@ fn build() -> Vec<NodeSpec> {
         )],
     );
     b.pure(
+        "BSpline",
+        "Position and tangent at `u` on a curve through `points` (the seed's \"Spline From \
+         Points\" + \"Position From Spline\"). `BSpline`: a clamped uniform B-spline of \
+         degree min(3, N − 1) — it starts at the first point, ends at the last, and is pulled \
+         towards (not through) the others; `u` is the knot parameter, the N − k spans equally \
+         long in `u` (not in arc length). `CatmullRom`: a uniform Catmull-Rom curve through \
+         every point, point i at u = i/(N − 1). `u` is clamped to [0, 1] (NaN → 0). No points: \
+         zero; one point: that point with a zero tangent.",
+        r#""arc": BSpline(points: var("SwingPoints"), u: "alpha"),"#,
+        vec![ov(
+            Op::Spline,
+            vec![
+                input(
+                    "points",
+                    ValueType::Array(Elem::Vec3),
+                    "Control points, rig space, cm.",
+                ),
+                opt("u", f0(), "Curve parameter, 0..1."),
+                choice("mode", &["BSpline", "CatmullRom"], 0, "Which curve."),
+            ],
+            vec![
+                output("position", V, "Point on the curve, cm."),
+                output("tangent", V, "Derivative with respect to u, cm per unit u."),
+            ],
+        )],
+    );
+    b.pure(
         "ClampLength",
         "`value` with its length limited to `[min, max]` cm, direction kept. A zero vector \
          has no direction and stays zero.",
@@ -1406,6 +1433,28 @@ fn build() -> Vec<NodeSpec> {
                     "Half size per local axis, cm.",
                 ),
                 color(Vec3::ONE),
+            ],
+            vec![],
+        )],
+    );
+    b.node(
+        "DrawSpline",
+        Effect::Mutating,
+        "Draws the curve of a `BSpline` node as `segments` line pieces (rig space). Free \
+         when the host asked for no debug drawing.",
+        r#"DrawSpline(points: var("SwingPoints"), segments: 16, color: (0.0, 1.0, 1.0)),"#,
+        vec![ov(
+            Op::DrawSpline,
+            vec![
+                input(
+                    "points",
+                    ValueType::Array(Elem::Vec3),
+                    "Control points, rig space, cm.",
+                ),
+                choice("mode", &["BSpline", "CatmullRom"], 0, "Which curve."),
+                opt("segments", Value::Int(16), "Line pieces (1..=256)."),
+                opt("thickness", Value::Float(0.5), "Width, cm."),
+                color(Vec3::new(0.0, 1.0, 1.0)),
             ],
             vec![],
         )],

@@ -8,6 +8,7 @@ use crate::slots::Slots;
 use glam::{Quat, Vec3};
 use strider_core::{BoneIndex, DebugColor, DebugDraw, DebugPrimitive, Pose, Transform, WorldQuery};
 use strider_nodes::kernels as k;
+use strider_nodes::kernels::spline::{self, SplineMode};
 use strider_nodes::{Elem, Op, ValueType};
 
 /// What one run of an event works on.
@@ -310,6 +311,16 @@ pub(crate) fn run(program: &Program, entry: u32, cx: &mut Ctx<'_>) {
                 t!(5) = k::aim(tr, v!(1), direction, f!(4));
             }
             Op::AlignToNormal => t!(4) = k::aim(t!(0), v!(1), v!(2), f!(3)),
+            Op::Spline => {
+                let mode = if i!(2) == 1 {
+                    SplineMode::CatmullRom
+                } else {
+                    SplineMode::BSpline
+                };
+                let (p, t) = spline::evaluate(&s.vec3_arrays[at!(0)], f!(1), mode);
+                v!(3) = p;
+                v!(4) = t;
+            }
             Op::ClampLength => v!(3) = k::clamp_length(v!(0), f!(1), f!(2)),
             Op::ClampSpatially => v!(4) = k::clamp_spatially(v!(0), v!(1), f!(2), f!(3)),
 
@@ -489,6 +500,29 @@ pub(crate) fn run(program: &Program, entry: u32, cx: &mut Ctx<'_>) {
                         half_extents: v!(1),
                         color: color(v!(2)),
                     });
+                }
+            }
+            Op::DrawSpline => {
+                if cx.debug.is_enabled() {
+                    let mode = if i!(1) == 1 {
+                        SplineMode::CatmullRom
+                    } else {
+                        SplineMode::BSpline
+                    };
+                    let pieces = i!(2).clamp(1, 256);
+                    let points = &s.vec3_arrays[at!(0)];
+                    let (thickness, c) = (f!(3), color(v!(4)));
+                    let mut start = spline::evaluate(points, 0.0, mode).0;
+                    for k in 1..=pieces {
+                        let end = spline::evaluate(points, k as f32 / pieces as f32, mode).0;
+                        cx.debug.push(DebugPrimitive::Line {
+                            start,
+                            end,
+                            thickness,
+                            color: c,
+                        });
+                        start = end;
+                    }
                 }
             }
             Op::DrawTransform => {
