@@ -170,6 +170,12 @@ pub(crate) fn check(loaded: &LoadedGraph) -> Result<Checked, Vec<Diagnostic>> {
                     }
                 },
             };
+            if v.ty == ValueType::Name {
+                diags
+                    .error(sources, v.ty_loc, format!("variable `{}` cannot be a Name", v.name.name))
+                    .hint("Name is a constant text written in a pin, e.g. name(\"foot\"); variables hold values that change")
+                    .emit();
+            }
             let tunable = v
                 .tunable
                 .map(|t| (t.min.map(|x| x as f32), t.max.map(|x| x as f32)));
@@ -1177,16 +1183,12 @@ impl<'a, 'c> Scope<'a, 'c> {
                         return Err((pi, format!("expected {}, found {}", pin.ty, a.ty)));
                     }
                 }
-                Some((p, Some(Err(lit)))) => match literal::convert(lit, pin.ty, pin.choices) {
+                Some((_, Some(Err(lit)))) => match literal::convert(lit, pin.ty, pin.choices) {
                     Ok((value, fit)) => {
                         if fit == Fit::Promoted {
                             promotions += 1;
                         }
-                        let location = format!(
-                            "{} [pin `{}`]",
-                            self.sources().describe(lit.loc),
-                            p.name.name
-                        );
+                        let location = self.sources().describe(lit.loc);
                         Arg {
                             src: Src::Const { value, location },
                             ty: pin.ty,
@@ -1429,13 +1431,9 @@ impl<'a, 'c> Scope<'a, 'c> {
                         continue;
                     }
                 }
-                Some((p, Some(Err(lit)))) => match literal::convert(lit, q.ty, &[]) {
+                Some((_, Some(Err(lit)))) => match literal::convert(lit, q.ty, &[]) {
                     Ok((value, _)) => {
-                        let location = format!(
-                            "{} [pin `{}`]",
-                            self.sources().describe(lit.loc),
-                            p.name.name
-                        );
+                        let location = self.sources().describe(lit.loc);
                         Arg {
                             src: Src::Const { value, location },
                             ty: q.ty,

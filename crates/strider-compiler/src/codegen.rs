@@ -162,10 +162,13 @@ impl Gen<'_> {
             Value::Array(Elem::Bone, items) => !items.is_empty(),
             _ => false,
         };
-        if has_names {
-            return self.pb.constant(value, location);
-        }
-        let key = format!("{value:?}");
+        // Bone and text constants carry their source location (for "unknown bone" errors at
+        // instantiation), so they are shared only between uses of the same literal.
+        let key = if has_names {
+            format!("{value:?}@{location}")
+        } else {
+            format!("{value:?}")
+        };
         if let Some(&s) = self.consts.get(&key) {
             return s;
         }

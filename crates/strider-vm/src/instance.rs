@@ -57,10 +57,11 @@ pub struct MissingBone {
 /// An instance could not be created for this skeleton.
 #[derive(Clone, Debug, PartialEq, thiserror::Error)]
 pub enum InstantiateError {
-    /// Bones named in the graph are missing from the skeleton.
+    /// Bones named in the graph are missing from the skeleton (each reference once).
     #[error("{}", fmt_missing(.skeleton, .missing))]
     MissingBones {
-        /// The skeleton's name or path, for the message.
+        /// The skeleton's name for the message; empty when the instance does not know it
+        /// (a host that does may fill it in).
         skeleton: String,
         /// Every missing reference.
         missing: Vec<MissingBone>,
@@ -73,10 +74,10 @@ fn fmt_missing(skeleton: &str, missing: &[MissingBone]) -> String {
         if i > 0 {
             out.push('\n');
         }
-        out.push_str(&format!(
-            "{}: error: unknown bone `{}` in skeleton `{skeleton}`",
-            m.location, m.name
-        ));
+        out.push_str(&format!("{}: error: unknown bone `{}`", m.location, m.name));
+        if !skeleton.is_empty() {
+            out.push_str(&format!(" in skeleton `{skeleton}`"));
+        }
         if let Some(s) = &m.suggestion {
             out.push_str(&format!("\n  hint: did you mean `{s}`?"));
         }
@@ -136,7 +137,7 @@ impl Instance {
             debug: DebugDraw::new(false),
             to_world: Transform::IDENTITY,
         };
-        instance.resolve_bones("skeleton")?;
+        instance.resolve_bones()?;
         instance.run_construction(&EmptyWorld);
         Ok(instance)
     }
@@ -159,7 +160,7 @@ impl Instance {
             debug: DebugDraw::new(false),
             to_world: self.to_world,
         };
-        next.resolve_bones("skeleton")?;
+        next.resolve_bones()?;
         for v in self
             .program
             .variables
@@ -174,7 +175,7 @@ impl Instance {
         Ok(())
     }
 
-    fn resolve_bones(&mut self, skeleton_name: &str) -> Result<(), InstantiateError> {
+    fn resolve_bones(&mut self) -> Result<(), InstantiateError> {
         let skeleton = Arc::clone(self.pose.skeleton());
         let mut missing = Vec::new();
         for lit in &self.program.bones {
@@ -185,18 +186,25 @@ impl Instance {
                         self.slots.bone_arrays[slot as usize][index as usize] = b.0 as i32;
                     }
                 },
-                None => missing.push(MissingBone {
-                    name: lit.name.clone(),
-                    location: lit.location.clone(),
-                    suggestion: skeleton.suggest(&lit.name),
-                }),
+                None => {
+                    let seen = missing
+                        .iter()
+                        .any(|m: &MissingBone| m.name == lit.name && m.location == lit.location);
+                    if !seen {
+                        missing.push(MissingBone {
+                            name: lit.name.clone(),
+                            location: lit.location.clone(),
+                            suggestion: skeleton.suggest(&lit.name),
+                        });
+                    }
+                }
             }
         }
         if missing.is_empty() {
             Ok(())
         } else {
             Err(InstantiateError::MissingBones {
-                skeleton: skeleton_name.to_string(),
+                skeleton: String::new(),
                 missing,
             })
         }
