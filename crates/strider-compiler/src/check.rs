@@ -308,8 +308,20 @@ pub(crate) fn check(loaded: &LoadedGraph) -> Result<Checked, Vec<Diagnostic>> {
             graph,
         })
     } else {
-        Err(diags.into_vec())
+        Err(in_source_order(diags.into_vec()))
     }
+}
+
+/// Diagnostics sorted by file (in the order files were first reported), line and column.
+fn in_source_order(mut list: Vec<Diagnostic>) -> Vec<Diagnostic> {
+    let mut files: Vec<std::path::PathBuf> = Vec::new();
+    for d in &list {
+        if !files.contains(&d.path) {
+            files.push(d.path.clone());
+        }
+    }
+    list.sort_by_key(|d| (files.iter().position(|f| *f == d.path), d.line, d.col));
+    list
 }
 
 impl Body {
@@ -1099,7 +1111,11 @@ impl<'a, 'c> Scope<'a, 'c> {
             }
         }
         // Target pins must be variables.
-        for (p, _) in &given {
+        for (p, source) in &given {
+            let given_type = match source {
+                Some(Ok(a)) if a.ty.is_array() => Some(a.ty),
+                _ => None,
+            };
             if let Some(pin) = first
                 .inputs
                 .iter()
@@ -1110,7 +1126,10 @@ impl<'a, 'c> Scope<'a, 'c> {
                         .error(self.sources(), p.value.loc, format!("write to a non-variable: {kind} changes its `{}` input in place, so it must be a variable", pin.name))
                         .node(label.clone())
                         .pin(pin.name)
-                        .hint(format!("write `{}: var(\"Name\")` with a {} variable", pin.name, pin.ty))
+                        .hint(match given_type {
+                            Some(ty) => format!("write `{}: var(\"Name\")` with a {ty} variable", pin.name),
+                            None => format!("write `{}: var(\"Name\")` with a {} variable", pin.name, pin.ty),
+                        })
                         .emit();
                 bad = true;
             }
