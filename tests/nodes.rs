@@ -453,6 +453,201 @@ fn splines() {
     close_v(end, Vec3::new(0.0, 10.0, 10.0));
 }
 
+fn float_pin(node: &str, pin: &str) -> f32 {
+    match eval(node, pin, ValueType::Float) {
+        Value::Float(x) => x,
+        v => panic!("{v:?}"),
+    }
+}
+
+#[test]
+fn smoothing() {
+    // eval runs one frame of dt = 1/60 s. At speed 6/s the gap shrinks by
+    // 1 − e^(−6/60) = 1 − e^(−0.1) = 0.0951626.
+    let a = 1.0 - (-0.1f32).exp();
+    close_v(
+        vec3(
+            "VectorLerp(current: (0.0, 0.0, 0.0), target: (100.0, 0.0, 0.0), speed: 6.0)",
+            "",
+        ),
+        Vec3::new(100.0 * a, 0.0, 0.0),
+    );
+    // Max-step variant: at most 60 cm/s · 1/60 s = 1 cm this frame.
+    close_v(
+        vec3(
+            "VectorLerp(current: (0.0, 0.0, 0.0), target: (100.0, 0.0, 0.0), speed: 6.0, max_per_second: 60.0)",
+            "",
+        ),
+        Vec3::new(1.0, 0.0, 0.0),
+    );
+    close(
+        float("FloatLerp(current: 0.0, target: 10.0, speed: 6.0)"),
+        10.0 * a,
+    );
+    // 90° × 0.0951626 = 8.5646° about Z.
+    same_rotation(
+        quat("QuatLerp(current: euler(0.0, 0.0, 0.0), target: euler(0.0, 0.0, 90.0), speed: 6.0)"),
+        Quat::from_rotation_z((90.0 * a).to_radians()),
+    );
+    // FInterpTo: step (10 − 0)·clamp(10/60, 0, 1) = 1.6667.
+    close(
+        float("FInterpTo(current: 0.0, target: 10.0, speed: 10.0)"),
+        10.0 / 6.0,
+    );
+    close_v(
+        vec3(
+            "FInterpTo(current: (0.0, 0.0, 0.0), target: (0.0, 6.0, 0.0), speed: 10.0)",
+            "",
+        ),
+        Vec3::new(0.0, 1.0, 0.0),
+    );
+    same_rotation(
+        quat(
+            "FInterpTo(current: euler(0.0, 0.0, 0.0), target: euler(0.0, 0.0, 60.0), speed: 10.0)",
+        ),
+        Quat::from_rotation_z(10f32.to_radians()),
+    );
+    // A spring starts at rest on the first target it sees.
+    close(float("SpringDamper(target: 5.0, half_life: 0.2)"), 5.0);
+    close_v(
+        vec3("SpringDamper(target: (1.0, 2.0, 3.0))", "value"),
+        Vec3::new(1.0, 2.0, 3.0),
+    );
+}
+
+#[test]
+fn locomotion_units() {
+    let a = 1.0 - (-0.1f32).exp();
+    // Velocity (−100, 100): Rz(+45°) maps +Y to (−0.707, 0.707), so the yaw is 45°; from 0
+    // at speed 6 for 1/60 s: 45 × 0.0951626 = 4.2823.
+    close(
+        float(
+            "GetMovementAngleOffset(velocity: (-100.0, 100.0, 0.0), current: 0.0, master_cycle: 0.0)",
+        ),
+        45.0 * a,
+    );
+    // Straight back is yaw 180, folded to 0: the legs step backwards.
+    close(
+        float(
+            "GetMovementAngleOffset(velocity: (0.0, -100.0, 0.0), current: 0.0, master_cycle: 0.0)",
+        ),
+        0.0,
+    );
+    // Standing still keeps the offset.
+    close(
+        float(
+            "GetMovementAngleOffset(velocity: (0.0, 0.0, 0.0), current: 30.0, master_cycle: 0.0)",
+        ),
+        30.0,
+    );
+    close(float("CalculatePerFootRotationFactor(yaw: 10.0)"), 0.5);
+    close(float("CalculatePerFootRotationFactor(yaw: -10.0)"), 0.9);
+    same_rotation(
+        quat("LimitRotationAroundZ(rotation: euler(0.0, 0.0, 60.0), limit: 25.0)"),
+        Quat::from_rotation_z(25f32.to_radians()),
+    );
+    // Moving forward: Side = Rz(90°)·Y = −X (the character's right). The right foot at
+    // x = −10 has side coordinate 10; the left foot wants x = −5 (side 5) but must stay at
+    // side ≤ 10 − 15 = −5, i.e. x = 5, 15 cm left of the right foot. Forward (10) is kept.
+    close_v(
+        vec3(
+            "FootAvoidance(ideal: (-5.0, 10.0, 2.0), other_foot: (-10.0, 0.0, 0.0), is_left: true)",
+            "",
+        ),
+        Vec3::new(5.0, 10.0, 2.0),
+    );
+    // The right foot mirrored: it must stay at side ≥ o + 15.
+    close_v(
+        vec3(
+            "FootAvoidance(ideal: (5.0, 10.0, 0.0), other_foot: (10.0, 0.0, 0.0), is_left: false)",
+            "",
+        ),
+        Vec3::new(-5.0, 10.0, 0.0),
+    );
+    // Knee (0, 2, 0)·20 = (0, 40, 0), turned by slerp(identity, Rz(90°), 0.25) = Rz(22.5°):
+    // (−40·sin 22.5°, 40·cos 22.5°, 0) = (−15.307, 36.955, 0).
+    close_v(
+        vec3(
+            "CalculateKneeVector(platform_rotation: euler(0.0, 0.0, 0.0), movement_rotation: euler(0.0, 0.0, 90.0), default_knee: (0.0, 2.0, 0.0))",
+            "",
+        ),
+        Vec3::new(-15.307337, 36.95518, 0.0),
+    );
+    // Running forward at 300 cm/s, cycle 0.1: sin(360°·fract(0.1 + 0.15)) = 1; direction
+    // factor 1; full swing 50; lateral clamp(|300·0.4|, 0.4, 1) = 1; plus base 15 = 65°.
+    close(
+        float(
+            "ArmSwingRotation(per_foot_cycle: 0.1, velocity: (0.0, 300.0, 0.0), movement_rotation: euler(0.0, 0.0, 0.0))",
+        ),
+        65.0,
+    );
+    close(
+        float(
+            "ArmSwingRotation(per_foot_cycle: 0.1, velocity: (0.0, 0.0, 0.0), movement_rotation: euler(0.0, 0.0, 0.0))",
+        ),
+        0.0,
+    );
+    // sin(720°·(0.375 − 0.25)) = sin 90° = 1, at full speed: 1.5 cm.
+    close(
+        float("ClavicleOffset(master_cycle: 0.375, speed: 300.0)"),
+        1.5,
+    );
+    // Half speed forward: pitch −7.5°, shift 5 cm.
+    close(
+        float_pin("PelvisLean(velocity: (0.0, 150.0, 0.0))", "pitch"),
+        -7.5,
+    );
+    close(
+        float_pin("PelvisLean(velocity: (0.0, 150.0, 0.0))", "shift"),
+        5.0,
+    );
+    // Backwards leans back.
+    close(
+        float_pin("PelvisLean(velocity: (0.0, -150.0, 0.0))", "pitch"),
+        7.5,
+    );
+    close(float("PelvisSideLean(height_difference: 30.0)"), 7.5);
+    // Ankle (0, 0, 13.5), ball (0, 14, 3): fwd = (0, 5.8, 0); ball pivot (0, 14, 0.5);
+    // tip (0, 19.8, 0.5); heel (0, 0, 4.5) − 0.8·fwd = (0, −4.64, 4.5).
+    let pivots = "FootPivots(foot: (0.0, 0.0, 13.5), ball: (0.0, 14.0, 3.0))";
+    close_v(vec3(pivots, "ball_pivot"), Vec3::new(0.0, 14.0, 0.5));
+    close_v(vec3(pivots, "tip"), Vec3::new(0.0, 19.8, 0.5));
+    close_v(vec3(pivots, "heel"), Vec3::new(0.0, -4.64, 4.5));
+    // fract(0.9 + (1/60)/1.0) = 0.916667; the second foot half a cycle on: 0.416667.
+    let cycle = "CycleStep(master: 0.9, cycle_length: 1.0, foot_offset: 0.5)";
+    close(float_pin(cycle, "next"), 0.9 + 1.0 / 60.0);
+    close(float_pin(cycle, "per_foot"), 0.9 + 1.0 / 60.0 - 0.5);
+    // Not moving: no stepping in place.
+    close(
+        float_pin(
+            "CycleStep(master: 0.9, cycle_length: 1.0, moving: false)",
+            "next",
+        ),
+        0.9,
+    );
+    close(
+        float("FootOffsetFromTrace(hit: true, distance: 80.0, half_height: 90.0)"),
+        10.0,
+    );
+    close(
+        float("FootOffsetFromTrace(hit: false, distance: 80.0, half_height: 90.0)"),
+        0.0,
+    );
+    // A 10° slope rising towards −Y: n = (0, sin 10°, cos 10°): roll = atan2(n.y, n.z) = 10°.
+    let (sn, cs) = 10f32.to_radians().sin_cos();
+    let node = format!(
+        "RotationFromNormal(normal: ({:?}, {:?}, {:?}))",
+        0.0f32, sn, cs
+    );
+    close(float_pin(&node, "roll"), 10.0);
+    close(float_pin(&node, "pitch").abs(), 0.0);
+    let r = match eval(&node, "rotation", ValueType::Quat) {
+        Value::Quat(q) => q,
+        v => panic!("{v:?}"),
+    };
+    close_v(r * Vec3::Z, Vec3::new(0.0, sn, cs));
+}
+
 #[test]
 fn hierarchy_and_host() {
     // The mannequin's pelvis rests at z = 95 (skeleton file).

@@ -244,6 +244,52 @@ pub enum Op {
     /// Sphere trace against the host world.
     SphereTrace,
 
+    // ---- smoothing (use the frame's dt) ----
+    /// Frame-rate independent exponential smoothing, float.
+    FloatLerp,
+    /// Frame-rate independent exponential smoothing, vector, optional max step.
+    VectorLerp,
+    /// Frame-rate independent exponential smoothing, rotation.
+    QuatLerp,
+    /// Unreal-style interp-to, float.
+    FInterpToF,
+    /// Unreal-style interp-to, vector.
+    FInterpToV,
+    /// Unreal-style interp-to, rotation.
+    FInterpToQ,
+    /// Critically damped spring, float (stateful).
+    SpringF,
+    /// Critically damped spring, vector (stateful).
+    SpringV,
+
+    // ---- locomotion units ----
+    /// Movement-direction yaw offset with 8-direction folding.
+    MovementAngleOffset,
+    /// Per-foot yaw factor.
+    PerFootRotationFactor,
+    /// Clamp a rotation's yaw.
+    LimitRotationAroundZ,
+    /// Keep feet from crossing.
+    FootAvoidance,
+    /// Knee pole vector.
+    KneeVector,
+    /// Arm swing pitch.
+    ArmSwingRotation,
+    /// Clavicle bob.
+    ClavicleOffset,
+    /// Pelvis lean from velocity.
+    PelvisLean,
+    /// Pelvis roll from feet heights.
+    PelvisSideLean,
+    /// Heel, ball and tip pivots.
+    FootPivots,
+    /// Advance a cycle phase.
+    CycleStep,
+    /// Foot offset from a downward trace.
+    FootOffsetFromTrace,
+    /// Foot rotation from a ground normal.
+    RotationFromNormal,
+
     // ---- arrays ----
     /// Element at an index.
     ArrayAt(Elem),

@@ -1269,6 +1269,376 @@ fn build() -> Vec<NodeSpec> {
         )],
     );
 
+    b.category = "Smoothing";
+    let speed = |d: f32| {
+        opt(
+            "speed",
+            Value::Float(d),
+            "Blend speed k, 1/s: the gap shrinks by e^(−k·dt) per frame.",
+        )
+    };
+    b.pure(
+        "VectorLerp",
+        "Moves `current` towards `target` frame-rate independently: \
+         `current + (target − current)·(1 − e^(−speed·dt))` with this frame's dt — N frames of \
+         dt land exactly where one frame of N·dt does. With `max_per_second` > 0 the step is \
+         also clamped to `max_per_second·dt` cm (the seed's max-step variant). The seed's own \
+         `current + (target − current)·clamp(speed·dt, 0, 1)` depends on the frame rate (at \
+         k = 2/s over 1 s: 0.869 of the way at 60 Hz, 0.874 at 30 Hz, all of it at 1 Hz); \
+         this node does not. dt = 0 or speed ≤ 0: no motion.",
+        r#""smoothed": VectorLerp(current: var("RigSpaceVelocity"), target: "velocity", speed: 6.0),"#,
+        vec![ov(
+            Op::VectorLerp,
+            vec![
+                input("current", V, "Value last frame (usually a variable)."),
+                input("target", V, "Value to approach."),
+                speed(6.0),
+                opt("max_per_second", f0(), "Largest step per second, cm/s; 0 = no limit."),
+            ],
+            vec![output("result", V, "The new value.")],
+        )],
+    );
+    b.pure(
+        "FloatLerp",
+        "VectorLerp for a float: `current + (target − current)·(1 − e^(−speed·dt))`, frame-rate independent.",
+        r#""offset": FloatLerp(current: var("PreviousZTraceOffset"), target: "drop", speed: 5.0),"#,
+        vec![ov(
+            Op::FloatLerp,
+            vec![input("current", F, "Value last frame."), input("target", F, "Value to approach."), speed(6.0)],
+            vec![output("result", F, "The new value.")],
+        )],
+    );
+    b.pure(
+        "QuatLerp",
+        "VectorLerp for a rotation: slerp from `current` towards `target` by `1 − e^(−speed·dt)`, frame-rate independent.",
+        r#""facing": QuatLerp(current: var("Facing"), target: "wanted", speed: 6.0),"#,
+        vec![ov(
+            Op::QuatLerp,
+            vec![input("current", Q, "Rotation last frame."), input("target", Q, "Rotation to approach."), speed(6.0)],
+            vec![output("result", Q, "The new rotation.")],
+        )],
+    );
+    b.pure(
+        "FInterpTo",
+        "Unreal's FInterpTo / VInterpTo / RInterpTo: step `(target − current)·clamp(speed·dt, 0, 1)`. \
+         Kept for graphs ported from Unreal; it depends on the frame rate — prefer VectorLerp. \
+         speed ≤ 0 snaps to the target.",
+        r#""foot_z": FInterpTo(current: var("FootOffset"), target: "offset", speed: 20.0),"#,
+        [(F, Op::FInterpToF), (V, Op::FInterpToV), (Q, Op::FInterpToQ)]
+            .iter()
+            .map(|&(ty, op)| {
+                ov(
+                    op,
+                    vec![
+                        input("current", ty, "Value last frame."),
+                        input("target", ty, "Value to approach."),
+                        opt("speed", Value::Float(10.0), "Interp speed, 1/s."),
+                    ],
+                    vec![output("result", ty, "The new value.")],
+                )
+            })
+            .collect(),
+    );
+    b.pure(
+        "SpringDamper",
+        "A critically damped spring following `target`, exact for any dt (closed form): \
+         `half_life` seconds halve the distance to a still target, with no overshoot. \
+         Stateful: each node (per call site) keeps its own position and velocity, starting at \
+         rest on the first target it sees.",
+        r#""pelvis_z": SpringDamper(target: "wanted_z", half_life: 0.15),"#,
+        [(F, Op::SpringF), (V, Op::SpringV)]
+            .iter()
+            .map(|&(ty, op)| Overload {
+                state: vec![B, ty, ty],
+                ..ov(
+                    op,
+                    vec![
+                        input("target", ty, "Value to follow."),
+                        opt(
+                            "half_life",
+                            Value::Float(0.1),
+                            "Seconds to halve the gap (≤ 0 snaps).",
+                        ),
+                    ],
+                    vec![output("value", ty, "The spring's position.")],
+                )
+            })
+            .collect(),
+    );
+
+    b.category = "Locomotion";
+    b.pure(
+        "GetMovementAngleOffset",
+        "The yaw (degrees) the legs step towards, for 8-direction movement: the Z angle of the \
+         rotation from +Y to the velocity's XY direction, backward diagonals folded (beyond \
+         ±`fold_threshold` it adds or subtracts 180 so walking backwards steps backwards), \
+         blended from `current` at `speed` (frame-rate independent) — or at `jump_speed` when \
+         the change exceeds `jump_threshold` and the feet are not at the start of a step \
+         (fract(2·master_cycle) ≥ `step_start_gate`), which keeps legs from crossing on a \
+         sudden reversal. Zero velocity keeps `current`.",
+        r#""mao": GetMovementAngleOffset(velocity: var("RigSpaceVelocity"), current: var("MovementAngleOffset"), master_cycle: var("MasterCyclePercent")),"#,
+        vec![ov(
+            Op::MovementAngleOffset,
+            vec![
+                input("velocity", V, "Rig-space velocity, cm/s."),
+                input("current", F, "Offset last frame, degrees."),
+                input("master_cycle", F, "Master cycle phase, 0..1."),
+                speed(6.0),
+                opt("jump_speed", Value::Float(0.2), "Blend speed for large jumps mid-step, 1/s."),
+                opt("jump_threshold", Value::Float(90.0), "A change above this is a jump, degrees."),
+                opt("fold_threshold", Value::Float(110.0), "Yaw beyond ± this folds by 180, degrees."),
+                opt("step_start_gate", Value::Float(0.4), "fract(2·cycle) below this is a step start."),
+            ],
+            vec![output("result", F, "New offset, degrees.")],
+        )],
+    );
+    b.pure(
+        "CalculatePerFootRotationFactor",
+        "How much of the movement yaw a foot follows: `positive_factor` when yaw > 0, else `negative_factor`.",
+        r#""factor": CalculatePerFootRotationFactor(yaw: "foot_yaw"),"#,
+        vec![ov(
+            Op::PerFootRotationFactor,
+            vec![
+                input("yaw", F, "Yaw, degrees."),
+                opt("positive_factor", Value::Float(0.5), "Factor for yaw > 0."),
+                opt("negative_factor", Value::Float(0.9), "Factor for yaw ≤ 0."),
+            ],
+            vec![output("result", F, "The factor.")],
+        )],
+    );
+    b.pure(
+        "LimitRotationAroundZ",
+        "Clamps a rotation's yaw (its twist about Z) to `center_yaw ± limit` degrees and keeps \
+         its tilt (swing), so a foot stays aligned with the slope.",
+        r#""foot_rot": LimitRotationAroundZ(rotation: "wanted", center_yaw: "mao", limit: 25.0),"#,
+        vec![ov(
+            Op::LimitRotationAroundZ,
+            vec![
+                input("rotation", Q, "The rotation."),
+                opt(
+                    "center_yaw",
+                    f0(),
+                    "Centre of the allowed yaw range, degrees.",
+                ),
+                opt(
+                    "limit",
+                    Value::Float(25.0),
+                    "Half width of the range, degrees.",
+                ),
+            ],
+            vec![output("result", Q, "The limited rotation.")],
+        )],
+    );
+    b.pure(
+        "FootAvoidance",
+        "Keeps a foot from crossing the other: in the movement frame (Mv = Rz(offset)·Y, \
+         Side = Rz(90°)·Mv, which points to the character's right), the left foot's side \
+         coordinate is at most the other foot's minus `margin`, the right foot's at least plus \
+         `margin`; forward and height are kept.",
+        r#""avoided": FootAvoidance(ideal: "spline.position", other_foot: "other_platform", movement_offset: var("MovementAngleOffset"), is_left: "is_left"),"#,
+        vec![ov(
+            Op::FootAvoidance,
+            vec![
+                input("ideal", V, "Where the foot wants to be, rig space, cm."),
+                input("other_foot", V, "The other foot's position, rig space, cm."),
+                opt("movement_offset", f0(), "Movement yaw, degrees."),
+                input("is_left", B, "True for the left foot."),
+                opt("margin", Value::Float(15.0), "Minimum sideways gap, cm."),
+            ],
+            vec![output("result", V, "The corrected position.")],
+        )],
+    );
+    b.pure(
+        "CalculateKneeVector",
+        "The knee pole for leg IK: `slerp(platform_rotation, movement_rotation, blend) · \
+         (default_knee · scale)`, so knees follow the movement direction a little and crouch \
+         poses keep knees apart. A zero default knee gives zero.",
+        r#""pole": CalculateKneeVector(platform_rotation: "platform.rotation", movement_rotation: "mao_rot", default_knee: "knee"),"#,
+        vec![ov(
+            Op::KneeVector,
+            vec![
+                input("platform_rotation", Q, "The foot platform's rotation."),
+                input("movement_rotation", Q, "Movement yaw as a rotation."),
+                input("default_knee", V, "Rest knee vector (calf − midpoint(thigh, foot)), cm."),
+                opt("blend", Value::Float(0.25), "0 = platform, 1 = movement."),
+                opt("scale", Value::Float(20.0), "Multiplier on the default knee vector."),
+            ],
+            vec![output("result", V, "Pole vector, rig space.")],
+        )],
+    );
+    b.pure(
+        "ArmSwingRotation",
+        "The hand's swing pitch about the shoulder, degrees (the seed's \
+         GetArmMotionEffectorRotationAmount): `sin(360°·fract(cycle + phase_offset)) · \
+         clamp(v̂·(quat_scale(movement, direction_scale)·Y), direction_min, direction_max) · \
+         remap(|v|, 0..speed_max → 0..swing_max) · clamp(|v·(0, lateral_scale, 0)|, lateral_min, \
+         lateral_max) + remap(|v|, 0..speed_max → 0..base_max)`. Walking backwards swings less.",
+        r#""swing": ArmSwingRotation(per_foot_cycle: "cycle", velocity: var("SlowVelocity"), movement_rotation: "mao_rot"),"#,
+        vec![ov(
+            Op::ArmSwingRotation,
+            vec![
+                input("per_foot_cycle", F, "The opposite foot's cycle phase, 0..1."),
+                input("velocity", V, "Rig-space velocity, cm/s."),
+                input("movement_rotation", Q, "Movement yaw as a rotation."),
+                opt("phase_offset", Value::Float(0.15), "Phase lead of the arm, cycles."),
+                opt("direction_scale", Value::Float(0.4), "quat_scale applied to the movement rotation."),
+                opt("direction_min", Value::Float(-0.5), "Lower clamp of the direction factor."),
+                opt("direction_max", Value::Float(1.0), "Upper clamp of the direction factor."),
+                opt("speed_max", Value::Float(300.0), "Speed of the full swing, cm/s."),
+                opt("swing_max", Value::Float(50.0), "Swing amplitude at speed_max, degrees."),
+                opt("base_max", Value::Float(15.0), "Constant forward pitch at speed_max, degrees."),
+                opt("lateral_scale", Value::Float(0.4), "Y factor in the lateral term."),
+                opt("lateral_min", Value::Float(0.4), "Lower clamp of the lateral term."),
+                opt("lateral_max", Value::Float(1.0), "Upper clamp of the lateral term."),
+            ],
+            vec![output("result", F, "Pitch, degrees.")],
+        )],
+    );
+    b.pure(
+        "ClavicleOffset",
+        "Clavicle bob, cm: `sin(720°·(master_cycle − 0.25)) · remap(speed, 0..speed_max → 0..amplitude_max)` (twice per cycle).",
+        r#""bob": ClavicleOffset(master_cycle: var("MasterCyclePercent"), speed: "speed"),"#,
+        vec![ov(
+            Op::ClavicleOffset,
+            vec![
+                input("master_cycle", F, "Master cycle phase, 0..1."),
+                input("speed", F, "Speed, cm/s."),
+                opt("speed_max", Value::Float(300.0), "Speed of the full bob, cm/s."),
+                opt("amplitude_max", Value::Float(1.5), "Bob at speed_max, cm."),
+            ],
+            vec![output("result", F, "Z offset, cm.")],
+        )],
+    );
+    b.pure(
+        "PelvisLean",
+        "Forward lean from velocity: `pitch = remap(|v|, 0..speed_max → 0..pitch_max)·(v̂·Y)` \
+         degrees about X and `shift = remap(|v|, 0..speed_max → 0..shift_max)·(v̂·Y)` cm along Y.",
+        r#""lean": PelvisLean(velocity: var("SlowVelocity")),"#,
+        vec![ov(
+            Op::PelvisLean,
+            vec![
+                input("velocity", V, "Rig-space velocity, cm/s."),
+                opt(
+                    "speed_max",
+                    Value::Float(300.0),
+                    "Speed of the full lean, cm/s.",
+                ),
+                opt(
+                    "pitch_max",
+                    Value::Float(-15.0),
+                    "Pitch at speed_max moving forward, degrees.",
+                ),
+                opt(
+                    "shift_max",
+                    Value::Float(10.0),
+                    "Forward shift at speed_max, cm.",
+                ),
+            ],
+            vec![
+                output("pitch", F, "Pitch about X, degrees."),
+                output("shift", F, "Shift along Y, cm."),
+            ],
+        )],
+    );
+    b.pure(
+        "PelvisSideLean",
+        "Pelvis roll about Y from the feet's height difference: `remap(height_difference, −range..range → −roll_max..roll_max)` degrees.",
+        r#""roll": PelvisSideLean(height_difference: "dz"),"#,
+        vec![ov(
+            Op::PelvisSideLean,
+            vec![
+                input("height_difference", F, "Left foot z − right foot z, cm."),
+                opt("range", Value::Float(60.0), "Difference of the full roll, cm."),
+                opt("roll_max", Value::Float(15.0), "Roll at the full difference, degrees."),
+            ],
+            vec![output("result", F, "Roll about Y, degrees.")],
+        )],
+    );
+    b.pure(
+        "FootPivots",
+        "Pivot points of foot roll (rig space, cm): fwd = tip_length·unit((ball − foot).xy); \
+         ball pivot = (ball.xy, ball.z − ball_drop); tip = ball pivot + fwd; heel = (foot.xy, \
+         foot.z − heel_drop) − heel_back·fwd. A ball straight above or below the ankle gives \
+         pivots straight below, no NaN.",
+        r#""pivots": FootPivots(foot: "ankle", ball: "ball"),"#,
+        vec![ov(
+            Op::FootPivots,
+            vec![
+                input("foot", V, "Ankle position, rig space, cm."),
+                input("ball", V, "Ball-of-foot position, rig space, cm."),
+                opt("tip_length", Value::Float(5.8), "Ball to toe tip, cm."),
+                opt(
+                    "ball_drop",
+                    Value::Float(2.5),
+                    "Ball joint above the sole, cm.",
+                ),
+                opt(
+                    "heel_drop",
+                    Value::Float(9.0),
+                    "Ankle above the heel contact, cm.",
+                ),
+                opt(
+                    "heel_back",
+                    Value::Float(0.8),
+                    "Heel behind the ankle, in tip_length units.",
+                ),
+            ],
+            vec![
+                output("ball_pivot", V, "Ball pivot on the sole, cm."),
+                output("tip", V, "Toe tip, cm."),
+                output("heel", V, "Heel pivot, cm."),
+            ],
+        )],
+    );
+    b.pure(
+        "CycleStep",
+        "Advances the master cycle phase: `master = fract(master + dt / cycle_length)` while \
+         `moving` (a cycle length ≤ 0 or NaN, or dt = 0, does not advance), and a foot's phase \
+         `fract(master + foot_offset)`.",
+        r#""cycle": CycleStep(master: var("MasterCyclePercent"), cycle_length: var("CycleLength"), moving: "moving"),"#,
+        vec![ov(
+            Op::CycleStep,
+            vec![
+                input("master", F, "Master phase last frame, 0..1."),
+                input("cycle_length", F, "Seconds per cycle."),
+                opt("foot_offset", f0(), "This foot's phase offset, cycles (0.5 for the second foot)."),
+                opt("moving", Value::Bool(true), "Advance only while true (no stepping in place)."),
+            ],
+            vec![output("next", F, "New master phase, 0..1."), output("per_foot", F, "This foot's phase, 0..1.")],
+        )],
+    );
+    b.pure(
+        "FootOffsetFromTrace",
+        "Standing foot IK: a downward trace from the capsule centre that hit at `distance` \
+         gives `half_height − distance` (positive: ground above the capsule bottom); a miss gives 0.",
+        r#""offset": FootOffsetFromTrace(hit: "trace.hit", distance: "trace.distance", half_height: 90.0),"#,
+        vec![ov(
+            Op::FootOffsetFromTrace,
+            vec![
+                input("hit", B, "Whether the trace hit."),
+                input("distance", F, "Trace distance to the hit, cm."),
+                input("half_height", F, "Capsule half height, cm."),
+            ],
+            vec![output("result", F, "Offset, cm.")],
+        )],
+    );
+    b.pure(
+        "RotationFromNormal",
+        "Foot tilt from a ground normal n (seed 003): `pitch = −atan2(n.x, n.z)` (a tilt about \
+         +Y in rig axes) and `roll = atan2(n.y, n.z)` (about +X), degrees; `rotation` tilts +Z \
+         onto n with the foot's yaw unchanged. Zero or NaN normal: no tilt.",
+        r#""tilt": RotationFromNormal(normal: "trace.normal"),"#,
+        vec![ov(
+            Op::RotationFromNormal,
+            vec![input("normal", V, "Ground normal, rig space.")],
+            vec![
+                output("pitch", F, "−atan2(n.x, n.z), degrees."),
+                output("roll", F, "atan2(n.y, n.z), degrees."),
+                output("rotation", Q, "The tilt as a rotation."),
+            ],
+        )],
+    );
+
     b.category = "Array";
     let arrays =
         |op: fn(Elem) -> Op, f: &dyn Fn(Elem) -> (Vec<PinSpec>, Vec<PinSpec>)| -> Vec<Overload> {

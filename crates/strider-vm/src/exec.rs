@@ -8,6 +8,7 @@ use crate::slots::Slots;
 use glam::{Quat, Vec3};
 use strider_core::{BoneIndex, DebugColor, DebugDraw, DebugPrimitive, Pose, Transform, WorldQuery};
 use strider_nodes::kernels as k;
+use strider_nodes::kernels::locomotion as loco;
 use strider_nodes::kernels::spline::{self, SplineMode};
 use strider_nodes::{Elem, Op, ValueType};
 
@@ -399,6 +400,107 @@ pub(crate) fn run(program: &Program, entry: u32, cx: &mut Ctx<'_>) {
                         f!(outs + 3) = start.distance(end);
                     }
                 }
+            }
+
+            Op::FloatLerp => f!(3) = loco::lerp_exponential(f!(0), f!(1), cx.dt, f!(2)),
+            Op::VectorLerp => {
+                let max = f!(3);
+                v!(4) = if max > 0.0 {
+                    loco::lerp_max_step(v!(0), v!(1), cx.dt, f!(2), max)
+                } else {
+                    loco::lerp_exponential_v(v!(0), v!(1), cx.dt, f!(2))
+                };
+            }
+            Op::QuatLerp => q!(3) = loco::lerp_exponential_q(q!(0), q!(1), cx.dt, f!(2)),
+            Op::FInterpToF => f!(3) = loco::finterp_to(f!(0), f!(1), cx.dt, f!(2)),
+            Op::FInterpToV => v!(3) = loco::vinterp_to(v!(0), v!(1), cx.dt, f!(2)),
+            Op::FInterpToQ => q!(3) = loco::qinterp_to(q!(0), q!(1), cx.dt, f!(2)),
+            Op::SpringF => {
+                // State: [started, value, velocity]. The first run starts at rest on the target.
+                let target = f!(0);
+                if !b!(3) {
+                    b!(3) = true;
+                    f!(4) = target;
+                    f!(5) = 0.0;
+                }
+                let (x, vel) = loco::spring_damper(f!(4), f!(5), target, f!(1), cx.dt);
+                f!(4) = x;
+                f!(5) = vel;
+                f!(2) = x;
+            }
+            Op::SpringV => {
+                let target = v!(0);
+                if !b!(3) {
+                    b!(3) = true;
+                    v!(4) = target;
+                    v!(5) = Vec3::ZERO;
+                }
+                let (x, vel) = loco::spring_damper_v(v!(4), v!(5), target, f!(1), cx.dt);
+                v!(4) = x;
+                v!(5) = vel;
+                v!(2) = x;
+            }
+            Op::MovementAngleOffset => {
+                f!(8) = loco::get_movement_angle_offset(
+                    v!(0),
+                    f!(1),
+                    f!(2),
+                    cx.dt,
+                    f!(3),
+                    f!(4),
+                    f!(5),
+                    f!(6),
+                    f!(7),
+                );
+            }
+            Op::PerFootRotationFactor => {
+                f!(3) = loco::per_foot_rotation_factor(f!(0), f!(1), f!(2))
+            }
+            Op::LimitRotationAroundZ => q!(3) = loco::limit_rotation_around_z(q!(0), f!(1), f!(2)),
+            Op::FootAvoidance => v!(5) = loco::foot_avoidance(v!(0), v!(1), f!(2), b!(3), f!(4)),
+            Op::KneeVector => v!(5) = loco::knee_vector(q!(0), q!(1), v!(2), f!(3), f!(4)),
+            Op::ArmSwingRotation => {
+                f!(13) = loco::arm_swing_pitch(
+                    f!(0),
+                    v!(1),
+                    q!(2),
+                    f!(3),
+                    f!(4),
+                    f!(5),
+                    f!(6),
+                    f!(7),
+                    f!(8),
+                    f!(9),
+                    f!(10),
+                    f!(11),
+                    f!(12),
+                );
+            }
+            Op::ClavicleOffset => f!(4) = loco::clavicle_offset(f!(0), f!(1), f!(2), f!(3)),
+            Op::PelvisLean => {
+                let (pitch, shift) = loco::pelvis_lean(v!(0), f!(1), f!(2), f!(3));
+                f!(4) = pitch;
+                f!(5) = shift;
+            }
+            Op::PelvisSideLean => f!(3) = loco::pelvis_side_lean(f!(0), f!(1), f!(2)),
+            Op::FootPivots => {
+                let (ball, tip, heel) = loco::foot_pivots(v!(0), v!(1), f!(2), f!(3), f!(4), f!(5));
+                v!(6) = ball;
+                v!(7) = tip;
+                v!(8) = heel;
+            }
+            Op::CycleStep => {
+                let (master, per_foot) = loco::cycle_step(f!(0), cx.dt, f!(1), f!(2), b!(3));
+                f!(4) = master;
+                f!(5) = per_foot;
+            }
+            Op::FootOffsetFromTrace => f!(3) = loco::foot_offset_from_trace(b!(0), f!(1), f!(2)),
+            Op::RotationFromNormal => {
+                let n = v!(0);
+                let (pitch, roll) = loco::rotation_from_normal(n);
+                f!(1) = pitch;
+                f!(2) = roll;
+                q!(3) = loco::rotation_from_normal_quat(n);
             }
 
             Op::ArrayAt(e) => {
