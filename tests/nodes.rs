@@ -649,6 +649,60 @@ fn locomotion_units() {
 }
 
 #[test]
+fn two_bone_ik_on_the_mannequins_left_leg() {
+    // Lift the left foot 20 cm straight up; the knee must bend forward (+Y, the pole) with
+    // both bone lengths kept. Expected knee from the law of cosines on the rest lengths:
+    // along the hip→target line a = (l1² − l2² + d²)/(2d), forward h = √(l1² − a²).
+    let text = "Graph(version: 1, name: \"ik\", \
+        variables: { \"Knee\": (type: Vec3), \"Foot\": (type: Vec3), \"Reached\": (type: Bool) }, \
+        nodes: { \
+            \"rest\": GetTransform(bone: bone(\"foot_l\"), initial: true), \
+            \"parts\": BreakTransform(value: \"rest\"), \
+            \"up\": Add(a: \"parts.translation\", b: (0.0, 0.0, 20.0)), \
+            \"target\": MakeTransform(translation: \"up\", rotation: \"parts.rotation\"), \
+            \"knee\": GetTransform(bone: bone(\"calf_l\")), \"knee_p\": BreakTransform(value: \"knee\"), \
+            \"foot\": GetTransform(bone: bone(\"foot_l\")), \"foot_p\": BreakTransform(value: \"foot\"), \
+        }, \
+        events: { forward: [ \
+            TwoBoneIK(id: \"ik\", bone_a: bone(\"thigh_l\"), bone_b: bone(\"calf_l\"), effector: bone(\"foot_l\"), \
+                      target: \"target\", primary_axis: (-1.0, 0.0, 0.0), secondary_axis: (0.0, 1.0, 0.0), pole: (0.0, 1.0, 0.0)), \
+            Set(\"Knee\", \"knee_p.translation\"), Set(\"Foot\", \"foot_p.translation\"), Set(\"Reached\", \"ik.reached\"), \
+        ] })";
+    let program = Arc::new(
+        strider_compiler::compile_str(Path::new("ik.ron"), text)
+            .unwrap_or_else(|d| panic!("{d:?}")),
+    );
+    let s = skeleton();
+    let mut i = Instance::new(program.clone(), s.clone()).unwrap();
+    i.run_forward(&FrameInput::default(), &EmptyWorld, false);
+    let get = |n: &str| i.variable(program.variable_id(n).unwrap());
+    let p = |n: &str| s.rest_global(s.find(n).unwrap()).translation;
+    let (hip, knee0, ankle0) = (p("thigh_l"), p("calf_l"), p("foot_l"));
+    let (l1, l2) = (hip.distance(knee0), knee0.distance(ankle0));
+    let target = ankle0 + Vec3::new(0.0, 0.0, 20.0);
+    let d = hip.distance(target);
+    let down = (target - hip) / d;
+    let a = (l1 * l1 - l2 * l2 + d * d) / (2.0 * d);
+    let h = (l1 * l1 - a * a).sqrt();
+    // Forward, made perpendicular to the hip→target line.
+    let forward = (Vec3::Y - down * Vec3::Y.dot(down)).normalize();
+    let expected_knee = hip + down * a + forward * h;
+    assert_eq!(get("Reached"), Value::Bool(true));
+    let Value::Vec3(foot) = get("Foot") else {
+        panic!()
+    };
+    let Value::Vec3(knee) = get("Knee") else {
+        panic!()
+    };
+    close_v(foot, target);
+    assert!(
+        (knee - expected_knee).length() < 1e-3,
+        "{knee} vs {expected_knee}"
+    );
+    assert!((knee.distance(hip) - l1).abs() < 1e-3 && (knee.distance(foot) - l2).abs() < 1e-3);
+}
+
+#[test]
 fn hierarchy_and_host() {
     // The mannequin's pelvis rests at z = 95 (skeleton file).
     close_v(

@@ -234,6 +234,8 @@ pub enum Op {
     GetParent,
     /// Descendants whose name matches.
     FindBones,
+    /// Two-bone IK on a chain.
+    TwoBoneIK,
     /// Seconds since the last frame.
     DeltaTime,
     /// Component-to-world transform of this frame.

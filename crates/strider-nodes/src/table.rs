@@ -1191,6 +1191,44 @@ fn build() -> Vec<NodeSpec> {
             )],
         )],
     );
+    b.node(
+        "TwoBoneIK",
+        Effect::Mutating,
+        "RigVM's Basic IK on the chain `bone_a` → `bone_b` → `effector` (e.g. thigh → calf → \
+         foot): rotates A and B (global, children follow) so the effector reaches `target`, \
+         bending towards the pole. `primary_axis` is the local axis of A and B that points \
+         down the chain ((−1, 0, 0) for the mannequin's left limbs, (1, 0, 0) for the right), \
+         `secondary_axis` the local axis turned towards the pole ((0, 1, 0) left, (0, −1, 0) \
+         right). Bone lengths come from the current pose. A target out of reach straightens \
+         the chain towards it (no NaN); a target at the root keeps the current direction; a \
+         pole along the chain falls back to the current knee offset, then to A's secondary \
+         axis. With `stretch` the bones lengthen linearly from `stretch_start`·reach up to \
+         `stretch_max` (Unreal's ramp). A missing bone or a NaN target changes nothing \
+         (`reached` false, `distance` infinite).",
+        r#"TwoBoneIK(bone_a: bone("thigh_l"), bone_b: bone("calf_l"), effector: bone("foot_l"), target: "foot_target", primary_axis: (-1.0, 0.0, 0.0), pole: "knee_pole"),"#,
+        vec![ov(
+            Op::TwoBoneIK,
+            vec![
+                input("bone_a", BONE, "Chain root (thigh, upper arm)."),
+                input("bone_b", BONE, "Middle joint (calf, forearm)."),
+                input("effector", BONE, "End of the chain (foot, hand)."),
+                input("target", T, "Where the effector should be, rig space."),
+                opt("primary_axis", Value::Vec3(Vec3::X), "Local axis of A and B along the chain."),
+                opt("secondary_axis", Value::Vec3(Vec3::Y), "Local axis of A and B towards the pole."),
+                opt("pole", Value::Vec3(Vec3::Y), "Pole direction (rig space) or location (rig space, cm)."),
+                choice("pole_kind", &["Direction", "Location"], 0, "How to read `pole`."),
+                opt("weight", Value::Float(1.0), "Blend from the current pose, 0..1."),
+                opt("stretch", Value::Bool(false), "Allow the bones to lengthen."),
+                opt("stretch_start", Value::Float(0.75), "Reach ratio where stretching starts."),
+                opt("stretch_max", Value::Float(1.25), "Largest length scale."),
+                opt("set_effector_rotation", Value::Bool(true), "Give the effector the target's rotation."),
+            ],
+            vec![
+                output("reached", B, "The effector is within 1e-3 cm of the target."),
+                output("distance", F, "Effector to target after the solve, cm."),
+            ],
+        )],
+    );
     b.pure(
         "DeltaTime",
         "Seconds since the previous frame, as given by the host (sanitised: never negative \

@@ -10,6 +10,7 @@ use strider_core::{BoneIndex, DebugColor, DebugDraw, DebugPrimitive, Pose, Trans
 use strider_nodes::kernels as k;
 use strider_nodes::kernels::locomotion as loco;
 use strider_nodes::kernels::spline::{self, SplineMode};
+use strider_nodes::kernels::two_bone_ik::{Pole, TwoBoneIk};
 use strider_nodes::{Elem, Op, ValueType};
 
 /// What one run of an event works on.
@@ -368,6 +369,35 @@ pub(crate) fn run(program: &Program, entry: u32, cx: &mut Ctx<'_>) {
                     }
                     None => out.clear(),
                 }
+            }
+            Op::TwoBoneIK => {
+                let chain = (
+                    bone(cx.pose, s.bones[at!(0)]),
+                    bone(cx.pose, s.bones[at!(1)]),
+                    bone(cx.pose, s.bones[at!(2)]),
+                );
+                let (reached, distance) = match chain {
+                    (Some(a), Some(b), Some(c)) => {
+                        let pole = if i!(7) == 1 {
+                            Pole::Location(v!(6))
+                        } else {
+                            Pole::Direction(v!(6))
+                        };
+                        let ik = TwoBoneIk {
+                            primary_axis: v!(4),
+                            secondary_axis: v!(5),
+                            pole,
+                            weight: f!(8),
+                            stretch: b!(9).then_some((f!(10), f!(11))),
+                            set_effector_rotation: b!(12),
+                        };
+                        let report = ik.solve(cx.pose, a, b, c, t!(3));
+                        (report.reached, report.distance_to_target)
+                    }
+                    _ => (false, f32::INFINITY),
+                };
+                b!(13) = reached;
+                f!(14) = distance;
             }
             Op::DeltaTime => f!(0) = cx.dt,
             Op::WorldTransform => t!(0) = cx.to_world,
