@@ -1266,19 +1266,19 @@ impl<'a, 'c> Scope<'a, 'c> {
                 let pin = &o.inputs[pi];
                 if let Some((p, Some(Err(lit)))) =
                     given.iter().find(|(p, _)| p.name.name == pin.name)
+                    && literal::natural_type(lit) == Some(pin.ty)
+                    && !msg.is_empty()
                 {
-                    if literal::natural_type(lit) == Some(pin.ty) && !msg.is_empty() {
-                        diags
-                            .error(
-                                self.sources(),
-                                p.value.loc,
-                                format!("invalid value for pin `{}` of {kind}: {msg}", pin.name),
-                            )
-                            .node(label.to_string())
-                            .pin(pin.name)
-                            .emit();
-                        return;
-                    }
+                    diags
+                        .error(
+                            self.sources(),
+                            p.value.loc,
+                            format!("invalid value for pin `{}` of {kind}: {msg}", pin.name),
+                        )
+                        .node(label.to_string())
+                        .pin(pin.name)
+                        .emit();
+                    return;
                 }
             }
         }
