@@ -58,6 +58,8 @@ pub(crate) struct CNode {
 #[derive(Clone, Debug)]
 pub(crate) struct CLoop {
     pub element: ValueType,
+    /// A counted `For` loop (else a `ForEach`).
+    pub is_for: bool,
 }
 
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -718,6 +720,7 @@ impl<'a, 'c> Scope<'a, 'c> {
             .iter()
             .map(|l| CLoop {
                 element: l.element.unwrap_or(ValueType::Int),
+                is_for: l.is_for,
             })
             .collect();
         if self.function.is_some() {

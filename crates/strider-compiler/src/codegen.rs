@@ -15,6 +15,9 @@ struct LoopSlots {
     element: u32,
     index: u32,
     count: u32,
+    /// The loop's own copy of what it iterates (a ForEach's array, a For's count), taken
+    /// once before the loop so the body cannot change it.
+    snapshot: u32,
 }
 
 struct Frame {
@@ -118,6 +121,10 @@ impl Gen<'_> {
                 element: self.pb.alloc(l.element),
                 index: self.pb.alloc(ValueType::Int),
                 count: self.pb.alloc(ValueType::Int),
+                snapshot: match (l.is_for, l.element.elem()) {
+                    (false, Some(e)) => self.pb.alloc(ValueType::Array(e)),
+                    _ => self.pb.alloc(ValueType::Int),
+                },
             })
             .collect();
         let id = self.frames.len();
@@ -317,13 +324,14 @@ impl Gen<'_> {
                 self.pb.patch(j, 0, end);
             }
             CStep::ForEach { items, lp, body } => {
-                let arr = self.pull(frame, std::slice::from_ref(items), &mut done)[0];
+                let source = self.pull(frame, std::slice::from_ref(items), &mut done)[0];
                 let elem = items.ty.elem().unwrap_or(Elem::Int);
                 let zero = self.constant(&Value::Int(0), "");
-                let (counter, element, index, count) = {
+                let (counter, element, index, count, arr) = {
                     let l = &self.frames[frame].loops[*lp];
-                    (l.counter, l.element, l.index, l.count)
+                    (l.counter, l.element, l.index, l.count, l.snapshot)
                 };
+                self.pb.emit(Op::Copy(items.ty), &[source, arr]);
                 self.pb.emit(Op::Copy(ValueType::Int), &[zero, counter]);
                 let head = self.pb.here();
                 let next = self.pb.emit(
@@ -336,12 +344,13 @@ impl Gen<'_> {
                 self.pb.patch(next, 5, exit);
             }
             CStep::For { count, lp, body } => {
-                let n = self.pull(frame, std::slice::from_ref(count), &mut done)[0];
+                let source = self.pull(frame, std::slice::from_ref(count), &mut done)[0];
                 let zero = self.constant(&Value::Int(0), "");
-                let (counter, index) = {
+                let (counter, index, n) = {
                     let l = &self.frames[frame].loops[*lp];
-                    (l.counter, l.index)
+                    (l.counter, l.index, l.snapshot)
                 };
+                self.pb.emit(Op::Copy(ValueType::Int), &[source, n]);
                 self.pb.emit(Op::Copy(ValueType::Int), &[zero, counter]);
                 let head = self.pb.here();
                 let next = self.pb.emit(Op::ForNext, &[counter, n, index, 0]);

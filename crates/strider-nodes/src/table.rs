@@ -1382,12 +1382,14 @@ fn build() -> Vec<NodeSpec> {
         "A critically damped spring following `target`, exact for any dt (closed form): \
          `half_life` seconds halve the distance to a still target, with no overshoot. \
          Stateful: each node (per call site) keeps its own position and velocity, starting at \
-         rest on the first target it sees.",
+         rest on the first target it sees, and advances once per frame — reading it from \
+         several steps (or loop iterations) in one frame gives the same value. For one spring \
+         per array element, keep positions and velocities in array variables instead.",
         r#""pelvis_z": SpringDamper(target: "wanted_z", half_life: 0.15),"#,
         [(F, Op::SpringF), (V, Op::SpringV)]
             .iter()
             .map(|&(ty, op)| Overload {
-                state: vec![B, ty, ty],
+                state: vec![I, ty, ty],
                 ..ov(
                     op,
                     vec![

@@ -21,6 +21,9 @@ pub(crate) struct Ctx<'a> {
     pub world: &'a dyn WorldQuery,
     pub dt: f32,
     pub to_world: Transform,
+    /// Number of this run (construction or frame), never 0: stateful nodes advance once per
+    /// run and remember the run they last advanced in.
+    pub run: i32,
 }
 
 /// A bone slot's value as an index into the pose, if it names a bone.
@@ -446,29 +449,34 @@ pub(crate) fn run(program: &Program, entry: u32, cx: &mut Ctx<'_>) {
             Op::FInterpToV => v!(3) = loco::vinterp_to(v!(0), v!(1), cx.dt, f!(2)),
             Op::FInterpToQ => q!(3) = loco::qinterp_to(q!(0), q!(1), cx.dt, f!(2)),
             Op::SpringF => {
-                // State: [started, value, velocity]. The first run starts at rest on the target.
-                let target = f!(0);
-                if !b!(3) {
-                    b!(3) = true;
-                    f!(4) = target;
-                    f!(5) = 0.0;
+                // State: [last run, value, velocity]. Advances once per run, however many
+                // steps read it; starts at rest on the first target it sees.
+                if i!(3) != cx.run {
+                    let target = f!(0);
+                    if i!(3) == 0 {
+                        f!(4) = target;
+                        f!(5) = 0.0;
+                    }
+                    i!(3) = cx.run;
+                    let (x, vel) = loco::spring_damper(f!(4), f!(5), target, f!(1), cx.dt);
+                    f!(4) = x;
+                    f!(5) = vel;
                 }
-                let (x, vel) = loco::spring_damper(f!(4), f!(5), target, f!(1), cx.dt);
-                f!(4) = x;
-                f!(5) = vel;
-                f!(2) = x;
+                f!(2) = f!(4);
             }
             Op::SpringV => {
-                let target = v!(0);
-                if !b!(3) {
-                    b!(3) = true;
-                    v!(4) = target;
-                    v!(5) = Vec3::ZERO;
+                if i!(3) != cx.run {
+                    let target = v!(0);
+                    if i!(3) == 0 {
+                        v!(4) = target;
+                        v!(5) = Vec3::ZERO;
+                    }
+                    i!(3) = cx.run;
+                    let (x, vel) = loco::spring_damper_v(v!(4), v!(5), target, f!(1), cx.dt);
+                    v!(4) = x;
+                    v!(5) = vel;
                 }
-                let (x, vel) = loco::spring_damper_v(v!(4), v!(5), target, f!(1), cx.dt);
-                v!(4) = x;
-                v!(5) = vel;
-                v!(2) = x;
+                v!(2) = v!(4);
             }
             Op::MovementAngleOffset => {
                 f!(8) = loco::get_movement_angle_offset(

@@ -119,6 +119,8 @@ pub struct Instance {
     pose: Pose,
     debug: DebugDraw,
     to_world: Transform,
+    /// Runs so far (construction and frames); stateful nodes use it to advance once per run.
+    runs: i32,
 }
 
 impl Instance {
@@ -136,6 +138,7 @@ impl Instance {
             pose: Pose::new(skeleton),
             debug: DebugDraw::new(false),
             to_world: Transform::IDENTITY,
+            runs: 0,
         };
         instance.resolve_bones()?;
         instance.run_construction(&EmptyWorld);
@@ -159,6 +162,7 @@ impl Instance {
             pose: Pose::new(skeleton),
             debug: DebugDraw::new(false),
             to_world: self.to_world,
+            runs: 0,
         };
         next.resolve_bones()?;
         for v in self
@@ -228,6 +232,7 @@ impl Instance {
             world,
             dt: 0.0,
             to_world: self.to_world,
+            run: next_run(&mut self.runs),
         };
         exec::run(&self.program, entry, &mut cx);
     }
@@ -262,6 +267,7 @@ impl Instance {
             world,
             dt,
             to_world: self.to_world,
+            run: next_run(&mut self.runs),
         };
         exec::run(&self.program, entry, &mut cx);
     }
@@ -368,6 +374,12 @@ impl Instance {
             self.slots.floats[info.slot as usize] = value;
         }
     }
+}
+
+/// The next run number: counts up, wrapping past `i32::MAX` to 1 (0 means "never ran").
+fn next_run(runs: &mut i32) -> i32 {
+    *runs = if *runs == i32::MAX { 1 } else { *runs + 1 };
+    *runs
 }
 
 fn copy_slot(from: &Slots, to: &mut Slots, ty: ValueType, slot: u32) {

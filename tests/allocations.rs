@@ -1,0 +1,240 @@
+//! `Instance::run_forward` performs no heap allocation once warmed up (docs/embedding.md:
+//! "Once arrays and the debug buffer have reached their working size (after the first
+//! frames), run_forward performs no heap allocation").
+//!
+//! A counting global allocator wraps the system allocator. It counts only while the
+//! current thread has switched counting on, so allocations the test harness makes on other
+//! threads (output capture, other tests) are not counted.
+
+// The counting allocator below is the only unsafe code in this file: implementing
+// `GlobalAlloc` is an `unsafe impl`, and forwarding to `System` calls its unsafe methods
+// with the caller's own (already validated) layout and pointer.
+#![allow(unsafe_code)]
+
+use std::alloc::{GlobalAlloc, Layout, System};
+use std::cell::Cell;
+use std::path::Path;
+use std::sync::atomic::{AtomicUsize, Ordering};
+use std::sync::{Arc, Mutex};
+use strider_core::{EmptyWorld, Transform, Vec3};
+use strider_nodes::Value;
+use strider_vm::{FrameInput, InputPose, Instance, Program};
+
+struct CountingAllocator;
+
+static ALLOCATIONS: AtomicUsize = AtomicUsize::new(0);
+
+thread_local! {
+    // `const` initialisation and no destructor: reading it never allocates.
+    static COUNTING: Cell<bool> = const { Cell::new(false) };
+}
+
+fn counting() -> bool {
+    COUNTING.try_with(Cell::get).unwrap_or(false)
+}
+
+unsafe impl GlobalAlloc for CountingAllocator {
+    unsafe fn alloc(&self, layout: Layout) -> *mut u8 {
+        if counting() {
+            ALLOCATIONS.fetch_add(1, Ordering::Relaxed);
+        }
+        // SAFETY: forwarded unchanged from the caller, who upholds `alloc`'s contract.
+        unsafe { System.alloc(layout) }
+    }
+
+    unsafe fn alloc_zeroed(&self, layout: Layout) -> *mut u8 {
+        if counting() {
+            ALLOCATIONS.fetch_add(1, Ordering::Relaxed);
+        }
+        // SAFETY: as above.
+        unsafe { System.alloc_zeroed(layout) }
+    }
+
+    unsafe fn realloc(&self, ptr: *mut u8, layout: Layout, new_size: usize) -> *mut u8 {
+        if counting() {
+            ALLOCATIONS.fetch_add(1, Ordering::Relaxed);
+        }
+        // SAFETY: as above; `ptr` was allocated by this allocator, i.e. by `System`.
+        unsafe { System.realloc(ptr, layout, new_size) }
+    }
+
+    unsafe fn dealloc(&self, ptr: *mut u8, layout: Layout) {
+        // SAFETY: as above.
+        unsafe { System.dealloc(ptr, layout) }
+    }
+}
+
+#[global_allocator]
+static GLOBAL: CountingAllocator = CountingAllocator;
+
+/// Tests in this file measure one at a time.
+static SERIAL: Mutex<()> = Mutex::new(());
+
+/// Heap allocations made by the current thread while running `f`.
+fn allocations_in(f: impl FnOnce()) -> usize {
+    let before = ALLOCATIONS.load(Ordering::SeqCst);
+    COUNTING.with(|c| c.set(true));
+    f();
+    COUNTING.with(|c| c.set(false));
+    ALLOCATIONS.load(Ordering::SeqCst) - before
+}
+
+fn compile_file(path: &str) -> Arc<Program> {
+    match strider_compiler::compile_file(Path::new(path)) {
+        Ok(p) => Arc::new(p),
+        Err(d) => panic!(
+            "{path}:\n{}",
+            d.iter()
+                .map(ToString::to_string)
+                .collect::<Vec<_>>()
+                .join("\n")
+        ),
+    }
+}
+
+fn instance(path: &str) -> Instance {
+    let skeleton = strider_graph::load_skeleton(Path::new("graphs/skeletons/mannequin.ron"))
+        .unwrap_or_else(|_| panic!("mannequin loads"))
+        .skeleton;
+    Instance::new(compile_file(path), skeleton).expect("instantiates")
+}
+
+/// Runs 10 warm-up frames, then counts the allocations of 100 more.
+fn steady_state_allocations(inst: &mut Instance, debug: bool) -> usize {
+    let input = FrameInput {
+        dt: 1.0 / 60.0,
+        ..Default::default()
+    };
+    for _ in 0..10 {
+        inst.run_forward(&input, &EmptyWorld, debug);
+    }
+    allocations_in(|| {
+        for _ in 0..100 {
+            inst.run_forward(&input, &EmptyWorld, debug);
+        }
+    })
+}
+
+#[test]
+fn the_counter_sees_allocations_on_this_thread() {
+    // The measuring harness itself must be able to fail: a Vec and a String are counted.
+    let _guard = SERIAL.lock().unwrap_or_else(|e| e.into_inner());
+    let n = allocations_in(|| {
+        let v: Vec<u64> = std::hint::black_box(Vec::with_capacity(16));
+        let s = std::hint::black_box(String::from("allocates"));
+        drop((v, s));
+    });
+    assert_eq!(n, 2);
+    // And an array growing past its capacity inside a frame is seen too: a fresh instance
+    // of the array graph, measured from its very first frame, allocates.
+    let mut inst = instance("tests/graphs/arrays_every_frame.ron");
+    let input = FrameInput {
+        dt: 1.0 / 60.0,
+        ..Default::default()
+    };
+    let first = allocations_in(|| inst.run_forward(&input, &EmptyWorld, true));
+    assert!(
+        first > 0,
+        "the first frame grows arrays and the debug buffer"
+    );
+}
+
+#[test]
+fn pelvis_bob_frames_do_not_allocate() {
+    let _guard = SERIAL.lock().unwrap_or_else(|e| e.into_inner());
+    for debug in [false, true] {
+        let mut inst = instance("graphs/pelvis_bob.ron");
+        let n = steady_state_allocations(&mut inst, debug);
+        assert_eq!(
+            n, 0,
+            "pelvis_bob, debug {debug}: {n} allocations in 100 frames"
+        );
+        // It did run: the pelvis is off its rest height at t = 110/60 s
+        // (95 + 5·sin(660°) = 95 − 4.33).
+        let pelvis = inst.pose().skeleton().find("pelvis").unwrap();
+        let z = inst.pose_mut().global(pelvis).translation.z;
+        assert!((z - 90.669873).abs() < 1e-2, "pelvis z {z}");
+    }
+}
+
+#[test]
+fn pelvis_bob_does_not_allocate_when_debug_is_toggled_or_tunables_change() {
+    let _guard = SERIAL.lock().unwrap_or_else(|e| e.into_inner());
+    let mut inst = instance("graphs/pelvis_bob.ron");
+    let amplitude = inst.program().variable_id("Amplitude").unwrap();
+    let input = FrameInput {
+        dt: 1.0 / 60.0,
+        ..Default::default()
+    };
+    for k in 0..10 {
+        inst.run_forward(&input, &EmptyWorld, k % 2 == 0);
+    }
+    let n = allocations_in(|| {
+        for k in 0..100 {
+            inst.set_float(amplitude, (k % 20) as f32);
+            inst.run_forward(&input, &EmptyWorld, k % 2 == 0);
+        }
+    });
+    assert_eq!(n, 0, "{n} allocations in 100 frames");
+}
+
+#[test]
+fn array_heavy_frames_do_not_allocate_after_warm_up() {
+    let _guard = SERIAL.lock().unwrap_or_else(|e| e.into_inner());
+    for debug in [false, true] {
+        let mut inst = instance("tests/graphs/arrays_every_frame.ron");
+        // The array size cycles through 3..=9 (Frame mod 7 + 3); 10 warm-up frames reach 9.
+        let n = steady_state_allocations(&mut inst, debug);
+        assert_eq!(
+            n, 0,
+            "arrays_every_frame, debug {debug}: {n} allocations in 100 frames"
+        );
+        // It did run: after 110 frames Frame = 110, size = 110 mod 7 + 3 = 5 + 3 = 8, so the
+        // points are (i, 2, i/2) for i = 0..7 and Longest = |(7, 2, 3.5)| = √(49 + 4 + 12.25)
+        // = √65.25 = 8.0777472.
+        let id = inst.program().variable_id("Frame").unwrap();
+        assert_eq!(inst.variable(id), Value::Int(110));
+        let id = inst.program().variable_id("Longest").unwrap();
+        let Value::Float(longest) = inst.variable(id) else {
+            panic!()
+        };
+        assert!((longest - 8.077_747).abs() < 1e-4, "Longest {longest}");
+    }
+}
+
+#[test]
+fn feet_finder_and_other_input_poses_do_not_allocate() {
+    let _guard = SERIAL.lock().unwrap_or_else(|e| e.into_inner());
+    let mut inst = instance("graphs/examples/feet_finder.ron");
+    assert_eq!(
+        steady_state_allocations(&mut inst, true),
+        0,
+        "feet_finder, debug on"
+    );
+
+    // Previous and Locals input poses, and a component-to-world transform with NaN.
+    let mut inst = instance("graphs/pelvis_bob.ron");
+    let locals = inst.pose().locals().to_vec();
+    let bad_world = Transform::from_translation(Vec3::new(f32::NAN, 0.0, 0.0));
+    let inputs = [
+        FrameInput {
+            dt: 0.02,
+            pose: InputPose::Previous,
+            ..Default::default()
+        },
+        FrameInput {
+            dt: f32::NAN,
+            component_to_world: bad_world,
+            pose: InputPose::Locals(&locals),
+        },
+    ];
+    for k in 0..10 {
+        inst.run_forward(&inputs[k % 2], &EmptyWorld, true);
+    }
+    let n = allocations_in(|| {
+        for k in 0..100 {
+            inst.run_forward(&inputs[k % 2], &EmptyWorld, true);
+        }
+    });
+    assert_eq!(n, 0, "{n} allocations in 100 frames");
+}
