@@ -265,8 +265,13 @@ fn link_to_unknown_node() {
         "tests/malformed/link_unknown_node.ron",
         &[
             at(11, 22, "link to unknown node `Time`")
+                .node("t")
+                .pin("a")
                 .hint("`Time` is a variable: write var(\"Time\")"),
-            at(11, 33, "link to unknown node `dtt`").hint("did you mean `dt`?"),
+            at(11, 33, "link to unknown node `dtt`")
+                .node("t")
+                .pin("b")
+                .hint("did you mean `dt`?"),
         ],
     );
 }
@@ -327,7 +332,10 @@ fn unknown_variable_in_var_and_in_set() {
     check_graph(
         "tests/malformed/unknown_variable.ron",
         &[
-            at(11, 22, "unknown variable `Tiem`").hint("did you mean `Time`?"),
+            at(11, 22, "unknown variable `Tiem`")
+                .node("t")
+                .pin("a")
+                .hint("did you mean `Time`?"),
             at(14, 24, "unknown variable `Tmie`").hint("did you mean `Time`?"),
         ],
     );
@@ -621,7 +629,10 @@ fn skeleton_file_errors_are_all_reported() {
 
 fn many_errors_expected() -> Vec<Expect> {
     vec![
-        at(12, 26, "unknown variable `Tiem`").hint("did you mean `Time`?"),
+        at(12, 26, "unknown variable `Tiem`")
+            .node("t")
+            .pin("a")
+            .hint("did you mean `Time`?"),
         at(13, 23, "unknown pin `valeu` on Sin")
             .node("wave")
             .pin("valeu")
@@ -649,7 +660,10 @@ fn many_errors_expected() -> Vec<Expect> {
         )
         .node("dt")
         .hint("remove the Run"),
-        at(21, 55, "link to unknown node `targte`").hint("did you mean `target`?"),
+        at(21, 55, "link to unknown node `targte`")
+            .node("SetTransform")
+            .pin("value")
+            .hint("did you mean `target`?"),
     ]
 }
 
@@ -726,8 +740,8 @@ fn diagnostic_display_is_path_line_col_error_message() {
         .collect();
     assert!(
         shown.contains(
-            &"tests/malformed/link_unknown_node.ron:11:33: error: link to unknown node `dtt`\n  \
-              hint: did you mean `dt`?"
+            &"tests/malformed/link_unknown_node.ron:11:33: error: link to unknown node `dtt` \
+              [node `t`, pin `b`]\n  hint: did you mean `dt`?"
                 .to_string()
         ),
         "{shown:#?}"

@@ -1027,7 +1027,9 @@ impl<'a, 'c> Scope<'a, 'c> {
         let mut given: Vec<(&PinArg, Option<Result<Arg, strider_graph::Literal>>)> = Vec::new();
         let mut failed_source = false;
         for p in &decl.pins {
+            let before = diags.len();
             let s = self.source(&p.value, diags);
+            diags.annotate_since(before, &label, &p.name.name);
             if s.is_none() {
                 failed_source = true;
             }

@@ -210,6 +210,17 @@ impl Diagnostics {
         }
     }
 
+    /// Names `node` and `pin` on the diagnostics recorded since the first `since` ones that
+    /// do not name any yet (a check that found a bad link inside a pin, say).
+    pub fn annotate_since(&mut self, since: usize, node: &str, pin: &str) {
+        for d in self.list.iter_mut().skip(since) {
+            if d.node.is_none() && d.pin.is_none() {
+                d.node = Some(node.to_string());
+                d.pin = Some(pin.to_string());
+            }
+        }
+    }
+
     /// Adds finished diagnostics.
     pub fn extend(&mut self, other: impl IntoIterator<Item = Diagnostic>) {
         self.list.extend(other);
