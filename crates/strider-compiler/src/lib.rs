@@ -1,7 +1,7 @@
 //! The compiler: checks a loaded graph document and turns it into an immutable
 //! [`Program`].
 //!
-//! Two passes. [`check`] resolves every name (nodes, pins, variables, functions, loop
+//! Two passes. The checker resolves every name (nodes, pins, variables, functions, loop
 //! names), picks each node's overload from its input types, finds data-flow cycles and
 //! recursion (petgraph), validates exec lists, and reports **all** problems as
 //! diagnostics. Only a graph without errors reaches `codegen`, which lays out typed slots

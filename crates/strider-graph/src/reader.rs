@@ -55,7 +55,7 @@ pub enum Value {
     /// `{ key: value, ... }` in source order; duplicate keys are kept (the caller reports them).
     Map(Vec<(Spanned<Value>, Spanned<Value>)>),
     /// `Name(a, b)` or `(a, b)`; name is None for an anonymous tuple. `Some(x)` is
-    /// Tuple(Some("Some"), [x]). `Name()` is Tuple(Some("Name"), []).
+    /// `Tuple(Some("Some"), [x])`. `Name()` is `Tuple(Some("Name"), [])`.
     Tuple(Option<Spanned<String>>, Vec<Spanned<Value>>),
     /// `Name(field: v, ...)` or `(field: v, ...)` in source order; duplicate fields kept.
     Struct(
