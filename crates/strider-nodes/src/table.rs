@@ -518,21 +518,27 @@ fn build() -> Vec<NodeSpec> {
         r#""phase": Fract(value: "advanced"),"#,
         unary(&[(F, Op::FractF)], None),
     );
-    for (name, op, doc) in [
-        ("Floor", Op::FloorF, "Largest whole number ≤ value."),
-        ("Ceil", Op::CeilF, "Smallest whole number ≥ value."),
+    for (name, op, doc, example) in [
+        (
+            "Floor",
+            Op::FloorF,
+            "Largest whole number ≤ value.",
+            r#""whole": Floor(value: "x"),"#,
+        ),
+        (
+            "Ceil",
+            Op::CeilF,
+            "Smallest whole number ≥ value.",
+            r#""whole": Ceil(value: "x"),"#,
+        ),
         (
             "Round",
             Op::RoundF,
             "Nearest whole number, halves away from zero.",
+            r#""whole": Round(value: "x"),"#,
         ),
     ] {
-        b.pure(
-            name,
-            doc,
-            r#""whole": Floor(value: "x"),"#,
-            unary(&[(F, op)], None),
-        );
+        b.pure(name, doc, example, unary(&[(F, op)], None));
     }
     b.pure(
         "ToInt",
@@ -586,15 +592,30 @@ fn build() -> Vec<NodeSpec> {
     );
 
     b.category = "Logic";
-    for (name, op, doc) in [
-        ("And", Op::And, "`a and b`."),
-        ("Or", Op::Or, "`a or b`."),
-        ("Xor", Op::Xor, "`a xor b`: true when exactly one is true."),
+    for (name, op, doc, example) in [
+        (
+            "And",
+            Op::And,
+            "`a and b`.",
+            r#""both": And(a: "planted", b: "moving"),"#,
+        ),
+        (
+            "Or",
+            Op::Or,
+            "`a or b`.",
+            r#""either": Or(a: "left_hit", b: "right_hit"),"#,
+        ),
+        (
+            "Xor",
+            Op::Xor,
+            "`a xor b`: true when exactly one is true.",
+            r#""one": Xor(a: "left_planted", b: "right_planted"),"#,
+        ),
     ] {
         b.pure(
             name,
             doc,
-            r#""both": And(a: "planted", b: "moving"),"#,
+            example,
             vec![ov(
                 op,
                 vec![
@@ -650,21 +671,40 @@ fn build() -> Vec<NodeSpec> {
             })
             .collect(),
     );
-    for (name, fop, iop, doc) in [
-        ("Less", Op::LessF, Op::LessI, "`a < b`."),
-        ("LessEqual", Op::LessEqualF, Op::LessEqualI, "`a <= b`."),
-        ("Greater", Op::GreaterF, Op::GreaterI, "`a > b`."),
+    for (name, fop, iop, doc, example) in [
+        (
+            "Less",
+            Op::LessF,
+            Op::LessI,
+            "`a < b`.",
+            r#""swinging": Less(a: "phase", b: var("SwingTimeAsAPercent")),"#,
+        ),
+        (
+            "LessEqual",
+            Op::LessEqualF,
+            Op::LessEqualI,
+            "`a <= b`.",
+            r#""low": LessEqual(a: "height", b: 1.5),"#,
+        ),
+        (
+            "Greater",
+            Op::GreaterF,
+            Op::GreaterI,
+            "`a > b`.",
+            r#""locked": Greater(a: "phase", b: var("SwingTimeAsAPercent")),"#,
+        ),
         (
             "GreaterEqual",
             Op::GreaterEqualF,
             Op::GreaterEqualI,
             "`a >= b`.",
+            r#""late": GreaterEqual(a: "half_phase", b: 0.4),"#,
         ),
     ] {
         b.pure(
             name,
             doc,
-            r#""swinging": Less(a: "phase", b: var("SwingTimeAsAPercent")),"#,
+            example,
             binary(&[(F, fop), (I, iop)], Some(B), "First operand."),
         );
     }
@@ -861,7 +901,7 @@ fn build() -> Vec<NodeSpec> {
         "EulerFromQuat",
         "Euler angles in degrees of a rotation (inverse of QuatFromEuler). The middle angle \
          is in [−90, 90], the others in (−180, 180].",
-        r#""angles": QuatToEuler(value: "rotation"),"#,
+        r#""angles": EulerFromQuat(value: "rotation"),"#,
         vec![ov(
             Op::EulerFromQuat,
             vec![
@@ -1213,8 +1253,16 @@ fn build() -> Vec<NodeSpec> {
                 input("bone_b", BONE, "Middle joint (calf, forearm)."),
                 input("effector", BONE, "End of the chain (foot, hand)."),
                 input("target", T, "Where the effector should be, rig space."),
-                opt("primary_axis", Value::Vec3(Vec3::X), "Local axis of A and B along the chain."),
-                opt("secondary_axis", Value::Vec3(Vec3::Y), "Local axis of A and B towards the pole."),
+                opt(
+                    "primary_axis",
+                    Value::Vec3(Vec3::NEG_X),
+                    "Local axis of A and B along the chain (default: the mannequin's left limbs; (1, 0, 0) on the right).",
+                ),
+                opt(
+                    "secondary_axis",
+                    Value::Vec3(Vec3::Y),
+                    "Local axis of A and B towards the pole (default: left limbs; (0, −1, 0) on the right).",
+                ),
                 opt("pole", Value::Vec3(Vec3::Y), "Pole direction (rig space) or location (rig space, cm)."),
                 choice("pole_kind", &["Direction", "Location"], 0, "How to read `pole`."),
                 opt("weight", Value::Float(1.0), "Blend from the current pose, 0..1."),
@@ -1379,8 +1427,10 @@ fn build() -> Vec<NodeSpec> {
     );
     b.pure(
         "SpringDamper",
-        "A critically damped spring following `target`, exact for any dt (closed form): \
-         `half_life` seconds halve the distance to a still target, with no overshoot. \
+        "A critically damped spring following `target`, exact for any dt (closed form), \
+         with no overshoot. Its damping rate is y = 2·ln 2 / `half_life`: released at rest, \
+         the gap to a still target shrinks as (1 + y·t)·e^(−y·t) — 60 % left after one \
+         half_life, 8 % after three. \
          Stateful: each node (per call site) keeps its own position and velocity, starting at \
          rest on the first target it sees, and advances once per frame — reading it from \
          several steps (or loop iterations) in one frame gives the same value. For one spring \
@@ -1492,7 +1542,9 @@ fn build() -> Vec<NodeSpec> {
         "CalculateKneeVector",
         "The knee pole for leg IK: `slerp(platform_rotation, movement_rotation, blend) · \
          (default_knee · scale)`, so knees follow the movement direction a little and crouch \
-         poses keep knees apart. A zero default knee gives zero.",
+         poses keep knees apart. `platform_rotation` is the foot platform's rotation in rig \
+         axes (identity on flat ground facing forward) — not a foot bone's rotation, whose \
+         axes follow the bone. A zero default knee gives zero.",
         r#""pole": CalculateKneeVector(platform_rotation: "platform.rotation", movement_rotation: "mao_rot", default_knee: "knee"),"#,
         vec![ov(
             Op::KneeVector,
@@ -1512,7 +1564,10 @@ fn build() -> Vec<NodeSpec> {
          GetArmMotionEffectorRotationAmount): `sin(360°·fract(cycle + phase_offset)) · \
          clamp(v̂·(quat_scale(movement, direction_scale)·Y), direction_min, direction_max) · \
          remap(|v|, 0..speed_max → 0..swing_max) · clamp(|v·(0, lateral_scale, 0)|, lateral_min, \
-         lateral_max) + remap(|v|, 0..speed_max → 0..base_max)`. Walking backwards swings less.",
+         lateral_max) + remap(|v|, 0..speed_max → 0..base_max)`. Walking backwards swings less. \
+         The lateral term multiplies the velocity in cm/s, as the seed does, so it is 1 for any \
+         forward speed above lateral_max / lateral_scale and only bites when moving almost \
+         purely sideways.",
         r#""swing": ArmSwingRotation(per_foot_cycle: "cycle", velocity: var("SlowVelocity"), movement_rotation: "mao_rot"),"#,
         vec![ov(
             Op::ArmSwingRotation,
@@ -1582,14 +1637,25 @@ fn build() -> Vec<NodeSpec> {
     );
     b.pure(
         "PelvisSideLean",
-        "Pelvis roll about Y from the feet's height difference: `remap(height_difference, −range..range → −roll_max..roll_max)` degrees.",
+        "Pelvis roll about Y from the feet's height difference: `remap(height_difference, \
+         −range..range → −roll_max..roll_max)` degrees. Positive roll (about +Y) lowers the \
+         left hip: with left − right as the difference, the hip drops over the lower foot's \
+         opposite side; swap the difference (or negate `roll_max`) for the other sense.",
         r#""roll": PelvisSideLean(height_difference: "dz"),"#,
         vec![ov(
             Op::PelvisSideLean,
             vec![
                 input("height_difference", F, "Left foot z − right foot z, cm."),
-                opt("range", Value::Float(60.0), "Difference of the full roll, cm."),
-                opt("roll_max", Value::Float(15.0), "Roll at the full difference, degrees."),
+                opt(
+                    "range",
+                    Value::Float(60.0),
+                    "Difference of the full roll, cm.",
+                ),
+                opt(
+                    "roll_max",
+                    Value::Float(15.0),
+                    "Roll at the full difference, degrees.",
+                ),
             ],
             vec![output("result", F, "Roll about Y, degrees.")],
         )],
@@ -1634,7 +1700,10 @@ fn build() -> Vec<NodeSpec> {
         "CycleStep",
         "Advances the master cycle phase: `master = fract(master + dt / cycle_length)` while \
          `moving` (a cycle length ≤ 0 or NaN, or dt = 0, does not advance), and a foot's phase \
-         `fract(master + foot_offset)`.",
+         `fract(next + foot_offset)`. Like every pure node it is evaluated again by each step \
+         that reads it: once `Set(\"Master\", \"cycle.next\")` has run, a later step reading \
+         `cycle.per_foot` would advance from the new master again — read the foot phases in \
+         the same step, or compute them from the variable with Fract(Add(...)).",
         r#""cycle": CycleStep(master: var("MasterCyclePercent"), cycle_length: var("CycleLength"), moving: "moving"),"#,
         vec![ov(
             Op::CycleStep,
@@ -1665,8 +1734,10 @@ fn build() -> Vec<NodeSpec> {
     b.pure(
         "RotationFromNormal",
         "Foot tilt from a ground normal n (seed 003): `pitch = −atan2(n.x, n.z)` (a tilt about \
-         +Y in rig axes) and `roll = atan2(n.y, n.z)` (about +X), degrees; `rotation` tilts +Z \
-         onto n with the foot's yaw unchanged. Zero or NaN normal: no tilt.",
+         +Y in rig axes) and `roll = atan2(n.y, n.z)` (about +X), degrees, each with the \
+         opposite sign to the right-hand rule (the tilt is Ry(−pitch)·Rx(−roll)) — so feed \
+         `rotation`, not the angles, to a transform. `rotation` tilts +Z onto n with the \
+         foot's yaw unchanged. Zero or NaN normal: no tilt.",
         r#""tilt": RotationFromNormal(normal: "trace.normal"),"#,
         vec![ov(
             Op::RotationFromNormal,
@@ -1947,6 +2018,18 @@ mod tests {
             for o in &n.overloads[1..] {
                 assert_eq!(names(o), first, "{}", n.name);
             }
+        }
+    }
+
+    #[test]
+    fn every_example_uses_its_own_node() {
+        for n in registry().nodes() {
+            assert!(
+                n.example.contains(&format!("{}(", n.name)),
+                "{}: {}",
+                n.name,
+                n.example
+            );
         }
     }
 
