@@ -596,51 +596,46 @@ pub(crate) fn run(program: &Program, entry: u32, cx: &mut Ctx<'_>) {
             }
 
             Op::DrawPoint => {
-                if cx.debug.is_enabled() {
-                    cx.debug.push(DebugPrimitive::Point {
-                        position: v!(0),
-                        size: f!(1),
-                        color: color(v!(2)),
-                    });
-                }
+                // DebugDraw::push records nothing when drawing is off.
+                cx.debug.push(DebugPrimitive::Point {
+                    position: v!(0),
+                    size: f!(1),
+                    color: color(v!(2)),
+                });
             }
             Op::DrawLine => {
-                if cx.debug.is_enabled() {
-                    cx.debug.push(DebugPrimitive::Line {
-                        start: v!(0),
-                        end: v!(1),
-                        thickness: f!(2),
-                        color: color(v!(3)),
-                    });
-                }
+                // DebugDraw::push records nothing when drawing is off.
+                cx.debug.push(DebugPrimitive::Line {
+                    start: v!(0),
+                    end: v!(1),
+                    thickness: f!(2),
+                    color: color(v!(3)),
+                });
             }
             Op::DrawArrow => {
-                if cx.debug.is_enabled() {
-                    cx.debug.push(DebugPrimitive::Arrow {
-                        start: v!(0),
-                        end: v!(1),
-                        thickness: f!(2),
-                        color: color(v!(3)),
-                    });
-                }
+                // DebugDraw::push records nothing when drawing is off.
+                cx.debug.push(DebugPrimitive::Arrow {
+                    start: v!(0),
+                    end: v!(1),
+                    thickness: f!(2),
+                    color: color(v!(3)),
+                });
             }
             Op::DrawSphere => {
-                if cx.debug.is_enabled() {
-                    cx.debug.push(DebugPrimitive::Sphere {
-                        center: v!(0),
-                        radius: f!(1),
-                        color: color(v!(2)),
-                    });
-                }
+                // DebugDraw::push records nothing when drawing is off.
+                cx.debug.push(DebugPrimitive::Sphere {
+                    center: v!(0),
+                    radius: f!(1),
+                    color: color(v!(2)),
+                });
             }
             Op::DrawBox => {
-                if cx.debug.is_enabled() {
-                    cx.debug.push(DebugPrimitive::Box {
-                        transform: t!(0),
-                        half_extents: v!(1),
-                        color: color(v!(2)),
-                    });
-                }
+                // DebugDraw::push records nothing when drawing is off.
+                cx.debug.push(DebugPrimitive::Box {
+                    transform: t!(0),
+                    half_extents: v!(1),
+                    color: color(v!(2)),
+                });
             }
             Op::DrawSpline => {
                 if cx.debug.is_enabled() {
@@ -666,13 +661,12 @@ pub(crate) fn run(program: &Program, entry: u32, cx: &mut Ctx<'_>) {
                 }
             }
             Op::DrawTransform => {
-                if cx.debug.is_enabled() {
-                    cx.debug.push(DebugPrimitive::Axes {
-                        transform: t!(0),
-                        size: f!(1),
-                        thickness: f!(2),
-                    });
-                }
+                // DebugDraw::push records nothing when drawing is off.
+                cx.debug.push(DebugPrimitive::Axes {
+                    transform: t!(0),
+                    size: f!(1),
+                    thickness: f!(2),
+                });
             }
         }
     }
