@@ -595,8 +595,8 @@ pub(crate) fn run(program: &Program, entry: u32, cx: &mut Ctx<'_>) {
                 by_elem!(e, s, reset);
             }
 
+            // Draw ops: DebugDraw::push records nothing when drawing is off.
             Op::DrawPoint => {
-                // DebugDraw::push records nothing when drawing is off.
                 cx.debug.push(DebugPrimitive::Point {
                     position: v!(0),
                     size: f!(1),
@@ -604,7 +604,6 @@ pub(crate) fn run(program: &Program, entry: u32, cx: &mut Ctx<'_>) {
                 });
             }
             Op::DrawLine => {
-                // DebugDraw::push records nothing when drawing is off.
                 cx.debug.push(DebugPrimitive::Line {
                     start: v!(0),
                     end: v!(1),
@@ -613,7 +612,6 @@ pub(crate) fn run(program: &Program, entry: u32, cx: &mut Ctx<'_>) {
                 });
             }
             Op::DrawArrow => {
-                // DebugDraw::push records nothing when drawing is off.
                 cx.debug.push(DebugPrimitive::Arrow {
                     start: v!(0),
                     end: v!(1),
@@ -622,7 +620,6 @@ pub(crate) fn run(program: &Program, entry: u32, cx: &mut Ctx<'_>) {
                 });
             }
             Op::DrawSphere => {
-                // DebugDraw::push records nothing when drawing is off.
                 cx.debug.push(DebugPrimitive::Sphere {
                     center: v!(0),
                     radius: f!(1),
@@ -630,7 +627,6 @@ pub(crate) fn run(program: &Program, entry: u32, cx: &mut Ctx<'_>) {
                 });
             }
             Op::DrawBox => {
-                // DebugDraw::push records nothing when drawing is off.
                 cx.debug.push(DebugPrimitive::Box {
                     transform: t!(0),
                     half_extents: v!(1),
@@ -661,7 +657,6 @@ pub(crate) fn run(program: &Program, entry: u32, cx: &mut Ctx<'_>) {
                 }
             }
             Op::DrawTransform => {
-                // DebugDraw::push records nothing when drawing is off.
                 cx.debug.push(DebugPrimitive::Axes {
                     transform: t!(0),
                     size: f!(1),
