@@ -16,6 +16,7 @@ mod jsonl;
 mod nodes;
 mod output;
 mod run;
+mod setup;
 mod value;
 
 use clap::{Parser, Subcommand};

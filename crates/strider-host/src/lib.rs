@@ -8,6 +8,7 @@
 //! turned about Z by the character's facing.
 
 pub mod mover;
+pub mod plots;
 pub mod report;
 pub mod scenario;
 pub mod world;
