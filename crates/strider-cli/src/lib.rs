@@ -3,6 +3,7 @@
 //! ```text
 //! strider check FILE...                       validate graph and skeleton files
 //! strider run GRAPH --skeleton SKEL [...]     run a graph headless, optionally dump poses
+//! strider report GRAPH --skeleton SKEL --scenario SCEN   measure the motion in a scenario
 //! strider nodes [--markdown]                  list the built-in nodes
 //! strider                                     the demo: pelvis_bob on the mannequin
 //! ```
@@ -15,6 +16,7 @@ mod check;
 mod jsonl;
 mod nodes;
 mod output;
+mod report;
 mod run;
 mod setup;
 mod value;
@@ -54,6 +56,7 @@ struct Cli {
 enum Command {
     Check(check::CheckArgs),
     Run(run::RunArgs),
+    Report(report::ReportArgs),
     Nodes(nodes::NodesArgs),
 }
 
@@ -78,6 +81,7 @@ fn run_cli() -> ExitCode {
     let result = match cli.command {
         Some(Command::Check(args)) => check::run(&args),
         Some(Command::Run(args)) => run::run(&args),
+        Some(Command::Report(args)) => report::run(&args),
         Some(Command::Nodes(args)) => nodes::run(&args),
         None => demo(),
     };

@@ -7,6 +7,7 @@
 //! component-to-world transform puts the rig origin at the capsule's bottom (the feet),
 //! turned about Z by the character's facing.
 
+pub mod drive;
 pub mod mover;
 pub mod plots;
 pub mod report;
