@@ -1,1 +1,843 @@
-//! (in progress)
+//! The demo world: static shapes described in RON, answering line and sphere traces through
+//! parry3d.
+//!
+//! # Space and units
+//!
+//! Everything here is **world space**: +Z up, centimetres; yaw angles are in degrees about
+//! +Z. Yaw 0 faces world +Y and a positive yaw turns counter-clockwise seen from above:
+//! `Rz(+90°)` maps +Y to −X, so a shape with yaw 90° has its "forward" along −X. The
+//! forward direction of a yaw `ψ` is `(−sin ψ, cos ψ, 0)` ([`yaw_direction`]).
+//!
+//! # File format
+//!
+//! ```ron
+//! (
+//!     shapes: [
+//!         Ground(height: 0.0),
+//!         Box(center: (300.0, 0.0, 50.0), half_extents: (50.0, 200.0, 50.0), yaw: 0.0),
+//!         Ramp(start: (0.0, 500.0, 0.0), yaw: 0.0, angle: 20.0, length: 300.0, width: 200.0),
+//!         Stairs(start: (0.0, 900.0, 0.0), yaw: 0.0, width: 200.0, steps: 8, rise: 15.0,
+//!                run: 30.0, landing: 150.0),
+//!         Platform(center: (0.0, 0.0), half_size: (100.0, 100.0), top: 20.0),
+//!         Heightfield(origin: (-2000.0, -2000.0, 0.0), size: (4000.0, 4000.0),
+//!                     cells: (80, 80), waves: [(amplitude: 3.0, wavelength: 250.0)]),
+//!     ],
+//! )
+//! ```
+//!
+//! Every shape is solid: a trace starting inside one hits it at distance 0. The
+//! heightfield is the exception (a surface, hit from above).
+//!
+//! # Queries
+//!
+//! Traces loop over the shapes and keep the nearest hit (the first shape in the list wins
+//! a tie), so answers are deterministic. Demo worlds hold a handful of shapes; a world
+//! with thousands would put them in parry's BVH (a `Compound` shape or a
+//! `parry3d::partitioning::Bvh`) instead of the linear loop.
+
+use std::fmt;
+use std::path::{Path, PathBuf};
+
+use glam::{Quat, Vec3};
+use parry3d::math::Pose;
+use parry3d::query::{Ray, ShapeCastOptions, cast_shapes};
+use parry3d::shape::{Ball, Shape, SharedShape, TriMesh};
+use serde::Deserialize;
+use serde::de::{self, Deserializer, SeqAccess, Visitor};
+use strider_core::{TraceHit, WorldQuery};
+
+/// How far [`World::ground_height`] looks below its start point, centimetres.
+pub const GROUND_SEARCH_DEPTH: f32 = 100_000.0;
+
+/// The largest number of heightfield vertices accepted (`(cols + 1) · (rows + 1)`).
+pub const MAX_HEIGHTFIELD_VERTICES: usize = 1_000_000;
+
+/// Forward direction (world XY, unit length, z = 0) of a yaw in degrees: yaw 0 is +Y,
+/// positive yaw turns counter-clockwise seen from above (90° is −X).
+#[must_use]
+pub fn yaw_direction(yaw_deg: f32) -> Vec3 {
+    let (s, c) = yaw_deg.to_radians().sin_cos();
+    Vec3::new(-s, c, 0.0)
+}
+
+/// The yaw in degrees, in (−180°, 180°], of a world XY direction (the inverse of
+/// [`yaw_direction`]); 0 for a zero vector.
+#[must_use]
+pub fn direction_yaw(x: f32, y: f32) -> f32 {
+    if x == 0.0 && y == 0.0 {
+        0.0
+    } else {
+        (-x).atan2(y).to_degrees()
+    }
+}
+
+/// One sine wave of a generated heightfield:
+/// `amplitude · sin(2π · (d · (p − origin)) / wavelength + phase)`, where `d` is the unit
+/// direction of `heading` ([`yaw_direction`]) and `p` the world XY position.
+#[derive(Clone, Debug, PartialEq, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct Wave {
+    /// Peak height above the origin plane, centimetres.
+    pub amplitude: f32,
+    /// Distance between crests, centimetres (> 0).
+    pub wavelength: f32,
+    /// Direction the crests travel along, degrees (yaw convention: 0 = +Y). Default 0.
+    #[serde(default)]
+    pub heading: f32,
+    /// Phase offset, degrees. Default 0.
+    #[serde(default)]
+    pub phase: f32,
+}
+
+/// One shape of a world. All positions are world space, centimetres; yaw and angles are
+/// degrees (yaw 0 = the shape's forward is +Y, positive counter-clockwise from above).
+#[derive(Clone, Debug, PartialEq, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub enum ShapeDesc {
+    /// An infinite flat floor (a half-space) whose top is at z = `height`; solid below.
+    Ground {
+        /// Height of the floor's top, centimetres.
+        height: f32,
+    },
+    /// A solid box.
+    Box {
+        /// Centre, world space, centimetres.
+        center: (f32, f32, f32),
+        /// Half size along the box's local X (side), Y (forward) and Z (up), centimetres.
+        half_extents: (f32, f32, f32),
+        /// Rotation about +Z, degrees. Default 0.
+        #[serde(default)]
+        yaw: f32,
+    },
+    /// A solid wedge whose top is a slope: it starts at ground level along its near edge
+    /// (centred on `start`) and rises along its forward direction to
+    /// `start.z + length · tan(angle)` at the far edge, where it ends with a vertical face.
+    Ramp {
+        /// Centre of the bottom (near) edge, centimetres.
+        start: (f32, f32, f32),
+        /// Direction the ramp rises towards, degrees. Default 0 (+Y).
+        #[serde(default)]
+        yaw: f32,
+        /// Slope angle, degrees, in (0, 80).
+        angle: f32,
+        /// Horizontal length of the slope, centimetres.
+        length: f32,
+        /// Width across the slope, centimetres.
+        width: f32,
+    },
+    /// A flight of solid steps rising along the forward direction from `start` (the centre
+    /// of the first riser's bottom edge): step `i` (from 0) covers forward distances
+    /// `[i · run, (i + 1) · run]` and its top is at `start.z + (i + 1) · rise`. An optional
+    /// landing of depth `landing` continues the top step.
+    Stairs {
+        /// Centre of the first riser's bottom edge, centimetres.
+        start: (f32, f32, f32),
+        /// Direction the stairs rise towards, degrees. Default 0 (+Y).
+        #[serde(default)]
+        yaw: f32,
+        /// Width across the stairs, centimetres.
+        width: f32,
+        /// Number of steps (1..=1000).
+        steps: u32,
+        /// Height of each step, centimetres.
+        rise: f32,
+        /// Depth of each step, centimetres.
+        run: f32,
+        /// Depth of the landing after the last step, centimetres. Default 0 (none).
+        #[serde(default)]
+        landing: f32,
+    },
+    /// A raised box given by its top: an alias of [`ShapeDesc::Box`] whose top face is at
+    /// z = `top` and which extends `depth` below it.
+    Platform {
+        /// Centre of the top face in world XY, centimetres.
+        center: (f32, f32),
+        /// Half size along the platform's local X and Y, centimetres.
+        half_size: (f32, f32),
+        /// Height of the top face, centimetres.
+        top: f32,
+        /// Rotation about +Z, degrees. Default 0.
+        #[serde(default)]
+        yaw: f32,
+        /// Thickness below the top, centimetres. Default 100.
+        #[serde(default = "default_platform_depth")]
+        depth: f32,
+    },
+    /// Uneven ground: a grid of `cells.0 × cells.1` cells covering `size` from `origin`
+    /// (the minimum X/Y corner), as a triangle mesh (a surface, hit from above).
+    ///
+    /// The height of the vertex at column `i`, row `j` (world XY
+    /// `origin.xy + (i · size.x / cells.0, j · size.y / cells.1)`) is
+    /// `origin.z + heights[j · (cells.0 + 1) + i] + Σ waves`, where `heights` is optional
+    /// (empty = all 0, otherwise exactly `(cells.0 + 1) · (cells.1 + 1)` values, X fastest)
+    /// and each [`Wave`] is evaluated at the vertex. No randomness: the same description
+    /// always gives the same surface.
+    Heightfield {
+        /// Minimum corner in XY, and the base height, centimetres.
+        origin: (f32, f32, f32),
+        /// Extent along X and Y, centimetres.
+        size: (f32, f32),
+        /// Number of cells along X and Y (each ≥ 1).
+        cells: (u32, u32),
+        /// Explicit vertex heights above `origin.z`, centimetres, X fastest. Default none.
+        #[serde(default)]
+        heights: Vec<f32>,
+        /// Sine waves added to the heights. Default none.
+        #[serde(default)]
+        waves: Vec<Wave>,
+    },
+}
+
+fn default_platform_depth() -> f32 {
+    100.0
+}
+
+impl ShapeDesc {
+    /// The variant's name as written in RON.
+    #[must_use]
+    pub fn kind(&self) -> &'static str {
+        match self {
+            ShapeDesc::Ground { .. } => "Ground",
+            ShapeDesc::Box { .. } => "Box",
+            ShapeDesc::Ramp { .. } => "Ramp",
+            ShapeDesc::Stairs { .. } => "Stairs",
+            ShapeDesc::Platform { .. } => "Platform",
+            ShapeDesc::Heightfield { .. } => "Heightfield",
+        }
+    }
+
+    /// Checks the values (finite, positive sizes, counts in range). The message says what
+    /// is wrong and how to fix it.
+    pub fn validate(&self) -> Result<(), String> {
+        let finite = |name: &str, values: &[f32]| -> Result<(), String> {
+            if values.iter().all(|v| v.is_finite()) {
+                Ok(())
+            } else {
+                Err(format!("`{name}` must be finite numbers"))
+            }
+        };
+        let positive = |name: &str, values: &[f32]| -> Result<(), String> {
+            if values.iter().all(|v| v.is_finite() && *v > 0.0) {
+                Ok(())
+            } else {
+                Err(format!("`{name}` must be greater than 0 (centimetres)"))
+            }
+        };
+        match self {
+            ShapeDesc::Ground { height } => finite("height", &[*height]),
+            ShapeDesc::Box {
+                center,
+                half_extents,
+                yaw,
+            } => {
+                finite("center", &[center.0, center.1, center.2])?;
+                positive(
+                    "half_extents",
+                    &[half_extents.0, half_extents.1, half_extents.2],
+                )?;
+                finite("yaw", &[*yaw])
+            }
+            ShapeDesc::Ramp {
+                start,
+                yaw,
+                angle,
+                length,
+                width,
+            } => {
+                finite("start", &[start.0, start.1, start.2])?;
+                finite("yaw", &[*yaw])?;
+                if !(angle.is_finite() && *angle > 0.0 && *angle < 80.0) {
+                    return Err("`angle` must be between 0 and 80 degrees (exclusive)".into());
+                }
+                positive("length", &[*length])?;
+                positive("width", &[*width])
+            }
+            ShapeDesc::Stairs {
+                start,
+                yaw,
+                width,
+                steps,
+                rise,
+                run,
+                landing,
+            } => {
+                finite("start", &[start.0, start.1, start.2])?;
+                finite("yaw", &[*yaw])?;
+                positive("width", &[*width])?;
+                if !(1..=1000).contains(steps) {
+                    return Err("`steps` must be between 1 and 1000".into());
+                }
+                positive("rise", &[*rise])?;
+                positive("run", &[*run])?;
+                if !(landing.is_finite() && *landing >= 0.0) {
+                    return Err("`landing` must be 0 (no landing) or more centimetres".into());
+                }
+                Ok(())
+            }
+            ShapeDesc::Platform {
+                center,
+                half_size,
+                top,
+                yaw,
+                depth,
+            } => {
+                finite("center", &[center.0, center.1])?;
+                positive("half_size", &[half_size.0, half_size.1])?;
+                finite("top", &[*top])?;
+                finite("yaw", &[*yaw])?;
+                positive("depth", &[*depth])
+            }
+            ShapeDesc::Heightfield {
+                origin,
+                size,
+                cells,
+                heights,
+                waves,
+            } => {
+                finite("origin", &[origin.0, origin.1, origin.2])?;
+                positive("size", &[size.0, size.1])?;
+                if cells.0 == 0 || cells.1 == 0 {
+                    return Err("`cells` must be at least (1, 1)".into());
+                }
+                let vertices = (cells.0 as usize + 1).saturating_mul(cells.1 as usize + 1);
+                if vertices > MAX_HEIGHTFIELD_VERTICES {
+                    return Err(format!(
+                        "`cells` gives {vertices} vertices; use at most \
+                         {MAX_HEIGHTFIELD_VERTICES} (fewer, larger cells)"
+                    ));
+                }
+                if !heights.is_empty() && heights.len() != vertices {
+                    return Err(format!(
+                        "`heights` has {} values but `cells: ({}, {})` needs {vertices} \
+                         ((cells.0 + 1) · (cells.1 + 1), X fastest), or leave it out",
+                        heights.len(),
+                        cells.0,
+                        cells.1
+                    ));
+                }
+                finite("heights", heights)?;
+                for wave in waves {
+                    finite("waves.amplitude", &[wave.amplitude])?;
+                    positive("waves.wavelength", &[wave.wavelength])?;
+                    finite("waves.heading", &[wave.heading])?;
+                    finite("waves.phase", &[wave.phase])?;
+                }
+                Ok(())
+            }
+        }
+    }
+}
+
+/// A world description: the shapes, in the order traces prefer them on ties.
+#[derive(Clone, Debug, Default, PartialEq, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct WorldDesc {
+    /// The shapes. Each is checked while the file is read, so an error points at it.
+    #[serde(deserialize_with = "deserialize_checked_shapes")]
+    pub shapes: Vec<ShapeDesc>,
+}
+
+/// Reads a list of shapes, validating each as soon as it is read so the parse error carries
+/// the position of the faulty shape.
+fn deserialize_checked_shapes<'de, D: Deserializer<'de>>(
+    deserializer: D,
+) -> Result<Vec<ShapeDesc>, D::Error> {
+    struct ShapesVisitor;
+    impl<'de> Visitor<'de> for ShapesVisitor {
+        type Value = Vec<ShapeDesc>;
+        fn expecting(&self, f: &mut fmt::Formatter) -> fmt::Result {
+            f.write_str("a list of shapes")
+        }
+        fn visit_seq<A: SeqAccess<'de>>(self, mut seq: A) -> Result<Self::Value, A::Error> {
+            let mut shapes = Vec::new();
+            while let Some(shape) = seq.next_element::<ShapeDesc>()? {
+                if let Err(message) = shape.validate() {
+                    return Err(de::Error::custom(format!(
+                        "{} (shape {}): {message}",
+                        shape.kind(),
+                        shapes.len()
+                    )));
+                }
+                shapes.push(shape);
+            }
+            Ok(shapes)
+        }
+    }
+    deserializer.deserialize_seq(ShapesVisitor)
+}
+
+/// An error reading or building a world.
+#[derive(Debug, thiserror::Error)]
+pub enum WorldError {
+    /// The file could not be read.
+    #[error("{}: cannot read the world file: {source}", path.display())]
+    Io {
+        /// The file.
+        path: PathBuf,
+        /// The I/O error.
+        #[source]
+        source: std::io::Error,
+    },
+    /// The text is not a valid world description.
+    #[error("{origin}:{line}:{col}: error: {message}\n  hint: {help}")]
+    Parse {
+        /// The file name (or `<string>`).
+        origin: String,
+        /// Line, from 1.
+        line: usize,
+        /// Column, from 1.
+        col: usize,
+        /// What is wrong.
+        message: String,
+        /// How to fix it.
+        help: String,
+    },
+    /// A shape has invalid values.
+    #[error("shape {index} ({kind}): {message}")]
+    InvalidShape {
+        /// Index of the shape in [`WorldDesc::shapes`].
+        index: usize,
+        /// Its variant name.
+        kind: &'static str,
+        /// What is wrong and how to fix it.
+        message: String,
+    },
+    /// parry3d rejected generated geometry (for instance a degenerate heightfield).
+    #[error("shape {index} ({kind}): cannot build the collision shape: {message}")]
+    Geometry {
+        /// Index of the shape in [`WorldDesc::shapes`].
+        index: usize,
+        /// Its variant name.
+        kind: &'static str,
+        /// parry3d's message.
+        message: String,
+    },
+}
+
+/// A hit of a swept capsule or sphere, world space (used by the mover).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub(crate) struct SweepHit {
+    /// Distance travelled along the sweep direction before contact, centimetres.
+    pub distance: f32,
+    /// Surface normal, unit length, away from the surface.
+    pub normal: Vec3,
+}
+
+/// A built world: collision shapes placed in world space, answering traces.
+#[derive(Clone)]
+pub struct World {
+    desc: WorldDesc,
+    shapes: Vec<(Pose, SharedShape)>,
+}
+
+impl fmt::Debug for World {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.debug_struct("World")
+            .field("desc", &self.desc)
+            .field("collision_shapes", &self.shapes.len())
+            .finish()
+    }
+}
+
+impl Default for World {
+    /// An empty world: every trace misses.
+    fn default() -> Self {
+        Self {
+            desc: WorldDesc::default(),
+            shapes: Vec::new(),
+        }
+    }
+}
+
+fn pose(translation: Vec3, yaw_deg: f32) -> Pose {
+    Pose::from_parts(translation, Quat::from_rotation_z(yaw_deg.to_radians()))
+}
+
+fn v3(t: (f32, f32, f32)) -> Vec3 {
+    Vec3::new(t.0, t.1, t.2)
+}
+
+/// The generated height (above `origin.z`, before explicit heights) of a heightfield's waves
+/// at world XY `(x, y)`, centimetres.
+#[must_use]
+pub fn wave_height(waves: &[Wave], origin: (f32, f32), x: f32, y: f32) -> f32 {
+    let mut h = 0.0;
+    for w in waves {
+        let d = yaw_direction(w.heading);
+        let along = d.x * (x - origin.0) + d.y * (y - origin.1);
+        h += w.amplitude
+            * (core::f32::consts::TAU * along / w.wavelength + w.phase.to_radians()).sin();
+    }
+    h
+}
+
+impl World {
+    /// Builds a world, checking every shape.
+    pub fn try_from_desc(desc: &WorldDesc) -> Result<World, WorldError> {
+        let mut shapes = Vec::new();
+        for (index, shape) in desc.shapes.iter().enumerate() {
+            shape
+                .validate()
+                .map_err(|message| WorldError::InvalidShape {
+                    index,
+                    kind: shape.kind(),
+                    message,
+                })?;
+            build_shape(shape, &mut shapes).map_err(|message| WorldError::Geometry {
+                index,
+                kind: shape.kind(),
+                message,
+            })?;
+        }
+        Ok(World {
+            desc: desc.clone(),
+            shapes,
+        })
+    }
+
+    /// Builds a world, leaving out any shape that [`ShapeDesc::validate`] rejects or that
+    /// parry3d cannot build (use [`World::try_from_desc`] to get those errors instead).
+    /// Descriptions read by [`World::load`], [`World::from_str`] or a scenario file are
+    /// already checked.
+    #[must_use]
+    pub fn from_desc(desc: &WorldDesc) -> World {
+        let mut shapes = Vec::new();
+        let mut kept = Vec::new();
+        for shape in &desc.shapes {
+            if shape.validate().is_ok() {
+                let before = shapes.len();
+                if build_shape(shape, &mut shapes).is_ok() {
+                    kept.push(shape.clone());
+                } else {
+                    shapes.truncate(before);
+                }
+            }
+        }
+        World {
+            desc: WorldDesc { shapes: kept },
+            shapes,
+        }
+    }
+
+    /// Reads a world description file (RON, see the module docs) and builds it.
+    pub fn load(path: impl AsRef<Path>) -> Result<World, WorldError> {
+        let path = path.as_ref();
+        let text = std::fs::read_to_string(path).map_err(|source| WorldError::Io {
+            path: path.to_path_buf(),
+            source,
+        })?;
+        Self::parse(&text, &path.display().to_string())
+    }
+
+    /// Parses a world description from RON text and builds it. Errors name `<string>`.
+    #[allow(clippy::should_implement_trait)]
+    pub fn from_str(text: &str) -> Result<World, WorldError> {
+        Self::parse(text, "<string>")
+    }
+
+    /// Parses RON text; `origin` names the text in error messages.
+    fn parse(text: &str, origin: &str) -> Result<World, WorldError> {
+        let desc: WorldDesc = ron_options().from_str(text).map_err(|e| {
+            let (message, help) = describe_ron_error(&e.code);
+            WorldError::Parse {
+                origin: origin.to_string(),
+                line: e.span.start.line,
+                col: e.span.start.col,
+                message,
+                help,
+            }
+        })?;
+        Self::try_from_desc(&desc)
+    }
+
+    /// The description the world was built from (without shapes [`World::from_desc`] left
+    /// out).
+    #[must_use]
+    pub fn desc(&self) -> &WorldDesc {
+        &self.desc
+    }
+
+    /// The first surface straight below `(x, y, from_z)` (world space, centimetres), looking
+    /// down at most [`GROUND_SEARCH_DEPTH`]: its height and its unit normal (away from the
+    /// surface). `None` over the void. A start point inside a solid shape gives
+    /// `(from_z, +Z)`.
+    #[must_use]
+    pub fn ground_height(&self, x: f32, y: f32, from_z: f32) -> Option<(f32, Vec3)> {
+        let start = Vec3::new(x, y, from_z);
+        let hit = self.line_trace(start, start - Vec3::Z * GROUND_SEARCH_DEPTH)?;
+        Some((hit.point.z, hit.normal))
+    }
+
+    /// Sweeps `shape` (at `start`, not rotated) by `delta`; the nearest hit within the
+    /// sweep, keeping `skin` centimetres from surfaces. A sweep that starts within `skin` of
+    /// a surface and moves away from it does not hit it.
+    pub(crate) fn sweep(
+        &self,
+        shape: &dyn Shape,
+        start: Vec3,
+        delta: Vec3,
+        skin: f32,
+        stop_at_penetration: bool,
+    ) -> Option<SweepHit> {
+        let length = delta.length();
+        if !(length.is_finite() && start.is_finite()) || length <= 1e-7 {
+            return None;
+        }
+        let dir = delta / length;
+        let start_pose = Pose::from_translation(start);
+        let options = ShapeCastOptions {
+            max_time_of_impact: length,
+            target_distance: skin,
+            stop_at_penetration,
+            compute_impact_geometry_on_penetration: true,
+        };
+        let mut best: Option<SweepHit> = None;
+        for (pose2, shape2) in &self.shapes {
+            let Ok(Some(hit)) = cast_shapes(
+                &start_pose,
+                dir,
+                shape,
+                pose2,
+                Vec3::ZERO,
+                shape2.as_ref(),
+                options,
+            ) else {
+                continue;
+            };
+            let distance = hit.time_of_impact.max(0.0);
+            if best.is_some_and(|b| distance >= b.distance) {
+                continue;
+            }
+            let mut normal = -hit.normal1;
+            if !normal.is_finite() || normal.length_squared() < 1e-12 {
+                normal = -dir;
+            } else {
+                normal = normal.normalize();
+            }
+            best = Some(SweepHit { distance, normal });
+        }
+        best
+    }
+}
+
+/// The options every RON file of the host is read with (`Some(...)` may be left out).
+pub(crate) fn ron_options() -> ron::Options {
+    ron::Options::default().with_default_extension(ron::extensions::Extensions::IMPLICIT_SOME)
+}
+
+/// A message and a "how to fix it" hint for a RON error.
+pub(crate) fn describe_ron_error(code: &ron::Error) -> (String, String) {
+    use ron::Error as E;
+    let message = code.to_string();
+    let help = match code {
+        E::MissingStructField { field, .. } => format!("add the field `{field}: ...`"),
+        E::NoSuchStructField { .. } => {
+            "remove or rename the field (the expected names are listed above)".to_string()
+        }
+        E::NoSuchEnumVariant { .. } => {
+            "use one of the listed names (they are case-sensitive)".to_string()
+        }
+        E::DuplicateStructField { field, .. } => format!("write `{field}` only once"),
+        E::Message(_) => "fix the value named above".to_string(),
+        E::ExpectedFloat | E::ExpectedInteger => {
+            "write a number here (floats need a digit after the point, e.g. `1.0`)".to_string()
+        }
+        E::TrailingCharacters => {
+            "remove what follows the closing parenthesis of the top-level value".to_string()
+        }
+        _ => {
+            "check brackets, commas and the field names against the format in the docs".to_string()
+        }
+    };
+    (message, help)
+}
+
+/// Appends the collision shapes of one description.
+fn build_shape(desc: &ShapeDesc, out: &mut Vec<(Pose, SharedShape)>) -> Result<(), String> {
+    match desc {
+        ShapeDesc::Ground { height } => {
+            out.push((
+                Pose::from_translation(Vec3::new(0.0, 0.0, *height)),
+                SharedShape::halfspace(Vec3::Z),
+            ));
+        }
+        ShapeDesc::Box {
+            center,
+            half_extents,
+            yaw,
+        } => {
+            out.push((
+                pose(v3(*center), *yaw),
+                SharedShape::cuboid(half_extents.0, half_extents.1, half_extents.2),
+            ));
+        }
+        ShapeDesc::Ramp {
+            start,
+            yaw,
+            angle,
+            length,
+            width,
+        } => {
+            let height = length * angle.to_radians().tan();
+            let hw = width * 0.5;
+            // Local frame: X across, Y forward (rising), Z up; origin at the near edge centre.
+            let local = [
+                Vec3::new(-hw, 0.0, 0.0),
+                Vec3::new(hw, 0.0, 0.0),
+                Vec3::new(-hw, *length, 0.0),
+                Vec3::new(hw, *length, 0.0),
+                Vec3::new(-hw, *length, height),
+                Vec3::new(hw, *length, height),
+            ];
+            let shape = SharedShape::convex_hull(&local)
+                .ok_or("the ramp is degenerate (check length, width and angle)")?;
+            out.push((pose(v3(*start), *yaw), shape));
+        }
+        ShapeDesc::Stairs {
+            start,
+            yaw,
+            width,
+            steps,
+            rise,
+            run,
+            landing,
+        } => {
+            let base = pose(v3(*start), *yaw);
+            let hw = width * 0.5;
+            for i in 0..*steps {
+                let top = (i + 1) as f32 * rise;
+                let near = i as f32 * run;
+                // The last step runs on through the landing, so the landing has no seam.
+                let far = if i + 1 == *steps {
+                    (i + 1) as f32 * run + landing
+                } else {
+                    (i + 1) as f32 * run
+                };
+                let center = Vec3::new(0.0, (near + far) * 0.5, top * 0.5);
+                out.push((
+                    Pose::from_parts(base.transform_point(center), base.rotation),
+                    SharedShape::cuboid(hw, (far - near) * 0.5, top * 0.5),
+                ));
+            }
+        }
+        ShapeDesc::Platform {
+            center,
+            half_size,
+            top,
+            yaw,
+            depth,
+        } => {
+            out.push((
+                pose(Vec3::new(center.0, center.1, top - depth * 0.5), *yaw),
+                SharedShape::cuboid(half_size.0, half_size.1, depth * 0.5),
+            ));
+        }
+        ShapeDesc::Heightfield {
+            origin,
+            size,
+            cells,
+            heights,
+            waves,
+        } => {
+            let (nx, ny) = (cells.0 as usize, cells.1 as usize);
+            let mut vertices = Vec::with_capacity((nx + 1) * (ny + 1));
+            for j in 0..=ny {
+                for i in 0..=nx {
+                    let x = origin.0 + size.0 * i as f32 / nx as f32;
+                    let y = origin.1 + size.1 * j as f32 / ny as f32;
+                    let explicit = heights.get(j * (nx + 1) + i).copied().unwrap_or(0.0);
+                    let z = origin.2 + explicit + wave_height(waves, (origin.0, origin.1), x, y);
+                    vertices.push(Vec3::new(x, y, z));
+                }
+            }
+            let mut indices = Vec::with_capacity(nx * ny * 2);
+            for j in 0..ny {
+                for i in 0..nx {
+                    let v00 = (j * (nx + 1) + i) as u32;
+                    let v10 = v00 + 1;
+                    let v01 = v00 + nx as u32 + 1;
+                    let v11 = v01 + 1;
+                    // Counter-clockwise seen from above: normals point up.
+                    indices.push([v00, v10, v11]);
+                    indices.push([v00, v11, v01]);
+                }
+            }
+            let mesh = TriMesh::new(vertices, indices).map_err(|e| format!("{e:?}"))?;
+            out.push((Pose::IDENTITY, SharedShape::new(mesh)));
+        }
+    }
+    Ok(())
+}
+
+impl WorldQuery for World {
+    /// First hit of the segment `start → end` (world space, centimetres). Shapes are solid:
+    /// a segment starting inside one hits at distance 0 with the normal `−direction`. A
+    /// zero-length or non-finite segment misses.
+    fn line_trace(&self, start: Vec3, end: Vec3) -> Option<TraceHit> {
+        let delta = end - start;
+        let length = delta.length();
+        if !(start.is_finite() && end.is_finite() && length.is_finite()) || length <= 1e-7 {
+            return None;
+        }
+        let dir = delta / length;
+        let ray = Ray::new(start, dir);
+        let mut best: Option<(f32, Vec3)> = None;
+        for (pose, shape) in &self.shapes {
+            if let Some(hit) = shape.cast_ray_and_get_normal(pose, &ray, length, true)
+                && best.is_none_or(|(d, _)| hit.time_of_impact < d)
+            {
+                best = Some((hit.time_of_impact, hit.normal));
+            }
+        }
+        let (distance, normal) = best?;
+        let distance = distance.max(0.0);
+        let mut normal = if distance > 0.0 && normal.is_finite() {
+            normal.normalize_or_zero()
+        } else {
+            Vec3::ZERO
+        };
+        if normal == Vec3::ZERO {
+            normal = -dir;
+        } else if normal.dot(dir) > 0.0 {
+            // A surface (the heightfield) hit from behind: the normal faces the ray.
+            normal = -normal;
+        }
+        Some(TraceHit {
+            point: start + dir * distance,
+            normal,
+            distance,
+        })
+    }
+
+    /// First hit of a sphere of `radius` centimetres swept from `start` to `end` (world
+    /// space). `distance` is how far the centre travelled, `point` the touched surface
+    /// point. A sphere overlapping geometry at the start hits at distance 0. A radius of 0
+    /// is a line trace; a negative or non-finite radius, or non-finite ends, miss. A
+    /// zero-length sweep reports an overlap at the start, if any.
+    fn sphere_trace(&self, start: Vec3, end: Vec3, radius: f32) -> Option<TraceHit> {
+        if !(radius.is_finite() && radius >= 0.0 && start.is_finite() && end.is_finite()) {
+            return None;
+        }
+        if radius == 0.0 {
+            return self.line_trace(start, end);
+        }
+        let ball = Ball::new(radius);
+        let delta = end - start;
+        let length = delta.length();
+        let (dir, hit) = if length <= 1e-7 {
+            // Overlap test: a tiny sweep that any overlap stops at distance 0.
+            let hit = self
+                .sweep(&ball, start, Vec3::NEG_Z * 1e-6, 0.0, true)
+                .filter(|h| h.distance <= 0.0)?;
+            (Vec3::ZERO, hit)
+        } else {
+            (delta / length, self.sweep(&ball, start, delta, 0.0, true)?)
+        };
+        // The touched point of a sphere is one radius from its centre, against the normal.
+        Some(TraceHit {
+            point: start + dir * hit.distance - hit.normal * radius,
+            normal: hit.normal,
+            distance: hit.distance,
+        })
+    }
+}

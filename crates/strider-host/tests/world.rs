@@ -1,0 +1,327 @@
+//! Traces against hand-computed values.
+
+use glam::Vec3;
+use strider_core::WorldQuery;
+use strider_host::world::{ShapeDesc, Wave, World, WorldDesc, WorldError, wave_height};
+
+fn near(a: f32, b: f32, tol: f32) -> bool {
+    (a - b).abs() <= tol
+}
+
+fn assert_vec_near(a: Vec3, b: Vec3, tol: f32) {
+    assert!((a - b).length() <= tol, "{a} != {b} (tolerance {tol})");
+}
+
+fn world(text: &str) -> World {
+    World::from_str(text).unwrap_or_else(|e| panic!("{e}"))
+}
+
+#[test]
+fn line_trace_onto_a_20_degree_ramp() {
+    // Rising along +Y: the top is z = y · tan 20°, normal (0, −sin 20°, cos 20°).
+    let w = world(
+        "(shapes: [Ramp(start: (0.0, 0.0, 0.0), yaw: 0.0, angle: 20.0, length: 300.0, width: 200.0)])",
+    );
+    let (s, c) = 20f32.to_radians().sin_cos();
+    let top = 150.0 * 20f32.to_radians().tan(); // 54.596
+    let hit = w
+        .line_trace(Vec3::new(10.0, 150.0, 200.0), Vec3::new(10.0, 150.0, -10.0))
+        .expect("hit");
+    assert_vec_near(hit.point, Vec3::new(10.0, 150.0, top), 1e-3);
+    assert_vec_near(hit.normal, Vec3::new(0.0, -s, c), 1e-4);
+    assert!(near(hit.distance, 200.0 - top, 1e-3), "{}", hit.distance);
+
+    // Yaw −90° rises along +X (yaw 90° would be −X): normal (−sin 20°, 0, cos 20°).
+    let w = world(
+        "(shapes: [Ramp(start: (0.0, 0.0, 0.0), yaw: -90.0, angle: 20.0, length: 300.0, width: 200.0)])",
+    );
+    let hit = w
+        .line_trace(
+            Vec3::new(100.0, 30.0, 100.0),
+            Vec3::new(100.0, 30.0, -100.0),
+        )
+        .expect("hit");
+    assert_vec_near(
+        hit.point,
+        Vec3::new(100.0, 30.0, 100.0 * 20f32.to_radians().tan()),
+        1e-3,
+    );
+    assert_vec_near(hit.normal, Vec3::new(-s, 0.0, c), 1e-4);
+    // The ramp's top edge: 300 · tan 20° high, a vertical face beyond.
+    let (h, _) = w.ground_height(299.0, 0.0, 500.0).expect("ramp");
+    assert!(near(h, 299.0 * 20f32.to_radians().tan(), 1e-2));
+    assert!(w.ground_height(301.0, 0.0, 500.0).is_none());
+}
+
+#[test]
+fn sphere_trace_onto_a_floor_travels_drop_minus_radius() {
+    let w = world("(shapes: [Ground(height: 5.0)])");
+    let hit = w
+        .sphere_trace(Vec3::new(3.0, 4.0, 105.0), Vec3::new(3.0, 4.0, -95.0), 10.0)
+        .expect("hit");
+    assert!(near(hit.distance, 100.0 - 10.0, 1e-3), "{}", hit.distance);
+    assert_vec_near(hit.point, Vec3::new(3.0, 4.0, 5.0), 1e-3);
+    assert_vec_near(hit.normal, Vec3::Z, 1e-5);
+    // Too short to reach.
+    assert!(
+        w.sphere_trace(Vec3::new(0.0, 0.0, 105.0), Vec3::new(0.0, 0.0, 20.0), 10.0)
+            .is_none()
+    );
+    // Radius 0 is a line trace.
+    let line = w
+        .sphere_trace(Vec3::new(0.0, 0.0, 105.0), Vec3::new(0.0, 0.0, -95.0), 0.0)
+        .expect("hit");
+    assert!(near(line.distance, 100.0, 1e-3));
+}
+
+#[test]
+fn sphere_trace_against_a_wall_box() {
+    // A box whose −Y face is the plane y = 100.
+    let w =
+        world("(shapes: [Box(center: (0.0, 150.0, 100.0), half_extents: (200.0, 50.0, 100.0))])");
+    let hit = w
+        .sphere_trace(Vec3::new(0.0, 0.0, 50.0), Vec3::new(0.0, 300.0, 50.0), 20.0)
+        .expect("hit");
+    assert!(near(hit.distance, 80.0, 1e-3), "{}", hit.distance);
+    assert_vec_near(hit.normal, Vec3::NEG_Y, 1e-4);
+    assert_vec_near(hit.point, Vec3::new(0.0, 100.0, 50.0), 1e-2);
+}
+
+#[test]
+fn rotated_box_face() {
+    // Half extents (10, 50, 10) turned by 90°: the long axis lies along X, the box spans
+    // y ∈ [−10, 10].
+    let w = world(
+        "(shapes: [Box(center: (0.0, 0.0, 10.0), half_extents: (10.0, 50.0, 10.0), yaw: 90.0)])",
+    );
+    let hit = w
+        .line_trace(Vec3::new(40.0, -100.0, 10.0), Vec3::new(40.0, 100.0, 10.0))
+        .expect("hit");
+    assert!(near(hit.point.y, -10.0, 1e-3));
+    assert_vec_near(hit.normal, Vec3::NEG_Y, 1e-4);
+    assert!(
+        w.line_trace(Vec3::new(60.0, -100.0, 10.0), Vec3::new(60.0, 100.0, 10.0))
+            .is_none()
+    );
+}
+
+#[test]
+fn stair_step_tops() {
+    let w = world(
+        "(shapes: [Ground(height: 0.0), Stairs(start: (0.0, 0.0, 0.0), yaw: 0.0, width: 200.0, \
+         steps: 8, rise: 15.0, run: 30.0, landing: 100.0)])",
+    );
+    for i in 0..8 {
+        let y = 30.0 * i as f32 + 15.0;
+        let (h, n) = w.ground_height(0.0, y, 500.0).expect("step");
+        assert!(near(h, 15.0 * (i + 1) as f32, 1e-3), "step {i}: {h}");
+        assert_vec_near(n, Vec3::Z, 1e-5);
+    }
+    let (landing, _) = w
+        .ground_height(50.0, 8.0 * 30.0 + 90.0, 500.0)
+        .expect("landing");
+    assert!(near(landing, 120.0, 1e-3));
+    let (before, _) = w.ground_height(0.0, -5.0, 500.0).expect("ground");
+    assert!(near(before, 0.0, 1e-4));
+    let (beyond, _) = w
+        .ground_height(0.0, 8.0 * 30.0 + 101.0, 500.0)
+        .expect("ground");
+    assert!(near(beyond, 0.0, 1e-4));
+    // The first riser faces −Y.
+    let hit = w
+        .line_trace(Vec3::new(0.0, -50.0, 10.0), Vec3::new(0.0, 50.0, 10.0))
+        .expect("riser");
+    assert!(near(hit.point.y, 0.0, 1e-3));
+    assert_vec_near(hit.normal, Vec3::NEG_Y, 1e-4);
+}
+
+#[test]
+fn stairs_turned_by_yaw() {
+    // Yaw 180°: rising along −Y from y = 0.
+    let w = world(
+        "(shapes: [Stairs(start: (0.0, 0.0, 10.0), yaw: 180.0, width: 100.0, steps: 2, rise: 20.0, run: 40.0)])",
+    );
+    let (h0, _) = w.ground_height(0.0, -20.0, 500.0).expect("step 0");
+    let (h1, _) = w.ground_height(0.0, -60.0, 500.0).expect("step 1");
+    assert!(near(h0, 30.0, 1e-3) && near(h1, 50.0, 1e-3), "{h0} {h1}");
+    assert!(w.ground_height(0.0, 20.0, 500.0).is_none());
+}
+
+#[test]
+fn platform_top_and_edges() {
+    let w =
+        world("(shapes: [Platform(center: (100.0, 0.0), half_size: (50.0, 200.0), top: 20.0)])");
+    assert!(near(
+        w.ground_height(100.0, 0.0, 100.0).unwrap().0,
+        20.0,
+        1e-4
+    ));
+    assert!(near(
+        w.ground_height(149.0, 199.0, 100.0).unwrap().0,
+        20.0,
+        1e-4
+    ));
+    assert!(w.ground_height(151.0, 0.0, 100.0).is_none());
+}
+
+#[test]
+fn heightfield_matches_the_generator_at_grid_points() {
+    let waves = vec![
+        Wave {
+            amplitude: 3.0,
+            wavelength: 250.0,
+            heading: 30.0,
+            phase: 0.0,
+        },
+        Wave {
+            amplitude: 1.5,
+            wavelength: 90.0,
+            heading: -70.0,
+            phase: 45.0,
+        },
+    ];
+    let (nx, ny) = (20u32, 10u32);
+    let heights: Vec<f32> = (0..(nx + 1) * (ny + 1)).map(|i| (i % 7) as f32).collect();
+    let desc = WorldDesc {
+        shapes: vec![ShapeDesc::Heightfield {
+            origin: (-500.0, -250.0, 2.0),
+            size: (1000.0, 500.0),
+            cells: (nx, ny),
+            heights: heights.clone(),
+            waves: waves.clone(),
+        }],
+    };
+    let w = World::try_from_desc(&desc).expect("valid");
+    for j in 0..=ny {
+        for i in 0..=nx {
+            let x = -500.0 + 50.0 * i as f32;
+            let y = -250.0 + 50.0 * j as f32;
+            let expected = 2.0
+                + heights[(j * (nx + 1) + i) as usize]
+                + waves
+                    .iter()
+                    .map(|w| {
+                        let (s, c) = w.heading.to_radians().sin_cos();
+                        let along = -s * (x + 500.0) + c * (y + 250.0);
+                        w.amplitude
+                            * (std::f32::consts::TAU * along / w.wavelength + w.phase.to_radians())
+                                .sin()
+                    })
+                    .sum::<f32>();
+            assert!(near(
+                wave_height(&waves, (-500.0, -250.0), x, y)
+                    + 2.0
+                    + heights[(j * (nx + 1) + i) as usize],
+                expected,
+                1e-3
+            ));
+            // Nudge inside the grid so the ray never grazes the outer boundary.
+            let xi = x.clamp(-499.99, 499.99);
+            let yi = y.clamp(-249.99, 249.99);
+            let (h, n) = w.ground_height(xi, yi, 100.0).expect("heightfield");
+            assert!(near(h, expected, 0.05), "({i}, {j}): {h} vs {expected}");
+            assert!(n.z > 0.5);
+        }
+    }
+    // The surface is hit from above with an upward normal, even by a sphere.
+    let hit = w
+        .sphere_trace(
+            Vec3::new(0.0, 0.0, 100.0),
+            Vec3::new(0.0, 0.0, -100.0),
+            10.0,
+        )
+        .expect("hit");
+    assert!(hit.normal.z > 0.9 && hit.distance > 50.0);
+}
+
+#[test]
+fn traces_are_deterministic_and_miss_the_void() {
+    let w = world("(shapes: [])");
+    assert!(w.line_trace(Vec3::ZERO, Vec3::NEG_Z * 1000.0).is_none());
+    assert!(
+        w.sphere_trace(Vec3::ZERO, Vec3::NEG_Z * 1000.0, 10.0)
+            .is_none()
+    );
+    assert!(w.ground_height(0.0, 0.0, 0.0).is_none());
+
+    let w = world(
+        "(shapes: [Ground(height: 0.0), Ramp(start: (0.0, 0.0, 0.0), angle: 25.0, length: 200.0, width: 100.0)])",
+    );
+    let a = w.sphere_trace(
+        Vec3::new(3.0, 77.0, 300.0),
+        Vec3::new(-20.0, 100.0, -50.0),
+        12.0,
+    );
+    let b = w.sphere_trace(
+        Vec3::new(3.0, 77.0, 300.0),
+        Vec3::new(-20.0, 100.0, -50.0),
+        12.0,
+    );
+    assert_eq!(a, b);
+    assert!(a.is_some());
+}
+
+#[test]
+fn degenerate_traces_do_not_panic() {
+    let w = world("(shapes: [Ground(height: 0.0)])");
+    assert!(w.line_trace(Vec3::ONE, Vec3::ONE).is_none());
+    assert!(w.line_trace(Vec3::NAN, Vec3::ONE).is_none());
+    assert!(w.sphere_trace(Vec3::ONE, Vec3::INFINITY, 3.0).is_none());
+    assert!(w.sphere_trace(Vec3::Z * 10.0, Vec3::ZERO, -1.0).is_none());
+    assert!(
+        w.sphere_trace(Vec3::Z * 10.0, Vec3::ZERO, f32::NAN)
+            .is_none()
+    );
+    // Starting inside the solid ground: a hit at distance 0.
+    let hit = w
+        .line_trace(Vec3::new(0.0, 0.0, -5.0), Vec3::new(0.0, 0.0, -50.0))
+        .expect("inside");
+    assert_eq!(hit.distance, 0.0);
+    assert!(hit.normal.is_normalized());
+    // A zero-length sphere sweep reports an overlap only.
+    assert!(w.sphere_trace(Vec3::Z * 5.0, Vec3::Z * 5.0, 10.0).is_some());
+    assert!(
+        w.sphere_trace(Vec3::Z * 50.0, Vec3::Z * 50.0, 10.0)
+            .is_none()
+    );
+}
+
+#[test]
+fn bad_shapes_are_errors_with_a_position() {
+    let text = "(\n    shapes: [\n        Ground(height: 0.0),\n        Box(center: (0.0, 0.0, 0.0), half_extents: (1.0, -2.0, 1.0)),\n    ],\n)";
+    let err = World::from_str(text).unwrap_err();
+    let message = err.to_string();
+    assert!(
+        matches!(err, WorldError::Parse { line: 4, .. }),
+        "{message}"
+    );
+    assert!(message.contains("half_extents"), "{message}");
+    assert!(message.contains("hint:"), "{message}");
+
+    let err = World::from_str("(shapes: [Ramp(start: (0.0, 0.0, 0.0), angle: 20.0, length: 1.0)])")
+        .unwrap_err();
+    assert!(err.to_string().contains("width"), "{err}");
+    let err = World::from_str("(shapes: [Slab(height: 1.0)])").unwrap_err();
+    assert!(err.to_string().contains("1:11"), "{err}");
+
+    // Programmatic descriptions: try_from_desc reports, from_desc leaves the shape out.
+    let desc = WorldDesc {
+        shapes: vec![
+            ShapeDesc::Ground { height: 0.0 },
+            ShapeDesc::Heightfield {
+                origin: (0.0, 0.0, 0.0),
+                size: (10.0, 10.0),
+                cells: (2, 2),
+                heights: vec![1.0; 4],
+                waves: vec![],
+            },
+        ],
+    };
+    assert!(matches!(
+        World::try_from_desc(&desc),
+        Err(WorldError::InvalidShape { index: 1, .. })
+    ));
+    let w = World::from_desc(&desc);
+    assert_eq!(w.desc().shapes.len(), 1);
+    assert!(World::load("/nonexistent/world.ron").is_err());
+}
