@@ -159,8 +159,11 @@ fn shipped_scenarios_do_what_their_headers_say() {
     let f = run(&load("standing_on_stairs"), 60);
     assert!(f.iter().all(|f| f.standing_still));
     let p = f.last().unwrap().component_to_world.translation;
-    assert!(p.z > 10.0 && p.z <= 15.0 && (p.x + 3.0).abs() < 1e-3, "{p}");
-    // Turned in place to face −Y.
+    assert!(
+        p.z > 10.0 && p.z <= 15.0 && (p.x - 3.0).abs() < 1e-3 && (p.y - 300.0).abs() < 1e-3,
+        "{p}"
+    );
+    // Teleported to the mirrored stance, facing −Y.
     let forward = f
         .last()
         .unwrap()
