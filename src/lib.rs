@@ -51,6 +51,7 @@
 pub use strider_compiler as compiler;
 pub use strider_core as core;
 pub use strider_graph as graph;
+pub use strider_host as host;
 pub use strider_nodes as nodes;
 pub use strider_vm as vm;
 

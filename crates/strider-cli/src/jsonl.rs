@@ -4,6 +4,10 @@
 //! {"frame":0,"time":0.016666666666666666,"bones":{"root":{"t":[0.0,0.0,0.0],"r":[0.0,0.0,0.0,1.0],"s":[1.0,1.0,1.0]},...}}
 //! ```
 //!
+//! Runs driven by a scenario add `"world":{"t":...,"r":...,"s":...}` after `time`: the
+//! component-to-world transform of the frame (world space, cm), so that world positions
+//! are `world · global`.
+//!
 //! Written by hand rather than through a `serde_json::Map` so that bones come in the
 //! skeleton's storage (depth-first) order, which keeps diffs between runs stable. `t` is
 //! the rig-space translation (cm), `r` the rotation `(x, y, z, w)`, `s` the scale. Floats
@@ -13,20 +17,31 @@
 use std::io::{self, Write};
 use strider_core::Transform;
 
-/// Writes one frame as a JSON line. `time` is seconds at the end of the frame; `names`
-/// and `globals` are in the skeleton's storage order.
+/// Writes one frame as a JSON line. `time` is seconds at the end of the frame; `world`, if
+/// given, is the frame's component-to-world transform; `names` and `globals` are in the
+/// skeleton's storage order.
 ///
 /// Returns how many non-finite numbers were written as `null`.
 pub(crate) fn write_frame(
     out: &mut impl Write,
     frame: u64,
     time: f64,
+    world: Option<&Transform>,
     names: &[String],
     globals: &[Transform],
 ) -> io::Result<usize> {
     let mut non_finite = 0;
     write!(out, "{{\"frame\":{frame},\"time\":")?;
     non_finite += number(out, time)?;
+    if let Some(w) = world {
+        out.write_all(b",\"world\":{\"t\":")?;
+        non_finite += array(out, &w.translation.to_array())?;
+        out.write_all(b",\"r\":")?;
+        non_finite += array(out, &w.rotation.to_array())?;
+        out.write_all(b",\"s\":")?;
+        non_finite += array(out, &w.scale.to_array())?;
+        out.write_all(b"}")?;
+    }
     out.write_all(b",\"bones\":{")?;
     for (i, (name, g)) in names.iter().zip(globals).enumerate() {
         if i > 0 {
@@ -94,7 +109,7 @@ mod tests {
     fn line(names: &[&str], globals: &[Transform], frame: u64, time: f64) -> (String, usize) {
         let names: Vec<String> = names.iter().map(|s| s.to_string()).collect();
         let mut buf = Vec::new();
-        let n = write_frame(&mut buf, frame, time, &names, globals).unwrap();
+        let n = write_frame(&mut buf, frame, time, None, &names, globals).unwrap();
         (String::from_utf8(buf).unwrap(), n)
     }
 

@@ -106,7 +106,8 @@ fn demo() -> anyhow::Result<ExitCode> {
     let args = run::RunArgs {
         graph: PathBuf::from(DEMO_GRAPH),
         skeleton: PathBuf::from(DEMO_SKELETON),
-        frames: DEMO_FRAMES,
+        frames: Some(DEMO_FRAMES),
+        scenario: None,
         hz: run::DEFAULT_HZ,
         set: Vec::new(),
         out: None,
@@ -179,7 +180,7 @@ mod tests {
         let Some(Command::Run(args)) = cli.command else {
             panic!("not run: {cli:?}");
         };
-        assert_eq!(args.frames, 10);
+        assert_eq!(args.frames, Some(10));
         assert_eq!(args.hz, 30.0);
         assert_eq!(args.set, ["Amplitude=3", "Offset=(1,2,-3)"]);
         assert_eq!(args.out, Some(PathBuf::from("o.jsonl")));

@@ -3,7 +3,7 @@
 
 use crate::setup::{apply_assignments, instantiate, load, parse_assignments, skeleton_label};
 use crate::{jsonl, output};
-use anyhow::Context as _;
+use anyhow::{Context as _, anyhow, bail};
 use std::fmt::Write as _;
 use std::fs::File;
 use std::io::{BufWriter, Write as _};
@@ -11,12 +11,15 @@ use std::path::{Path, PathBuf};
 use std::process::ExitCode;
 use std::sync::Arc;
 use std::time::{Duration, Instant};
-use strider_core::{EmptyWorld, Transform};
+use strider_core::{EmptyWorld, Transform, WorldQuery};
 use strider_graph::SkeletonFile;
+use strider_host::scenario::{MAX_HZ, Scenario, Simulation};
 use strider_vm::{FrameInput, InputPose, Program};
 
 /// Default frame rate, Hz.
 pub(crate) const DEFAULT_HZ: f64 = 60.0;
+/// Frames run without --frames or --scenario.
+const DEFAULT_FRAMES: u32 = 60;
 
 /// Arguments of `strider run`.
 #[derive(Debug, clap::Args)]
@@ -25,13 +28,19 @@ pub(crate) const DEFAULT_HZ: f64 = 60.0;
     long_about = "Compile a graph, run it headless on a skeleton and summarise the motion.\n\n\
         Each frame starts from the skeleton's rest pose, advances time by 1/H seconds and \
         runs the graph's `forward` event with the character at the world origin \
-        (component-to-world = identity) in an empty world (every trace misses). Variables \
+        (component-to-world = identity) in an empty world (every trace misses). With \
+        --scenario, the scenario's world answers the traces and its capsule, driven by the \
+        scenario's timeline of inputs, places the character (and sets dt) every frame; the \
+        run lasts the whole scenario unless --frames is given. Variables \
         given with --set are applied before the first frame; tunable ones before the \
         `construction` event, which is re-run.\n\n\
         With --out, every frame's rig-space (global) bone transforms are written as one \
         JSON object per line, bones in the skeleton's depth-first storage order:\n  \
         {\"frame\":0,\"time\":0.0166…,\"bones\":{\"root\":{\"t\":[x,y,z],\"r\":[x,y,z,w],\"s\":[x,y,z]},…}}\n\
-        `frame` counts from 0, `time` is seconds at the end of the frame ((frame + 1) / H), \
+        With --scenario each line also has \
+        `\"world\":{\"t\":…,\"r\":…,\"s\":…}`, the component-to-world transform.\n\
+        `frame` counts from 0, `time` is seconds at the end of the frame ((frame + 1) / H; \
+        with --scenario the scenario's clock, frame / H, hitches included), \
         `t` is in centimetres, `r` a unit quaternion, `s` the scale; NaN and infinities are \
         written `null`.\n\n\
         The summary (stdout) gives the graph, the skeleton, the frame count and rate, the \
@@ -47,9 +56,15 @@ pub(crate) struct RunArgs {
     #[arg(long, short = 's', value_name = "SKEL")]
     pub skeleton: PathBuf,
 
-    /// Number of frames to run.
-    #[arg(long, short = 'n', value_name = "N", default_value_t = 60)]
-    pub frames: u32,
+    /// Number of frames to run [default: 60, or the whole scenario with --scenario].
+    #[arg(long, short = 'n', value_name = "N")]
+    pub frames: Option<u32>,
+
+    /// Drive the character through a scenario (`graphs/scenarios/*.ron`): its world
+    /// answers the traces and its capsule places the character every frame. --hz must then
+    /// be a whole number.
+    #[arg(long, value_name = "SCEN")]
+    pub scenario: Option<PathBuf>,
 
     /// Frame rate in Hz (frames per second): each frame advances time by 1/H seconds.
     #[arg(long, value_name = "H", default_value_t = DEFAULT_HZ, value_parser = positive_hz)]
@@ -87,8 +102,31 @@ pub(crate) fn run(args: &RunArgs) -> anyhow::Result<ExitCode> {
     let program = Arc::new(program);
     let assignments = parse_assignments(&program, &args.set)?;
 
+    let mut sim = match &args.scenario {
+        Some(path) => {
+            let scenario = Scenario::load(path).map_err(|e| anyhow!("{e}"))?;
+            if args.hz.fract() != 0.0 || args.hz > f64::from(MAX_HZ) {
+                bail!(
+                    "--hz {} with --scenario: the frame rate must be a whole number of Hz up to {MAX_HZ}",
+                    args.hz
+                );
+            }
+            Some(Simulation::new(&scenario, args.hz as u32))
+        }
+        None => None,
+    };
+    let frames = args.frames.unwrap_or_else(|| {
+        sim.as_ref().map_or(DEFAULT_FRAMES, |s| {
+            s.frame_count().try_into().unwrap_or(u32::MAX)
+        })
+    });
+
     let mut instance = instantiate(&program, &skeleton, &args.skeleton)?;
-    apply_assignments(&mut instance, &skeleton, &assignments, &EmptyWorld)?;
+    let world: &dyn WorldQuery = match &sim {
+        Some(sim) => sim.world(),
+        None => &EmptyWorld,
+    };
+    apply_assignments(&mut instance, &skeleton, &assignments, world)?;
 
     let mut writer = match &args.out {
         Some(path) => {
@@ -107,23 +145,39 @@ pub(crate) fn run(args: &RunArgs) -> anyhow::Result<ExitCode> {
 
     let bones = skeleton.skeleton.names();
     let pelvis = skeleton.skeleton.find("pelvis");
-    let input = FrameInput {
-        dt: (1.0 / args.hz) as f32,
-        component_to_world: Transform::IDENTITY,
-        pose: InputPose::Rest,
-    };
     let mut stats = Stats::default();
-    for frame in 0..args.frames {
+    for frame in 0..frames {
+        // Without a scenario: the origin, an empty world, a fixed step.
+        let (input, time, world): (FrameInput<'_>, f64, &dyn WorldQuery) = match &mut sim {
+            Some(sim) => {
+                let Some(f) = sim.next_frame() else { break };
+                let input = FrameInput {
+                    dt: f.dt,
+                    component_to_world: f.component_to_world,
+                    pose: InputPose::Rest,
+                };
+                (input, f.time, sim.world())
+            }
+            None => {
+                let input = FrameInput {
+                    dt: (1.0 / args.hz) as f32,
+                    component_to_world: Transform::IDENTITY,
+                    pose: InputPose::Rest,
+                };
+                (input, f64::from(frame + 1) / args.hz, &EmptyWorld)
+            }
+        };
         let start = Instant::now();
-        instance.run_forward(&input, &EmptyWorld, args.debug);
+        instance.run_forward(&input, world, args.debug);
         let primitives = instance.debug_draw().primitives().len();
         let globals = instance.pose_mut().globals();
         stats.busy += start.elapsed();
         stats.primitives += primitives;
 
-        let time = f64::from(frame + 1) / args.hz;
+        stats.frames += 1;
+        let placed = args.scenario.as_ref().map(|_| &input.component_to_world);
         stats.non_finite += match &mut writer {
-            Some(w) => jsonl::write_frame(w, u64::from(frame), time, bones, globals)
+            Some(w) => jsonl::write_frame(w, u64::from(frame), time, placed, bones, globals)
                 .with_context(|| write_error(&args.out))?,
             None => jsonl::count_non_finite(globals),
         };
@@ -142,6 +196,8 @@ pub(crate) fn run(args: &RunArgs) -> anyhow::Result<ExitCode> {
 /// What the summary reports about the run.
 #[derive(Debug, Default)]
 struct Stats {
+    /// Frames run.
+    frames: u32,
     /// Wall-clock time in `run_forward` and the global-pose update.
     busy: Duration,
     /// NaN or infinite components over all frames and bones.
@@ -181,12 +237,15 @@ fn summary(args: &RunArgs, program: &Program, skeleton: &SkeletonFile, stats: &S
     let _ = write!(
         s,
         "frames     {} at {} Hz = {} s simulated",
-        args.frames,
+        stats.frames,
         args.hz,
-        f64::from(args.frames) / args.hz
+        f64::from(stats.frames) / args.hz
     );
-    if args.frames > 0 {
-        let per_frame = stats.busy.as_secs_f64() * 1e6 / f64::from(args.frames);
+    if let Some(path) = &args.scenario {
+        let _ = write!(s, " in scenario {}", path.display());
+    }
+    if stats.frames > 0 {
+        let per_frame = stats.busy.as_secs_f64() * 1e6 / f64::from(stats.frames);
         let _ = write!(
             s,
             ", {per_frame:.2} µs per frame (wall clock, informational)"
@@ -195,7 +254,7 @@ fn summary(args: &RunArgs, program: &Program, skeleton: &SkeletonFile, stats: &S
     s.push('\n');
     match &args.out {
         Some(path) => {
-            let _ = writeln!(s, "output     {} ({} lines)", path.display(), args.frames);
+            let _ = writeln!(s, "output     {} ({} lines)", path.display(), stats.frames);
         }
         None => s.push_str("output     none (--out FILE.jsonl writes the bone transforms)\n"),
     }
@@ -212,7 +271,7 @@ fn summary(args: &RunArgs, program: &Program, skeleton: &SkeletonFile, stats: &S
                     hi - lo
                 );
             }
-            None if args.frames == 0 => {
+            None if stats.frames == 0 => {
                 let _ = writeln!(s, "pelvis z   no frame run (rest {rest:.3} cm)");
             }
             None => {
