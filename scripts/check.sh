@@ -11,3 +11,10 @@ echo "== cargo doc"
 RUSTDOCFLAGS="-D warnings" cargo doc --workspace --no-deps --locked --quiet
 echo "== cargo test"
 cargo test --workspace --locked
+# The executor's `profile` feature is off in the builds above; lint and test it on its own
+# (docs/performance.md). Benches are compiled (not run) by clippy --all-targets.
+echo "== profile feature: clippy -D warnings, tests"
+cargo clippy -p strider-vm -p strider --all-targets --no-deps --locked \
+    --features strider-vm/profile,strider/profile -- -D warnings
+cargo test -p strider-vm --features profile --locked
+cargo test -p strider --features profile --locked --test profile --test allocations

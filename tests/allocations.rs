@@ -238,3 +238,28 @@ fn feet_finder_and_other_input_poses_do_not_allocate() {
     });
     assert_eq!(n, 0, "{n} allocations in 100 frames");
 }
+
+/// With the `profile` feature and profiling on, frames still allocate nothing: the
+/// per-instruction table is allocated with the instance.
+#[cfg(feature = "profile")]
+#[test]
+fn profiled_frames_do_not_allocate() {
+    let _guard = SERIAL.lock().unwrap_or_else(|e| e.into_inner());
+    for path in ["graphs/pelvis_bob.ron", "graphs/foot_ik.ron"] {
+        let mut inst = instance(path);
+        inst.set_profiling(true);
+        let n = steady_state_allocations(&mut inst, true);
+        assert_eq!(n, 0, "{path}, profiling: {n} allocations in 100 frames");
+        let runs: u64 = inst.profile().iter().map(|p| p.count).sum();
+        assert!(runs > 0, "{path}: the frames were profiled");
+        // Switching it off and resetting allocate nothing either.
+        let n = allocations_in(|| {
+            inst.reset_profile();
+            inst.set_profiling(false);
+            inst.run_forward(&FrameInput::default(), &EmptyWorld, false);
+            inst.set_profiling(true);
+            inst.run_forward(&FrameInput::default(), &EmptyWorld, false);
+        });
+        assert_eq!(n, 0, "{path}: toggling profiling allocated {n} times");
+    }
+}

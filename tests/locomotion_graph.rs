@@ -108,14 +108,26 @@ fn linear_path(keys: Vec<(f64, f64, f64)>, yaw_deg: f64) -> PathFn {
 fn walk_path() -> PathFn {
     // Accelerate to 150 cm/s along +Y over 0.5 s, walk 4 s, stop over 0.5 s, stand 2 s.
     linear_path(
-        vec![(0.0, 0.0, 0.0), (0.5, 0.0, 150.0), (4.5, 0.0, 150.0), (5.0, 0.0, 0.0), (7.0, 0.0, 0.0)],
+        vec![
+            (0.0, 0.0, 0.0),
+            (0.5, 0.0, 150.0),
+            (4.5, 0.0, 150.0),
+            (5.0, 0.0, 0.0),
+            (7.0, 0.0, 0.0),
+        ],
         0.0,
     )
 }
 
 fn run_path() -> PathFn {
     linear_path(
-        vec![(0.0, 0.0, 0.0), (1.0, 0.0, 400.0), (5.0, 0.0, 400.0), (6.0, 0.0, 0.0), (8.0, 0.0, 0.0)],
+        vec![
+            (0.0, 0.0, 0.0),
+            (1.0, 0.0, 400.0),
+            (5.0, 0.0, 400.0),
+            (6.0, 0.0, 0.0),
+            (8.0, 0.0, 0.0),
+        ],
         0.0,
     )
 }
@@ -141,7 +153,13 @@ fn start_stop_path() -> PathFn {
 fn strafe_path() -> PathFn {
     // Facing +Y all along, moving towards the character's right (−X) at 150 cm/s.
     linear_path(
-        vec![(0.0, 0.0, 0.0), (0.5, -150.0, 0.0), (4.5, -150.0, 0.0), (5.0, 0.0, 0.0), (7.0, 0.0, 0.0)],
+        vec![
+            (0.0, 0.0, 0.0),
+            (0.5, -150.0, 0.0),
+            (4.5, -150.0, 0.0),
+            (5.0, 0.0, 0.0),
+            (7.0, 0.0, 0.0),
+        ],
         0.0,
     )
 }
@@ -166,7 +184,11 @@ fn curve_path() -> PathFn {
     // A circle of radius 300 cm at 150 cm/s, facing along the tangent (turning left).
     Box::new(|t: f64| {
         // Speed ramps 0 → 150 over 0.5 s (37.5 cm travelled), then stays.
-        let dist = if t < 0.5 { 150.0 * t * t } else { 37.5 + 150.0 * (t - 0.5) };
+        let dist = if t < 0.5 {
+            150.0 * t * t
+        } else {
+            37.5 + 150.0 * (t - 0.5)
+        };
         let r = 300.0;
         let a = dist / r; // radians turned to the left
         // Start at the origin heading +Y; turning left = towards +X, a negative yaw.
@@ -195,7 +217,10 @@ fn rig() -> Rig {
         Ok(p) => Arc::new(p),
         Err(d) => panic!(
             "{}",
-            d.iter().map(ToString::to_string).collect::<Vec<_>>().join("\n")
+            d.iter()
+                .map(ToString::to_string)
+                .collect::<Vec<_>>()
+                .join("\n")
         ),
     };
     let file = strider_graph::load_skeleton(Path::new("graphs/skeletons/mannequin.ron")).unwrap();
@@ -210,7 +235,12 @@ fn rig() -> Rig {
         })
         .collect();
     let names = skeleton.names().to_vec();
-    Rig { program, skeleton, contacts, names }
+    Rig {
+        program,
+        skeleton,
+        contacts,
+        names,
+    }
 }
 
 struct Frame {
@@ -229,12 +259,21 @@ fn simulate(rig: &Rig, path: &PathFn, hz: u32, seconds: f64, world: &dyn WorldQu
         let time = (n + 1) as f64 / f64::from(hz);
         let root = path(time);
         instance.run_forward(
-            &FrameInput { dt, component_to_world: root, pose: InputPose::Rest },
+            &FrameInput {
+                dt,
+                component_to_world: root,
+                pose: InputPose::Rest,
+            },
             world,
             false,
         );
         let rig_pose = instance.pose_mut().globals().to_vec();
-        out.push(Frame { time, dt, root, rig: rig_pose });
+        out.push(Frame {
+            time,
+            dt,
+            root,
+            rig: rig_pose,
+        });
     }
     out
 }
@@ -303,7 +342,10 @@ fn measure(rig: &Rig, frames: &[Frame]) -> Metrics {
         let planted: Vec<bool> = frames
             .iter()
             .map(|f| {
-                mine.iter().map(|c| world_contact(f, c).z).fold(f32::INFINITY, f32::min) <= GROUND_TOLERANCE
+                mine.iter()
+                    .map(|c| world_contact(f, c).z)
+                    .fold(f32::INFINITY, f32::min)
+                    <= GROUND_TOLERANCE
             })
             .collect();
         let mut n = 0;
@@ -330,7 +372,11 @@ fn measure(rig: &Rig, frames: &[Frame]) -> Metrics {
                     }
                 }
                 if travel > MAX_SKATE && std::env::var("SPANS").is_ok() {
-                    eprintln!("  span foot {foot} {:.3}..{:.3} s: contact skates {travel:.2} cm", frames[start].time, frames[n - 1].time);
+                    eprintln!(
+                        "  span foot {foot} {:.3}..{:.3} s: contact skates {travel:.2} cm",
+                        frames[start].time,
+                        frames[n - 1].time
+                    );
                 }
                 m.skate = m.skate.max(travel);
             }
@@ -349,8 +395,20 @@ fn measure(rig: &Rig, frames: &[Frame]) -> Metrics {
             .unwrap()
     };
     let legs = [
-        (thigh_l, bone(rig, "calf_l"), foot_l, sole(0, "heel"), sole(0, "ball")),
-        (thigh_r, bone(rig, "calf_r"), foot_r, sole(1, "heel"), sole(1, "ball")),
+        (
+            thigh_l,
+            bone(rig, "calf_l"),
+            foot_l,
+            sole(0, "heel"),
+            sole(0, "ball"),
+        ),
+        (
+            thigh_r,
+            bone(rig, "calf_r"),
+            foot_r,
+            sole(1, "heel"),
+            sole(1, "ball"),
+        ),
     ];
     for f in frames {
         let (l, r) = (f.rig[foot_l].translation, f.rig[foot_r].translation);
@@ -363,14 +421,23 @@ fn measure(rig: &Rig, frames: &[Frame]) -> Metrics {
             m.crossing_hips += 1;
         }
         for &(thigh, calf, foot, heel, ball) in &legs {
-            let (a, k, e) = (f.rig[thigh].translation, f.rig[calf].translation, f.rig[foot].translation);
+            let (a, k, e) = (
+                f.rig[thigh].translation,
+                f.rig[calf].translation,
+                f.rig[foot].translation,
+            );
             let axis = (e - a).normalize_or_zero();
             let off = (k - a) - axis * (k - a).dot(axis);
-            let toes = f.rig[ball.1].transform_point(ball.2) - f.rig[heel.1].transform_point(heel.2);
+            let toes =
+                f.rig[ball.1].transform_point(ball.2) - f.rig[heel.1].transform_point(heel.2);
             let toes = Vec3::new(toes.x, toes.y, 0.0).normalize_or_zero();
             if off.dot(toes) < -0.3 {
                 if std::env::var("SPANS").is_ok() {
-                    eprintln!("  backward knee at {:.3}: off {off:?} toes {toes:?} leg {:.2}", f.time, (e - a).length());
+                    eprintln!(
+                        "  backward knee at {:.3}: off {off:?} toes {toes:?} leg {:.2}",
+                        f.time,
+                        (e - a).length()
+                    );
                 }
                 m.backward_knees += 1;
             }
@@ -405,7 +472,9 @@ fn frame_rate_deviation(a: &[Frame], b: &[Frame]) -> (f32, String) {
         if (k - k.round()).abs() > 1e-6 {
             continue;
         }
-        let Some(fb) = b.iter().find(|fb| (fb.time - fa.time).abs() < 1e-6) else { continue };
+        let Some(fb) = b.iter().find(|fb| (fb.time - fa.time).abs() < 1e-6) else {
+            continue;
+        };
         for bone in 0..fa.rig.len() {
             let pa = (fa.root * fa.rig[bone]).translation;
             let pb = (fb.root * fb.rig[bone]).translation;
@@ -441,14 +510,41 @@ fn misses(name: &str, m: &Metrics, crossing: usize) -> Vec<String> {
             out.push(format!("{name}: {what}"));
         }
     };
-    miss(m.non_finite == 0, format!("{} non-finite frames (target 0)", m.non_finite));
+    miss(
+        m.non_finite == 0,
+        format!("{} non-finite frames (target 0)", m.non_finite),
+    );
     miss(m.spans > 0, "no planted span at all".into());
-    miss(m.skate <= MAX_SKATE, format!("skate {:.2} cm (target {MAX_SKATE})", m.skate));
-    miss(m.penetration <= MAX_PENETRATION, format!("penetration {:.2} cm (target {MAX_PENETRATION})", m.penetration));
-    miss(m.idle_float <= MAX_IDLE_FLOAT, format!("idle float {:.2} cm (target {MAX_IDLE_FLOAT})", m.idle_float));
-    miss(crossing == 0, format!("{crossing} crossing frames (target 0)"));
-    miss(m.backward_knees == 0, format!("{} backward-knee frames (target 0)", m.backward_knees));
-    miss(m.pop <= MAX_POP, format!("pop {:.2} cm ({}) (target {MAX_POP})", m.pop, m.pop_bone));
+    miss(
+        m.skate <= MAX_SKATE,
+        format!("skate {:.2} cm (target {MAX_SKATE})", m.skate),
+    );
+    miss(
+        m.penetration <= MAX_PENETRATION,
+        format!(
+            "penetration {:.2} cm (target {MAX_PENETRATION})",
+            m.penetration
+        ),
+    );
+    miss(
+        m.idle_float <= MAX_IDLE_FLOAT,
+        format!(
+            "idle float {:.2} cm (target {MAX_IDLE_FLOAT})",
+            m.idle_float
+        ),
+    );
+    miss(
+        crossing == 0,
+        format!("{crossing} crossing frames (target 0)"),
+    );
+    miss(
+        m.backward_knees == 0,
+        format!("{} backward-knee frames (target 0)", m.backward_knees),
+    );
+    miss(
+        m.pop <= MAX_POP,
+        format!("pop {:.2} cm ({}) (target {MAX_POP})", m.pop, m.pop_bone),
+    );
     out
 }
 
@@ -468,7 +564,11 @@ fn all_misses() -> Vec<String> {
     let mut out = Vec::new();
     for (name, path, seconds, hips) in flat_scenarios() {
         let m = scenario(name, path, seconds);
-        out.extend(misses(name, &m, if hips { m.crossing_hips } else { m.crossing }));
+        out.extend(misses(
+            name,
+            &m,
+            if hips { m.crossing_hips } else { m.crossing },
+        ));
     }
     out
 }
@@ -488,13 +588,18 @@ fn the_graph_compiles_without_diagnostics_and_instantiates() {
 fn a_skeleton_without_feet_is_refused_naming_the_missing_bones() {
     let text = std::fs::read_to_string("graphs/skeletons/mannequin.ron").unwrap();
     // Rename the feet (and their contacts' bone): no `foot_l` / `foot_r` any more.
-    let text = text.replace("\"foot_l\"", "\"ankle_l\"").replace("\"foot_r\"", "\"ankle_r\"");
+    let text = text
+        .replace("\"foot_l\"", "\"ankle_l\"")
+        .replace("\"foot_r\"", "\"ankle_r\"");
     let file = strider_graph::load_skeleton_str(Path::new("footless.ron"), text).unwrap();
     let rig = rig();
     match Instance::new(rig.program.clone(), file.skeleton) {
         Err(InstantiateError::MissingBones { missing, .. }) => {
             let names: Vec<_> = missing.iter().map(|m| m.name.as_str()).collect();
-            assert!(names.contains(&"foot_l") && names.contains(&"foot_r"), "{names:?}");
+            assert!(
+                names.contains(&"foot_l") && names.contains(&"foot_r"),
+                "{names:?}"
+            );
         }
         Ok(_) => panic!("a skeleton without feet was accepted"),
     }
@@ -510,8 +615,16 @@ fn flat_ground_contact_crossing_and_knee_targets() {
         let m = scenario(name, path, seconds);
         assert_eq!(m.non_finite, 0, "{name}");
         assert!(m.spans > 0, "{name}: no planted span");
-        assert!(m.penetration <= MAX_PENETRATION, "{name}: penetration {}", m.penetration);
-        assert!(m.idle_float <= MAX_IDLE_FLOAT, "{name}: idle float {}", m.idle_float);
+        assert!(
+            m.penetration <= MAX_PENETRATION,
+            "{name}: penetration {}",
+            m.penetration
+        );
+        assert!(
+            m.idle_float <= MAX_IDLE_FLOAT,
+            "{name}: idle float {}",
+            m.idle_float
+        );
         assert_eq!(m.backward_knees, 0, "{name}: backward knees");
         if !hips {
             assert_eq!(m.crossing, 0, "{name}: crossing frames");
@@ -565,7 +678,11 @@ fn standing_still_does_not_step() {
     let foot = bone(&rig, "foot_l");
     let first = frames[0].rig[foot].translation;
     for f in &frames {
-        assert!((f.rig[foot].translation - first).length() < 0.5, "the foot moved at {}", f.time);
+        assert!(
+            (f.rig[foot].translation - first).length() < 0.5,
+            "the foot moved at {}",
+            f.time
+        );
     }
     assert!(m.idle_float <= MAX_IDLE_FLOAT && m.penetration <= MAX_PENETRATION);
 }
@@ -576,15 +693,26 @@ fn zero_dt_and_a_one_second_hitch_stay_finite() {
     let mut instance = Instance::new(rig.program.clone(), rig.skeleton.clone()).unwrap();
     let path = walk_path();
     let mut t = 0.0;
-    for (n, dt) in [1.0f32 / 60.0; 60].into_iter().chain([0.0, 0.0, 1.0, 0.0, 1.0 / 60.0, 1.0]).enumerate() {
+    for (n, dt) in [1.0f32 / 60.0; 60]
+        .into_iter()
+        .chain([0.0, 0.0, 1.0, 0.0, 1.0 / 60.0, 1.0])
+        .enumerate()
+    {
         t += f64::from(dt) + if dt == 0.0 { 0.01 } else { 0.0 }; // the capsule moves even at dt = 0
         instance.run_forward(
-            &FrameInput { dt, component_to_world: path(t), pose: InputPose::Rest },
+            &FrameInput {
+                dt,
+                component_to_world: path(t),
+                pose: InputPose::Rest,
+            },
             &Flat,
             true,
         );
         let pose = instance.pose_mut().globals().to_vec();
-        assert!(pose.iter().all(Transform::is_finite), "frame {n} (dt {dt}) is not finite");
+        assert!(
+            pose.iter().all(Transform::is_finite),
+            "frame {n} (dt {dt}) is not finite"
+        );
         // Legs are never longer than the rest leg (within the IK clamp).
         let (thigh, foot) = (bone(&rig, "thigh_l"), bone(&rig, "foot_l"));
         let leg = (pose[foot].translation - pose[thigh].translation).length();
@@ -603,13 +731,26 @@ fn a_teleport_resets_the_feet_instead_of_stretching_the_legs() {
         if n >= 120 {
             root.translation += Vec3::new(5000.0, -3000.0, 0.0); // 58 m away
         }
-        instance.run_forward(&FrameInput { dt, component_to_world: root, pose: InputPose::Rest }, &Flat, false);
+        instance.run_forward(
+            &FrameInput {
+                dt,
+                component_to_world: root,
+                pose: InputPose::Rest,
+            },
+            &Flat,
+            false,
+        );
         let pose = instance.pose_mut().globals().to_vec();
         for (thigh, foot) in [("thigh_l", "foot_l"), ("thigh_r", "foot_r")] {
-            let leg = (pose[bone(&rig, foot)].translation - pose[bone(&rig, thigh)].translation).length();
+            let leg =
+                (pose[bone(&rig, foot)].translation - pose[bone(&rig, thigh)].translation).length();
             assert!(leg < 79.0, "frame {n}: {foot} {leg} cm from its hip");
             let ankle = root.transform_point(pose[bone(&rig, foot)].translation);
-            assert!(ankle.z > -1.0 && ankle.z < 60.0, "frame {n}: {foot} at z {}", ankle.z);
+            assert!(
+                ankle.z > -1.0 && ankle.z < 60.0,
+                "frame {n}: {foot} at z {}",
+                ankle.z
+            );
         }
     }
 }
@@ -625,7 +766,11 @@ fn walking_into_a_void_keeps_the_legs_sane() {
     for f in &frames {
         for foot in ["foot_l", "foot_r"] {
             let z = f.rig[bone(&rig, foot)].translation.z;
-            assert!((-1.0..60.0).contains(&z), "{foot} at rig z {z} at {} s", f.time);
+            assert!(
+                (-1.0..60.0).contains(&z),
+                "{foot} at rig z {z} at {} s",
+                f.time
+            );
         }
     }
 }
@@ -636,7 +781,10 @@ fn walking_into_a_void_keeps_the_legs_sane() {
 fn dump() {
     let rig = rig();
     let which = std::env::var("DUMP").unwrap_or_else(|_| "walk".into());
-    let hz: u32 = std::env::var("HZ").ok().and_then(|s| s.parse().ok()).unwrap_or(60);
+    let hz: u32 = std::env::var("HZ")
+        .ok()
+        .and_then(|s| s.parse().ok())
+        .unwrap_or(60);
     let (path, secs) = match which.as_str() {
         "run" => (run_path(), 8.0),
         "strafe" => (strafe_path(), 7.0),
@@ -652,22 +800,51 @@ fn dump() {
     for n in 0..(secs * f64::from(hz)) as usize {
         let time = (n + 1) as f64 / f64::from(hz);
         let root = path(time);
-        instance.run_forward(&FrameInput { dt, component_to_world: root, pose: InputPose::Rest }, &Flat, false);
+        instance.run_forward(
+            &FrameInput {
+                dt,
+                component_to_world: root,
+                pose: InputPose::Rest,
+            },
+            &Flat,
+            false,
+        );
         let pose = instance.pose_mut().globals().to_vec();
         let mut line = format!("{time:6.3} pel {:6.2}", pose[1].translation.z);
         if std::env::var("LEG").is_ok() {
-            let side = if std::env::var("LEG").unwrap() == "r" { "r" } else { "l" };
-            let (t, c, f) = (bone(&rig, &format!("thigh_{side}")), bone(&rig, &format!("calf_{side}")), bone(&rig, &format!("foot_{side}")));
-            line += &format!(" thigh {:?} calf {:?} foot {:?} leg {:.2}", pose[t].translation, pose[c].translation, pose[f].translation, (pose[f].translation - pose[t].translation).length());
+            let side = if std::env::var("LEG").unwrap() == "r" {
+                "r"
+            } else {
+                "l"
+            };
+            let (t, c, f) = (
+                bone(&rig, &format!("thigh_{side}")),
+                bone(&rig, &format!("calf_{side}")),
+                bone(&rig, &format!("foot_{side}")),
+            );
+            line += &format!(
+                " thigh {:?} calf {:?} foot {:?} leg {:.2}",
+                pose[t].translation,
+                pose[c].translation,
+                pose[f].translation,
+                (pose[f].translation - pose[t].translation).length()
+            );
         }
         for c in &rig.contacts {
             let p = (root * pose[c.1]).transform_point(c.2);
             line += &format!(" | {:7.2} {:7.2} {:5.2}", p.x, p.y, p.z);
         }
-        line += &format!(" {:?} {:?}", instance.variable(locked), instance.variable(cyc));
+        line += &format!(
+            " {:?} {:?}",
+            instance.variable(locked),
+            instance.variable(cyc)
+        );
         if let Ok(vars) = std::env::var("VARS") {
             for v in vars.split(',') {
-                line += &format!(" {v}={:?}", instance.variable(rig.program.variable_id(v).unwrap()));
+                line += &format!(
+                    " {v}={:?}",
+                    instance.variable(rig.program.variable_id(v).unwrap())
+                );
             }
         }
         println!("{line}");

@@ -3,12 +3,95 @@
 //! Each function call site gets its own frame of slots (calls are inlined), so per-call
 //! state never aliases. Pure nodes are emitted in front of every step that needs them;
 //! within one step each is emitted once.
+//!
+//! Every instruction is tagged with its origin (the node or step that produced it, see
+//! [`strider_vm::InstrOrigin`]) in the program's side table, for profiling and tools.
 
 use crate::check::{Arg, Body, CStep, Checked, LoopPart, NodeKind, Src, VarRef};
 use std::collections::{HashMap, HashSet};
-use strider_graph::LoadedGraph;
+use strider_graph::{EventKind, FunctionDecl, LoadedGraph, NodeDecl, Step};
 use strider_nodes::{Elem, Op, Value, ValueType};
-use strider_vm::{Program, ProgramBuilder, VariableInfo};
+use strider_vm::{
+    Event, InstrOrigin, OriginId, OriginKind, OriginScope, Program, ProgramBuilder, VariableInfo,
+};
+
+/// What the document says about one node of a checked body (same index), for origins.
+struct NodeSource {
+    id: Option<String>,
+    kind: String,
+    location: String,
+}
+
+/// The nodes of a body in the checker's order: declared nodes in file order, then inline
+/// nodes of the exec lists in the order the lists are walked (depth first).
+fn body_node_sources(
+    loaded: &LoadedGraph,
+    nodes: &[NodeDecl],
+    lists: &[&[Step]],
+) -> Vec<NodeSource> {
+    fn walk<'d>(steps: &'d [Step], out: &mut Vec<&'d NodeDecl>) {
+        for s in steps {
+            match s {
+                Step::Node(n) => out.push(n),
+                Step::ForEach { body, .. } | Step::For { body, .. } => walk(body, out),
+                Step::Branch {
+                    then, otherwise, ..
+                } => {
+                    walk(then, out);
+                    walk(otherwise, out);
+                }
+                Step::Sequence(blocks, _) => {
+                    for b in blocks {
+                        walk(b, out);
+                    }
+                }
+                Step::Set { .. } | Step::Run(_) | Step::Return { .. } => {}
+            }
+        }
+    }
+    let mut decls: Vec<&NodeDecl> = nodes.iter().collect();
+    for list in lists {
+        walk(list, &mut decls);
+    }
+    decls
+        .into_iter()
+        .map(|d| NodeSource {
+            id: d.id.as_ref().map(|i| i.name.clone()),
+            kind: d.kind.name.clone(),
+            location: loaded.sources.describe(d.loc),
+        })
+        .collect()
+}
+
+/// A step's name and location for its origin.
+fn step_source(loaded: &LoadedGraph, step: &CStep, doc: Option<&Step>) -> (String, String) {
+    let name = match step {
+        CStep::Set { .. } => match doc {
+            Some(Step::Set { var, .. }) => format!("Set(\"{}\")", var.name),
+            _ => "Set".to_string(),
+        },
+        CStep::Exec(_) => "Run".to_string(),
+        CStep::Branch { .. } => "Branch".to_string(),
+        CStep::ForEach { .. } => "ForEach".to_string(),
+        CStep::For { .. } => "For".to_string(),
+        CStep::Sequence(_) => "Sequence".to_string(),
+        CStep::Return(_) => "Return".to_string(),
+    };
+    let loc = match doc {
+        Some(
+            Step::Set { loc, .. }
+            | Step::Branch { loc, .. }
+            | Step::ForEach { loc, .. }
+            | Step::For { loc, .. }
+            | Step::Sequence(_, loc)
+            | Step::Return { loc, .. },
+        ) => loaded.sources.describe(*loc),
+        Some(Step::Run(id)) => loaded.sources.describe(id.loc),
+        Some(Step::Node(n)) => loaded.sources.describe(n.loc),
+        None => String::new(),
+    };
+    (name, loc)
+}
 
 struct LoopSlots {
     counter: u32,
@@ -37,6 +120,16 @@ struct Gen<'a> {
     globals: Vec<u32>,
     consts: HashMap<String, u32>,
     frames: Vec<Frame>,
+    /// For origins: the document.
+    loaded: &'a LoadedGraph,
+    /// For origins: the function declarations, indexed as `checked.functions`.
+    fn_decls: Vec<&'a FunctionDecl>,
+    /// For origins: each function's nodes, then the graph's (last).
+    node_sources: Vec<Vec<NodeSource>>,
+    /// The event being generated.
+    event: Event,
+    /// Origin of node `n` of body `f` (`None`: the graph) in an event (`None` in functions).
+    node_origins: HashMap<(Option<usize>, usize, Option<Event>), OriginId>,
 }
 
 pub(crate) fn generate(loaded: &LoadedGraph, checked: &Checked) -> Program {
@@ -50,12 +143,45 @@ pub(crate) fn generate(loaded: &LoadedGraph, checked: &Checked) -> Program {
     } else {
         loaded.main.name.clone()
     };
+    // The document's side of what the checker indexed, for instruction origins: functions
+    // of every file in file order (as the checker numbers them), event lists concatenated.
+    let fn_decls: Vec<&FunctionDecl> = std::iter::once(&loaded.main)
+        .chain(&loaded.libraries)
+        .flat_map(|g| &g.functions)
+        .collect();
+    let event_steps = |kind: EventKind| -> Vec<Step> {
+        loaded
+            .main
+            .events
+            .iter()
+            .filter(|e| e.kind == kind)
+            .flat_map(|e| e.steps.iter().cloned())
+            .collect()
+    };
+    let (construction_doc, forward_doc) = (
+        event_steps(EventKind::Construction),
+        event_steps(EventKind::Forward),
+    );
+    let mut node_sources: Vec<Vec<NodeSource>> = fn_decls
+        .iter()
+        .map(|f| body_node_sources(loaded, &f.nodes, &[&f.exec]))
+        .collect();
+    node_sources.push(body_node_sources(
+        loaded,
+        &loaded.main.nodes,
+        &[&construction_doc, &forward_doc],
+    ));
     let mut g = Gen {
         pb: ProgramBuilder::new(&name),
         checked,
         globals: Vec::new(),
         consts: HashMap::new(),
         frames: Vec::new(),
+        loaded,
+        fn_decls,
+        node_sources,
+        event: Event::Construction,
+        node_origins: HashMap::new(),
     };
     for v in &checked.globals {
         let slot = g.pb.alloc(v.ty);
@@ -71,28 +197,92 @@ pub(crate) fn generate(loaded: &LoadedGraph, checked: &Checked) -> Program {
         });
     }
     let top = g.frame(None);
-    for (steps, construction) in [
-        (&checked.graph.construction, true),
-        (&checked.graph.forward, false),
+    for (steps, doc, event) in [
+        (
+            &checked.graph.construction,
+            &construction_doc,
+            Event::Construction,
+        ),
+        (&checked.graph.forward, &forward_doc, Event::Forward),
     ] {
+        g.event = event;
         let entry = g.pb.here();
-        if construction {
+        if event == Event::Construction {
             g.pb.set_construction_entry(entry);
         } else {
             g.pb.set_forward_entry(entry);
         }
         let mut rets = Vec::new();
-        g.steps(top, steps, &mut rets);
+        g.steps(top, steps, doc, &mut rets);
         let end = g.pb.here();
         for r in rets {
             g.pb.patch(r, 0, end);
         }
+        let origin = g.pb.intern_origin(InstrOrigin {
+            kind: OriginKind::Step,
+            node_id: None,
+            node_type: "End".to_string(),
+            scope: OriginScope::Event(event),
+            location: String::new(),
+        });
+        g.pb.set_origin(Some(origin));
         g.pb.emit(Op::End, &[]);
+        g.pb.set_origin(None);
     }
     g.pb.finish()
 }
 
 impl Gen<'_> {
+    /// The scope origins of `frame` get: its function, or the event being generated.
+    fn scope(&self, frame: usize) -> OriginScope {
+        match self.frames[frame].body {
+            Some(f) => OriginScope::Function(self.fn_decls[f].name.name.clone()),
+            None => OriginScope::Event(self.event),
+        }
+    }
+
+    /// The origin of node `n` of `frame` (interned once per body and event).
+    fn node_origin(&mut self, frame: usize, n: usize) -> OriginId {
+        let body = self.frames[frame].body;
+        let key = (body, n, body.is_none().then_some(self.event));
+        if let Some(&id) = self.node_origins.get(&key) {
+            return id;
+        }
+        let sources = &self.node_sources[body.unwrap_or(self.node_sources.len() - 1)];
+        let (node_id, node_type, location) = match sources.get(n) {
+            Some(src) => (src.id.clone(), src.kind.clone(), src.location.clone()),
+            None => (None, "?".to_string(), String::new()),
+        };
+        let kind = match self.body(frame).nodes[n].kind {
+            NodeKind::Builtin(_) => OriginKind::Node,
+            NodeKind::Call(_) => OriginKind::Call,
+        };
+        let origin = InstrOrigin {
+            kind,
+            node_id,
+            node_type,
+            scope: self.scope(frame),
+            location,
+        };
+        let id = self.pb.intern_origin(origin);
+        self.node_origins.insert(key, id);
+        id
+    }
+
+    /// Sets the origin of a step of `frame` for what is emitted next; returns the previous.
+    fn enter_step(&mut self, frame: usize, step: &CStep, doc: Option<&Step>) -> Option<OriginId> {
+        let (node_type, location) = step_source(self.loaded, step, doc);
+        let origin = InstrOrigin {
+            kind: OriginKind::Step,
+            node_id: None,
+            node_type,
+            scope: self.scope(frame),
+            location,
+        };
+        let id = self.pb.intern_origin(origin);
+        self.pb.set_origin(Some(id))
+    }
+
     fn body(&self, frame: usize) -> &Body {
         match self.frames[frame].body {
             None => &self.checked.graph,
@@ -253,6 +443,14 @@ impl Gen<'_> {
     /// Emits node `n` of `frame` itself; the pure nodes it reads must already be emitted
     /// for this step (see [`Gen::pull`]).
     fn node(&mut self, frame: usize, n: usize, done: &mut HashSet<usize>) {
+        let origin = self.node_origin(frame, n);
+        let outer = self.pb.set_origin(Some(origin));
+        self.node_code(frame, n, done);
+        self.pb.set_origin(outer);
+    }
+
+    /// [`Gen::node`] without setting the origin.
+    fn node_code(&mut self, frame: usize, n: usize, done: &mut HashSet<usize>) {
         let node = self.body(frame).nodes[n].clone();
         let ins = self.pull(frame, &node.inputs, done);
         match node.kind {
@@ -281,7 +479,8 @@ impl Gen<'_> {
                 }
                 let mut rets = Vec::new();
                 let exec = &self.checked.functions[f].exec;
-                self.steps(callee, exec, &mut rets);
+                let doc = &self.fn_decls[f].exec;
+                self.steps(callee, exec, doc, &mut rets);
                 let end = self.pb.here();
                 for r in rets {
                     self.pb.patch(r, 0, end);
@@ -290,13 +489,26 @@ impl Gen<'_> {
         }
     }
 
-    fn steps(&mut self, frame: usize, steps: &[CStep], rets: &mut Vec<u32>) {
-        for s in steps {
-            self.step(frame, s, rets);
+    /// Emits `steps`; `doc` is the same list in the document (for origins).
+    fn steps(&mut self, frame: usize, steps: &[CStep], doc: &[Step], rets: &mut Vec<u32>) {
+        for (i, s) in steps.iter().enumerate() {
+            self.step(frame, s, doc.get(i), rets);
         }
     }
 
-    fn step(&mut self, frame: usize, step: &CStep, rets: &mut Vec<u32>) {
+    fn step(&mut self, frame: usize, step: &CStep, doc: Option<&Step>, rets: &mut Vec<u32>) {
+        let outer = match step {
+            CStep::Exec(_) => None,
+            _ => Some(self.enter_step(frame, step, doc)),
+        };
+        self.step_code(frame, step, doc, rets);
+        if let Some(outer) = outer {
+            self.pb.set_origin(outer);
+        }
+    }
+
+    /// [`Gen::step`] without setting the origin.
+    fn step_code(&mut self, frame: usize, step: &CStep, doc: Option<&Step>, rets: &mut Vec<u32>) {
         let mut done = HashSet::new();
         match step {
             CStep::Set { target, ty, arg } => {
@@ -314,12 +526,20 @@ impl Gen<'_> {
                 otherwise,
             } => {
                 let c = self.pull(frame, std::slice::from_ref(condition), &mut done)[0];
+                let (then_doc, else_doc): (&[Step], &[Step]) = match doc {
+                    Some(Step::Branch {
+                        then: t,
+                        otherwise: o,
+                        ..
+                    }) => (t, o),
+                    _ => (&[], &[]),
+                };
                 let jf = self.pb.emit(Op::JumpIfFalse, &[c, 0]);
-                self.steps(frame, then, rets);
+                self.steps(frame, then, then_doc, rets);
                 let j = self.pb.emit(Op::Jump, &[0]);
                 let else_at = self.pb.here();
                 self.pb.patch(jf, 1, else_at);
-                self.steps(frame, otherwise, rets);
+                self.steps(frame, otherwise, else_doc, rets);
                 let end = self.pb.here();
                 self.pb.patch(j, 0, end);
             }
@@ -338,7 +558,11 @@ impl Gen<'_> {
                     Op::ForEachNext(elem),
                     &[arr, counter, element, index, count, 0],
                 );
-                self.steps(frame, body, rets);
+                let body_doc: &[Step] = match doc {
+                    Some(Step::ForEach { body, .. }) => body,
+                    _ => &[],
+                };
+                self.steps(frame, body, body_doc, rets);
                 self.pb.emit(Op::Jump, &[head]);
                 let exit = self.pb.here();
                 self.pb.patch(next, 5, exit);
@@ -354,14 +578,23 @@ impl Gen<'_> {
                 self.pb.emit(Op::Copy(ValueType::Int), &[zero, counter]);
                 let head = self.pb.here();
                 let next = self.pb.emit(Op::ForNext, &[counter, n, index, 0]);
-                self.steps(frame, body, rets);
+                let body_doc: &[Step] = match doc {
+                    Some(Step::For { body, .. }) => body,
+                    _ => &[],
+                };
+                self.steps(frame, body, body_doc, rets);
                 self.pb.emit(Op::Jump, &[head]);
                 let exit = self.pb.here();
                 self.pb.patch(next, 3, exit);
             }
             CStep::Sequence(blocks) => {
-                for b in blocks {
-                    self.steps(frame, b, rets);
+                let docs: &[Vec<Step>] = match doc {
+                    Some(Step::Sequence(d, _)) => d,
+                    _ => &[],
+                };
+                for (i, b) in blocks.iter().enumerate() {
+                    let block_doc = docs.get(i).map_or(&[][..], Vec::as_slice);
+                    self.steps(frame, b, block_doc, rets);
                 }
             }
             CStep::Return(values) => {

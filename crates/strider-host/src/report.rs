@@ -56,10 +56,15 @@
 //!   full reach is the pose-only sign that the IK could not reach it and the foot misses
 //!   its target. A frame counts once however many legs are over-extended.
 //! - **Pops**: the largest per-frame jump of any bone's world position relative to the
-//!   root bone (bone 0), normalised to a 60 Hz frame:
-//!   `|(p_b(t) − p_root(t)) − (p_b(t−1) − p_root(t−1))| · (1/60) / dt`, in cm per 60 Hz
-//!   frame. Frames with `dt ≤ 0` (or not finite), frames flagged `teleported` and frames
-//!   with a non-finite value in either of the two poses are skipped.
+//!   root bone (bone 0) — a *jump* being a change of motion, not motion itself: a planted
+//!   foot under a body running at 400 cm/s moves 6.7 cm per 60 Hz frame relative to the
+//!   root without popping. With `u(t) = ((p_b − p_root)(t) − (p_b − p_root)(t−1)) / dt(t)`
+//!   the bone's velocity relative to the root, the pop at `t` is
+//!   `|u(t) − u(t−1)| · (1/60)² / mean(dt(t), dt(t−1))`, in cm per 60 Hz frame: a bone
+//!   that jumps J cm in one 60 Hz frame and stays scores J, smooth motion with relative
+//!   acceleration a scores `a / 60²` at every frame rate. Triples of frames containing a
+//!   `dt ≤ 0` (or not finite) frame, a frame flagged `teleported` (other than the first of
+//!   the three) or a non-finite value are skipped.
 //! - **Non-finite values**: the number of NaN or infinite components (translation 3,
 //!   rotation 4, scale 3 per transform) in all globals and all component-to-world
 //!   transforms.
@@ -908,24 +913,35 @@ pub fn analyse(rig: &ReportRig, frames: &[FrameRecord], ground: &dyn Ground) -> 
     }
 
     let mut pop = 0.0f32;
-    for (t, pair) in frames.windows(2).enumerate() {
-        let (prev, cur) = (&pair[0], &pair[1]);
-        let t = t + 1;
-        if !(cur.dt > 0.0 && cur.dt.is_finite())
-            || cur.teleported
-            || samples.frames[t].is_none()
-            || samples.frames[t - 1].is_none()
-            || !frame_finite(prev)
-            || !frame_finite(cur)
+    let usable = |t: usize| {
+        let f = &frames[t];
+        f.dt > 0.0 && f.dt.is_finite() && !f.teleported && samples.frames[t].is_some()
+    };
+    for t in 2..frames.len() {
+        let (f0, f1, f2) = (&frames[t - 2], &frames[t - 1], &frames[t]);
+        if !usable(t - 1)
+            || !usable(t)
+            || samples.frames[t - 2].is_none()
+            || !frame_finite(f0)
+            || !frame_finite(f1)
+            || !frame_finite(f2)
         {
             continue;
         }
-        let scale = (1.0 / REFERENCE_HZ) / cur.dt;
+        // Change of the bone's velocity relative to the root, cm/s, times the square of a
+        // 60 Hz frame over the mean frame time: rate independent for smooth motion.
+        let scale = (1.0 / REFERENCE_HZ) * (1.0 / REFERENCE_HZ) / (0.5 * (f1.dt + f2.dt));
         let root = |f: &FrameRecord| f.world_position(rig.root).unwrap_or(Vec3::ZERO);
-        let (r0, r1) = (root(prev), root(cur));
+        let (r0, r1, r2) = (root(f0), root(f1), root(f2));
         for b in 0..bone_count {
-            if let (Some(p0), Some(p1)) = (prev.world_position(b), cur.world_position(b)) {
-                let jump = ((p1 - r1) - (p0 - r0)).length() * scale;
+            if let (Some(p0), Some(p1), Some(p2)) = (
+                f0.world_position(b),
+                f1.world_position(b),
+                f2.world_position(b),
+            ) {
+                let before = ((p1 - r1) - (p0 - r0)) / f1.dt;
+                let after = ((p2 - r2) - (p1 - r1)) / f2.dt;
+                let jump = (after - before).length() * scale;
                 if jump.is_finite() {
                     pop = pop.max(jump);
                 }

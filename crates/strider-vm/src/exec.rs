@@ -24,6 +24,10 @@ pub(crate) struct Ctx<'a> {
     /// Number of this run (construction or frame), never 0: stateful nodes advance once per
     /// run and remember the run they last advanced in.
     pub run: i32,
+    /// Where to accumulate per-instruction time and counts (indexed by instruction), when
+    /// profiling is on.
+    #[cfg(feature = "profile")]
+    pub profile: Option<&'a mut [crate::profile::InstrProfile]>,
 }
 
 /// A bone slot's value as an index into the pose, if it names a bone.
@@ -62,11 +66,37 @@ fn copy_vec<T: Clone>(v: &mut [Vec<T>], from: usize, to: usize) {
 
 /// Runs from `entry` until an `End` instruction.
 pub(crate) fn run(program: &Program, entry: u32, cx: &mut Ctx<'_>) {
+    // Profiling picks a separately compiled copy of the loop once per run, so the copy that
+    // runs unprofiled has no per-instruction test; without the feature there is no timing
+    // code at all.
+    #[cfg(feature = "profile")]
+    if let Some(profile) = cx.profile.take() {
+        run_loop::<true>(program, entry, cx, profile);
+        return;
+    }
+    run_loop::<false>(program, entry, cx, &mut []);
+}
+
+/// The executor loop. With `PROFILE` (only instantiated with the `profile` feature), adds
+/// each instruction's elapsed time and one run to `profile[pc]`.
+#[cfg_attr(not(feature = "profile"), allow(unused_variables))]
+fn run_loop<const PROFILE: bool>(
+    program: &Program,
+    entry: u32,
+    cx: &mut Ctx<'_>,
+    profile: &mut [crate::profile::InstrProfile],
+) {
     let code: &[Instr] = &program.code;
     let operands: &[u32] = &program.operands;
     let s = &mut *cx.slots;
     let mut pc = entry as usize;
+    // One clock read per instruction: an instruction's time runs from the end of the one
+    // before it to its own end.
+    #[cfg(feature = "profile")]
+    let mut last = PROFILE.then(std::time::Instant::now);
     loop {
+        #[cfg(feature = "profile")]
+        let here = pc;
         let Instr { op, args } = code[pc];
         pc += 1;
         let o = &operands[args as usize..];
@@ -106,7 +136,13 @@ pub(crate) fn run(program: &Program, entry: u32, cx: &mut Ctx<'_>) {
             };
         }
         match op {
-            Op::End => return,
+            Op::End => {
+                #[cfg(feature = "profile")]
+                if PROFILE {
+                    profile[here].count += 1;
+                }
+                return;
+            }
             Op::Jump => pc = o[0] as usize,
             Op::JumpIfFalse => {
                 if !b!(0) {
@@ -663,6 +699,14 @@ pub(crate) fn run(program: &Program, entry: u32, cx: &mut Ctx<'_>) {
                     thickness: f!(2),
                 });
             }
+        }
+        #[cfg(feature = "profile")]
+        if PROFILE && let Some(started) = last {
+            let now = std::time::Instant::now();
+            let entry = &mut profile[here];
+            entry.nanos += now.duration_since(started).as_nanos() as u64;
+            entry.count += 1;
+            last = Some(now);
         }
     }
 }

@@ -121,6 +121,12 @@ pub struct Instance {
     to_world: Transform,
     /// Runs so far (construction and frames); stateful nodes use it to advance once per run.
     runs: i32,
+    /// Whether runs accumulate into `profile`.
+    #[cfg(feature = "profile")]
+    profiling: bool,
+    /// Per instruction: time and runs, allocated once with the instance.
+    #[cfg(feature = "profile")]
+    profile: Vec<crate::profile::InstrProfile>,
 }
 
 impl Instance {
@@ -132,6 +138,8 @@ impl Instance {
     /// skeleton lacks, with where the graph names it.
     pub fn new(program: Arc<Program>, skeleton: Arc<Skeleton>) -> Result<Self, InstantiateError> {
         let slots = program.initial.clone();
+        #[cfg(feature = "profile")]
+        let profile = vec![crate::profile::InstrProfile::default(); program.code.len()];
         let mut instance = Self {
             program,
             slots,
@@ -139,6 +147,10 @@ impl Instance {
             debug: DebugDraw::new(false),
             to_world: Transform::IDENTITY,
             runs: 0,
+            #[cfg(feature = "profile")]
+            profiling: false,
+            #[cfg(feature = "profile")]
+            profile,
         };
         instance.resolve_bones()?;
         instance.run_construction(&EmptyWorld);
@@ -163,6 +175,10 @@ impl Instance {
             debug: DebugDraw::new(false),
             to_world: self.to_world,
             runs: 0,
+            #[cfg(feature = "profile")]
+            profiling: self.profiling,
+            #[cfg(feature = "profile")]
+            profile: Vec::new(),
         };
         next.resolve_bones()?;
         for v in self
@@ -174,6 +190,10 @@ impl Instance {
             copy_slot(&self.slots, &mut next.slots, v.ty, v.slot);
         }
         next.debug = std::mem::take(&mut self.debug);
+        #[cfg(feature = "profile")]
+        {
+            next.profile = std::mem::take(&mut self.profile);
+        }
         *self = next;
         self.run_construction(world);
         Ok(())
@@ -214,6 +234,47 @@ impl Instance {
         }
     }
 
+    /// Switches per-instruction profiling on or off (off at creation, so construction run
+    /// by [`Instance::new`] is not profiled). While on, every run of either event adds each
+    /// executed instruction's time and one count to [`Instance::profile`]; nothing is
+    /// allocated. Only with the `profile` feature of `strider-vm`.
+    #[cfg(feature = "profile")]
+    pub fn set_profiling(&mut self, on: bool) {
+        self.profiling = on;
+    }
+
+    /// Whether profiling is on (always `false` without the `profile` feature).
+    #[must_use]
+    pub fn is_profiling(&self) -> bool {
+        #[cfg(feature = "profile")]
+        return self.profiling;
+        #[cfg(not(feature = "profile"))]
+        false
+    }
+
+    /// The accumulated profile, one entry per instruction of the program (indexed like
+    /// [`Program::code`]), since creation or the last [`Instance::reset_profile`]. Group it
+    /// per graph node with [`Instance::profile_by_node`]. Only with the `profile` feature.
+    #[cfg(feature = "profile")]
+    #[must_use]
+    pub fn profile(&self) -> &[crate::profile::InstrProfile] {
+        &self.profile
+    }
+
+    /// Zeroes the accumulated profile (keeps its memory; profiling stays on or off).
+    #[cfg(feature = "profile")]
+    pub fn reset_profile(&mut self) {
+        self.profile.fill(crate::profile::InstrProfile::default());
+    }
+
+    /// The accumulated profile grouped per graph node or step, most expensive first (see
+    /// [`crate::profile_by_node`]). Allocates: for tools. Only with the `profile` feature.
+    #[cfg(feature = "profile")]
+    #[must_use]
+    pub fn profile_by_node(&self) -> Vec<crate::profile::NodeProfile> {
+        crate::profile::profile_by_node(&self.program, &self.profile)
+    }
+
     /// The program this instance runs.
     #[must_use]
     pub fn program(&self) -> &Arc<Program> {
@@ -233,6 +294,8 @@ impl Instance {
             dt: 0.0,
             to_world: self.to_world,
             run: next_run(&mut self.runs),
+            #[cfg(feature = "profile")]
+            profile: self.profiling.then_some(&mut self.profile[..]),
         };
         exec::run(&self.program, entry, &mut cx);
     }
@@ -268,6 +331,8 @@ impl Instance {
             dt,
             to_world: self.to_world,
             run: next_run(&mut self.runs),
+            #[cfg(feature = "profile")]
+            profile: self.profiling.then_some(&mut self.profile[..]),
         };
         exec::run(&self.program, entry, &mut cx);
     }

@@ -24,12 +24,15 @@
 
 mod exec;
 pub mod instance;
+pub mod profile;
 pub mod program;
 pub mod slots;
 
 pub use instance::{FrameInput, InputPose, Instance, InstantiateError, MissingBone, VariableError};
+pub use profile::{InstrProfile, NodeProfile, PROFILING_AVAILABLE, profile_by_node};
 pub use program::{
-    BoneLiteral, BoneSlot, Instr, Program, ProgramBuilder, VariableId, VariableInfo,
+    BoneLiteral, BoneSlot, Event, Instr, InstrOrigin, OriginId, OriginKind, OriginScope, Program,
+    ProgramBuilder, VariableId, VariableInfo,
 };
 pub use slots::Slots;
 pub use strider_core::{DebugDraw, EmptyWorld, TraceHit, WorldQuery};

@@ -2,6 +2,8 @@
 //! compiler's way of making one.
 
 use crate::slots::Slots;
+use std::collections::HashMap;
+use std::fmt;
 use strider_nodes::{Op, Value, ValueType};
 
 /// One instruction: an op and where its operands start in [`Program::operands`].
@@ -60,6 +62,104 @@ pub struct BoneLiteral {
     pub location: String,
 }
 
+/// One of a graph's two events.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum Event {
+    /// Runs when an instance is created (and on rebind).
+    Construction,
+    /// Runs every frame.
+    Forward,
+}
+
+impl fmt::Display for Event {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.write_str(match self {
+            Event::Construction => "construction",
+            Event::Forward => "forward",
+        })
+    }
+}
+
+/// Where the graph element that produced an instruction sits.
+#[derive(Clone, Debug, PartialEq, Eq, Hash)]
+pub enum OriginScope {
+    /// At the graph's top level, emitted for this event (a top-level pure node used by both
+    /// events has one origin per event).
+    Event(Event),
+    /// In the body of this function (shared by every call site, every event).
+    Function(String),
+}
+
+impl fmt::Display for OriginScope {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            OriginScope::Event(e) => write!(f, "{e}"),
+            OriginScope::Function(name) => write!(f, "function `{name}`"),
+        }
+    }
+}
+
+/// What kind of graph element produced an instruction.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum OriginKind {
+    /// A built-in node (its op, and any Int → Float conversion of its inputs).
+    Node,
+    /// A function call node: the copies of its arguments, outputs and locals (the callee's
+    /// body has origins of its own).
+    Call,
+    /// A step of an exec list: `Set`, `Branch`, `ForEach`, `For`, `Return`, or the `End`
+    /// of an event.
+    Step,
+}
+
+/// The source-map entry of an instruction: which graph node or step produced it.
+///
+/// Kept in a side table of the [`Program`] (see [`Program::instruction_origin`]); the
+/// executor never reads it.
+#[derive(Clone, Debug, PartialEq, Eq, Hash)]
+pub struct InstrOrigin {
+    /// Node or step.
+    pub kind: OriginKind,
+    /// The node's id; `None` for an anonymous inline node and for steps.
+    pub node_id: Option<String>,
+    /// The node type (`Sin`, `TwoBoneIK`, ...), the function's name for a call, or the step
+    /// (`Set`, `Branch`, `ForEach`, `For`, `Return`, `End`).
+    pub node_type: String,
+    /// The function the node sits in, or the event for the graph's top level.
+    pub scope: OriginScope,
+    /// Where it is written, `file:line:col`; empty when unknown (`End`).
+    pub location: String,
+}
+
+impl InstrOrigin {
+    /// The node's id, or its type for an anonymous node or a step (for display).
+    #[must_use]
+    pub fn label(&self) -> &str {
+        self.node_id.as_deref().unwrap_or(&self.node_type)
+    }
+}
+
+impl fmt::Display for InstrOrigin {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match &self.node_id {
+            Some(id) => write!(f, "`{id}` ({})", self.node_type)?,
+            None => write!(f, "{}", self.node_type)?,
+        }
+        write!(f, " in {}", self.scope)?;
+        if !self.location.is_empty() {
+            write!(f, " at {}", self.location)?;
+        }
+        Ok(())
+    }
+}
+
+/// Identifies an entry of a program's origin table ([`Program::origins`]).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, PartialOrd, Ord)]
+pub struct OriginId(pub u32);
+
+/// Marks an instruction without origin in [`Program`]'s per-instruction origin list.
+const NO_ORIGIN: u32 = u32::MAX;
+
 /// A compiled graph: flat instructions, operand slot indices, the initial memory image,
 /// and the tables the host needs. Immutable and `Send + Sync`; share it with `Arc`.
 #[derive(Clone, Debug)]
@@ -73,6 +173,10 @@ pub struct Program {
     pub(crate) texts: Vec<String>,
     pub(crate) bones: Vec<BoneLiteral>,
     pub(crate) variables: Vec<VariableInfo>,
+    /// Distinct origins, each once.
+    pub(crate) origins: Vec<InstrOrigin>,
+    /// Per instruction, an index into `origins` or [`NO_ORIGIN`]. Same length as `code`.
+    pub(crate) instr_origins: Vec<u32>,
 }
 
 impl Program {
@@ -126,6 +230,34 @@ impl Program {
     pub fn initial_slots(&self) -> &Slots {
         &self.initial
     }
+
+    /// Which graph node or step produced instruction `pc` (an index into
+    /// [`Program::code`]); `None` if out of range or not recorded (a hand-built program).
+    #[must_use]
+    pub fn instruction_origin(&self, pc: usize) -> Option<&InstrOrigin> {
+        self.origin_id(pc).map(|id| &self.origins[id.0 as usize])
+    }
+
+    /// The id of instruction `pc`'s origin, for grouping instructions by node.
+    #[must_use]
+    pub fn origin_id(&self, pc: usize) -> Option<OriginId> {
+        match self.instr_origins.get(pc) {
+            Some(&i) if i != NO_ORIGIN => Some(OriginId(i)),
+            _ => None,
+        }
+    }
+
+    /// The origin table: every distinct origin once, indexed by [`OriginId`].
+    #[must_use]
+    pub fn origins(&self) -> &[InstrOrigin] {
+        &self.origins
+    }
+
+    /// An origin by id.
+    #[must_use]
+    pub fn origin(&self, id: OriginId) -> &InstrOrigin {
+        &self.origins[id.0 as usize]
+    }
 }
 
 /// Builds a [`Program`]: allocates slots, places constants, emits instructions and patches
@@ -133,6 +265,10 @@ impl Program {
 #[derive(Debug)]
 pub struct ProgramBuilder {
     program: Program,
+    /// Origin given to instructions emitted now.
+    current_origin: Option<OriginId>,
+    /// Origin → its id, so each is stored once.
+    origin_ids: HashMap<InstrOrigin, OriginId>,
 }
 
 impl ProgramBuilder {
@@ -150,7 +286,11 @@ impl ProgramBuilder {
                 texts: Vec::new(),
                 bones: Vec::new(),
                 variables: Vec::new(),
+                origins: Vec::new(),
+                instr_origins: Vec::new(),
             },
+            current_origin: None,
+            origin_ids: HashMap::new(),
         }
     }
 
@@ -222,7 +362,26 @@ impl ProgramBuilder {
         let args = p.operands.len() as u32;
         p.operands.extend_from_slice(operands);
         p.code.push(Instr { op, args });
-        (p.code.len() - 1) as u32
+        let origin = self.current_origin.map_or(NO_ORIGIN, |o| o.0);
+        self.program.instr_origins.push(origin);
+        (self.program.code.len() - 1) as u32
+    }
+
+    /// The id of `origin` in the program's origin table, adding it if new.
+    pub fn intern_origin(&mut self, origin: InstrOrigin) -> OriginId {
+        if let Some(&id) = self.origin_ids.get(&origin) {
+            return id;
+        }
+        let id = OriginId(self.program.origins.len() as u32);
+        self.program.origins.push(origin.clone());
+        self.origin_ids.insert(origin, id);
+        id
+    }
+
+    /// Sets the origin recorded for the instructions emitted from now on (`None`: no
+    /// origin); returns the previous one, to restore after a nested node.
+    pub fn set_origin(&mut self, origin: Option<OriginId>) -> Option<OriginId> {
+        std::mem::replace(&mut self.current_origin, origin)
     }
 
     /// Sets operand `index` of instruction `at` (used to patch jump targets).

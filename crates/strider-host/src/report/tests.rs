@@ -408,10 +408,28 @@ fn pops_are_relative_to_the_root_and_normalised_to_60_hz() {
         fx.shift(&mut frames[7], "head", Vec3::new(0.0, 0.0, 50.0));
         analyse(&fx.rig, &frames, &FlatGround(0.0)).pop_cm_per_frame_max
     };
-    // 10 cm in a 1/60 s frame: 10 cm per 60 Hz frame.
+    // 10 cm in a 1/60 s frame: the relative velocity goes 0 → 600 cm/s → 0, a change of
+    // 600 cm/s · (1/60)² / (1/60) = 10 cm per 60 Hz frame.
     assert!(near(run(60), 10.0, 1e-3), "{}", run(60));
-    // 10 cm in a 1/30 s frame: 10 · (1/60) / (1/30) = 5 cm per 60 Hz frame.
-    assert!(near(run(30), 5.0, 1e-3), "{}", run(30));
+    // 10 cm in a 1/30 s frame: 300 cm/s · (1/60)² / (1/30) = 2.5.
+    assert!(near(run(30), 2.5, 1e-3), "{}", run(30));
+}
+
+#[test]
+fn smooth_acceleration_scores_the_same_at_every_frame_rate() {
+    // The head accelerates along rig x at a = 3600 cm/s² (x = a·t²/2): the second
+    // difference of a parabola is exactly a·dt², so the pop is a / 60² = 1 cm per 60 Hz
+    // frame at any rate.
+    let fx = Fixture::new();
+    for hz in [30, 60, 144, 240] {
+        let mut frames = fx.frames(20, hz);
+        for (k, f) in frames.iter_mut().enumerate() {
+            let t = k as f32 / hz as f32;
+            fx.shift(f, "head", Vec3::new(0.5 * 3600.0 * t * t, 0.0, 0.0));
+        }
+        let pop = analyse(&fx.rig, &frames, &FlatGround(0.0)).pop_cm_per_frame_max;
+        assert!(near(pop, 1.0, 2e-3), "{hz} Hz: {pop}");
+    }
 }
 
 #[test]

@@ -1,0 +1,244 @@
+//! Instruction origins (the compiler's source map, always on) and per-instruction
+//! profiling (only with the `profile` feature: `cargo test --features profile --test
+//! profile`). The zero-allocation check with profiling on is in `tests/allocations.rs`.
+
+use std::path::Path;
+use std::sync::Arc;
+use strider_nodes::Op;
+use strider_vm::{Event, OriginKind, OriginScope, Program};
+
+const GRAPH: &str = r#"Graph(
+    version: 1,
+    name: "profiled",
+    variables: {
+        "N":   (type: Int, default: 5),
+        "Acc": (type: Float),
+        "Out": (type: Float),
+        "Out2": (type: Float),
+    },
+    functions: {
+        "Twice": (
+            inputs:  { "x": Float },
+            outputs: { "y": Float },
+            nodes:   { "double": Multiply(a: "x", b: 2.0) },
+            exec:    [ Return(y: "double") ],
+        ),
+    },
+    nodes: {
+        "acc_next": Add(a: var("Acc"), b: 1.0),
+        "twice":    Twice(x: var("Acc")),
+        "twice2":   Twice(x: 4.0),
+    },
+    events: {
+        forward: [
+            Set("Acc", 0.0),
+            For(count: var("N"), index: "k", body: [
+                Set("Acc", "acc_next"),
+            ]),
+            Set("Out", "twice"),
+            Set("Out2", "twice2"),
+        ],
+    },
+)
+"#;
+
+const PATH: &str = "tests/graphs/profiled.ron";
+
+fn compile() -> Arc<Program> {
+    match strider_compiler::compile_str(Path::new(PATH), GRAPH) {
+        Ok(p) => Arc::new(p),
+        Err(d) => panic!("{d:?}"),
+    }
+}
+
+/// `PATH:line:` of the first line of `GRAPH` containing `text`.
+fn line_of(text: &str) -> String {
+    let line = GRAPH
+        .lines()
+        .position(|l| l.contains(text))
+        .expect("text in graph")
+        + 1;
+    format!("{PATH}:{line}:")
+}
+
+/// The positions of the instructions running `op`.
+fn pcs(program: &Program, op: Op) -> Vec<usize> {
+    (0..program.code().len())
+        .filter(|&pc| program.code()[pc].op == op)
+        .collect()
+}
+
+#[test]
+fn every_instruction_names_the_node_or_step_that_produced_it() {
+    let program = compile();
+    for pc in 0..program.code().len() {
+        assert!(program.instruction_origin(pc).is_some(), "pc {pc}");
+    }
+    assert!(program.instruction_origin(program.code().len()).is_none());
+
+    // The loop body's Add: a top-level node, emitted in forward.
+    let add = pcs(&program, Op::AddF);
+    assert_eq!(add.len(), 1);
+    let o = program.instruction_origin(add[0]).unwrap();
+    assert_eq!(o.kind, OriginKind::Node);
+    assert_eq!(o.node_id.as_deref(), Some("acc_next"));
+    assert_eq!(o.node_type, "Add");
+    assert_eq!(o.scope, OriginScope::Event(Event::Forward));
+    assert!(o.location.starts_with(&line_of("\"acc_next\"")), "{o}");
+
+    // The Multiply inside the function: one copy per call site, one origin.
+    let mul = pcs(&program, Op::MulF);
+    assert_eq!(mul.len(), 2);
+    assert_eq!(program.origin_id(mul[0]), program.origin_id(mul[1]));
+    let o = program.instruction_origin(mul[0]).unwrap();
+    assert_eq!(o.node_id.as_deref(), Some("double"));
+    assert_eq!(o.node_type, "Multiply");
+    assert_eq!(o.scope, OriginScope::Function("Twice".to_string()));
+    assert!(o.location.starts_with(&line_of("\"double\"")), "{o}");
+    assert_eq!(
+        o.to_string(),
+        format!("`double` (Multiply) in function `Twice` at {}", o.location)
+    );
+
+    // The loop test, the call's argument copies, the Set steps and the End.
+    let o = program
+        .instruction_origin(pcs(&program, Op::ForNext)[0])
+        .unwrap();
+    assert_eq!((o.kind, o.node_type.as_str()), (OriginKind::Step, "For"));
+    assert!(o.location.starts_with(&line_of("For(count")), "{o}");
+    let call = (0..program.code().len())
+        .filter_map(|pc| program.instruction_origin(pc))
+        .find(|o| o.kind == OriginKind::Call)
+        .expect("the call has an origin");
+    assert_eq!(call.node_id.as_deref(), Some("twice"));
+    assert_eq!(call.node_type, "Twice");
+    let sets: Vec<&str> = program
+        .origins()
+        .iter()
+        .filter(|o| o.node_type.starts_with("Set("))
+        .map(|o| o.node_type.as_str())
+        .collect();
+    assert_eq!(
+        sets,
+        [
+            "Set(\"Acc\")",
+            "Set(\"Acc\")",
+            "Set(\"Out\")",
+            "Set(\"Out2\")"
+        ]
+    );
+    let end = pcs(&program, Op::End);
+    assert_eq!(
+        program.instruction_origin(end[1]).unwrap().scope,
+        OriginScope::Event(Event::Forward)
+    );
+}
+
+#[test]
+fn shipped_graphs_have_an_origin_with_a_location_for_every_instruction() {
+    for path in [
+        "graphs/foot_ik.ron",
+        "graphs/pelvis_bob.ron",
+        "tests/graphs/functions.ron",
+        "tests/graphs/control_flow.ron",
+    ] {
+        let program = strider_compiler::compile_file(Path::new(path)).expect("compiles");
+        for pc in 0..program.code().len() {
+            let o = program
+                .instruction_origin(pc)
+                .unwrap_or_else(|| panic!("{path}: pc {pc} has no origin"));
+            if o.node_type != "End" {
+                assert!(!o.location.is_empty(), "{path}: pc {pc}: {o}");
+            }
+            if o.kind != OriginKind::Step {
+                // Node origins point at the node's own file.
+                assert!(o.location.contains(".ron:"), "{path}: {o}");
+            }
+        }
+    }
+}
+
+#[cfg(feature = "profile")]
+mod profiling {
+    use super::*;
+    use strider_core::EmptyWorld;
+    use strider_nodes::Value;
+    use strider_vm::{FrameInput, Instance};
+
+    fn mannequin() -> Arc<strider_core::Skeleton> {
+        strider_graph::load_skeleton(Path::new("graphs/skeletons/mannequin.ron"))
+            .expect("mannequin loads")
+            .skeleton
+    }
+
+    #[test]
+    fn a_loop_body_runs_once_per_iteration() {
+        let program = compile();
+        let mut inst = Instance::new(Arc::clone(&program), mannequin()).expect("instantiates");
+        let input = FrameInput {
+            dt: 1.0 / 60.0,
+            ..Default::default()
+        };
+        inst.set_profiling(true);
+        inst.run_forward(&input, &EmptyWorld, false);
+        let add = pcs(&program, Op::AddF)[0];
+        assert_eq!(inst.profile()[add].count, 5);
+        assert_eq!(inst.profile()[pcs(&program, Op::ForNext)[0]].count, 6);
+        assert_eq!(inst.profile()[pcs(&program, Op::MulF)[0]].count, 1);
+
+        let n = program.variable_id("N").unwrap();
+        inst.set_variable(n, &Value::Int(9)).unwrap();
+        inst.reset_profile();
+        for _ in 0..3 {
+            inst.run_forward(&input, &EmptyWorld, false);
+        }
+        assert_eq!(inst.profile()[add].count, 27);
+        let out = program.variable_id("Out").unwrap();
+        assert_eq!(inst.variable(out), Value::Float(18.0));
+
+        let by_node = inst.profile_by_node();
+        let acc = by_node
+            .iter()
+            .find(|p| p.origin(&program).and_then(|o| o.node_id.as_deref()) == Some("acc_next"))
+            .expect("acc_next profiled");
+        assert_eq!((acc.runs, acc.instructions), (27, 27));
+        assert!(acc.nanos > 0);
+        let double = by_node
+            .iter()
+            .find(|p| p.origin(&program).and_then(|o| o.node_id.as_deref()) == Some("double"))
+            .expect("double profiled");
+        // Two call sites, three frames.
+        assert_eq!((double.runs, double.instructions), (6, 6));
+        assert_eq!(
+            inst.variable(program.variable_id("Out2").unwrap()),
+            Value::Float(8.0)
+        );
+        assert!(by_node.windows(2).all(|w| w[0].nanos >= w[1].nanos));
+    }
+
+    #[test]
+    fn foot_ik_profile_accounts_for_every_instruction_run() {
+        let program =
+            Arc::new(strider_compiler::compile_file(Path::new("graphs/foot_ik.ron")).unwrap());
+        let mut inst = Instance::new(Arc::clone(&program), mannequin()).expect("instantiates");
+        let input = FrameInput {
+            dt: 1.0 / 60.0,
+            ..Default::default()
+        };
+        inst.set_profiling(true);
+        for _ in 0..10 {
+            inst.run_forward(&input, &EmptyWorld, false);
+        }
+        let by_node = inst.profile_by_node();
+        let executed: u64 = inst.profile().iter().map(|p| p.count).sum();
+        assert_eq!(
+            by_node.iter().map(|p| p.instructions).sum::<u64>(),
+            executed
+        );
+        // Every forward End ran once per frame; nothing of construction ran.
+        let end = pcs(&program, Op::End);
+        assert_eq!(inst.profile()[end[0]].count, 0);
+        assert_eq!(inst.profile()[end[1]].count, 10);
+        assert!(by_node.iter().all(|p| p.origin.is_some()));
+    }
+}
