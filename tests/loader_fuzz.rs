@@ -14,6 +14,7 @@ use std::panic::{AssertUnwindSafe, catch_unwind};
 use std::path::{Path, PathBuf};
 use std::sync::{Arc, OnceLock};
 use strider_core::{EmptyWorld, Skeleton};
+use strider_host::scenario::Scenario;
 use strider_nodes::{Effect, ValueType, registry};
 use strider_vm::{FrameInput, Instance};
 
@@ -64,8 +65,9 @@ fn mannequin() -> Arc<Skeleton> {
     }))
 }
 
-/// Feeds `text` to both loaders, as if it were the file at `path`. Returns whether the
-/// graph compiled. Any panic fails the test with the input shown.
+/// Feeds `text` to every loader (graph, skeleton, scenario), as if it were the file at
+/// `path`. Returns whether the graph compiled. Any panic fails the test with the input
+/// shown.
 fn load_both(path: &Path, text: &str) -> bool {
     let graph = catch_unwind(AssertUnwindSafe(|| {
         strider_compiler::compile_str(path, text).is_ok()
@@ -73,6 +75,14 @@ fn load_both(path: &Path, text: &str) -> bool {
     let skeleton = catch_unwind(AssertUnwindSafe(|| {
         let _ = strider_graph::load_skeleton_str(path, text.to_string());
     }));
+    let scenario = catch_unwind(AssertUnwindSafe(|| {
+        let _ = Scenario::parse(text, &path.display().to_string());
+    }));
+    assert!(
+        scenario.is_ok(),
+        "Scenario::parse panicked on this input ({}):\n{text}",
+        path.display()
+    );
     assert!(
         graph.is_ok(),
         "compile_str panicked on this input ({}):\n{text}",
@@ -110,6 +120,7 @@ fn the_corpus_is_complete_and_loads() {
         "graphs/pelvis_bob.ron",
         "graphs/examples/feet_finder.ron",
         "graphs/skeletons/mannequin.ron",
+        "graphs/scenarios/walk_flat.ron",
     ] {
         assert!(
             names.iter().any(|n| n == expected),
@@ -117,7 +128,13 @@ fn the_corpus_is_complete_and_loads() {
         );
     }
     for (path, text) in files {
-        if path.components().any(|c| c.as_os_str() == "skeletons") {
+        if path.components().any(|c| c.as_os_str() == "scenarios") {
+            assert!(
+                Scenario::parse(text, &path.display().to_string()).is_ok(),
+                "{}",
+                path.display()
+            );
+        } else if path.components().any(|c| c.as_os_str() == "skeletons") {
             assert!(
                 strider_graph::load_skeleton_str(path, text.clone()).is_ok(),
                 "{}",
