@@ -19,7 +19,7 @@ pub(crate) fn instantiate(
     skeleton: &SkeletonFile,
     path: &Path,
 ) -> anyhow::Result<Instance> {
-    match Instance::new(Arc::clone(&program), skeleton.skeleton.clone()) {
+    match Instance::new(Arc::clone(program), skeleton.skeleton.clone()) {
         Ok(instance) => Ok(instance),
         Err(InstantiateError::MissingBones { mut missing, .. }) => {
             // A pure node emitted in front of several exec steps reports the same reference
