@@ -263,3 +263,42 @@ fn profiled_frames_do_not_allocate() {
         assert_eq!(n, 0, "{path}: toggling profiling allocated {n} times");
     }
 }
+
+/// The locomotion graph walking a scenario (traces against the scenario's world, the
+/// capsule moving, debug drawing on and off): once each foot has swung (arrays, such as a
+/// spline's control points, and the debug buffer have reached their working size — the
+/// first steps start about a second in), forward runs allocate nothing. Only `run_forward` is counted; the demo host's mover is not part of
+/// the runtime.
+#[test]
+fn locomotion_frames_in_a_scenario_do_not_allocate() {
+    let _guard = SERIAL.lock().unwrap_or_else(|e| e.into_inner());
+    for scenario in ["walk_flat", "stairs_up_down", "strafe_8dir"] {
+        let scenario =
+            strider_host::scenario::Scenario::load(format!("graphs/scenarios/{scenario}.ron"))
+                .unwrap();
+        let mut sim = strider_host::scenario::Simulation::new(&scenario, 60);
+        let mut inst = instance("graphs/locomotion.ron");
+        let mut counted = 0;
+        let mut allocations = 0;
+        while let Some(frame) = sim.next_frame() {
+            let input = FrameInput {
+                dt: frame.dt,
+                component_to_world: frame.component_to_world,
+                pose: InputPose::Rest,
+            };
+            let debug = frame.index % 2 == 0;
+            if frame.time < 3.0 {
+                inst.run_forward(&input, sim.world(), debug);
+            } else {
+                allocations += allocations_in(|| inst.run_forward(&input, sim.world(), debug));
+                counted += 1;
+            }
+        }
+        assert!(counted > 300, "{}: {counted} frames", scenario.name);
+        assert_eq!(
+            allocations, 0,
+            "{}: {allocations} allocations in {counted} frames",
+            scenario.name
+        );
+    }
+}

@@ -5,7 +5,7 @@
 //! strider run GRAPH --skeleton SKEL [...]     run a graph headless, optionally dump poses
 //! strider report GRAPH --skeleton SKEL --scenario SCEN   measure the motion in a scenario
 //! strider nodes [--markdown]                  list the built-in nodes
-//! strider                                     the demo: pelvis_bob on the mannequin
+//! strider                                     the demo: the locomotion report on walk_flat
 //! ```
 //!
 //! The binary itself lives in the root `strider` package (`src/main.rs`), which only calls
@@ -25,12 +25,12 @@ use clap::{Parser, Subcommand};
 use std::path::PathBuf;
 use std::process::ExitCode;
 
-/// The demo graph `strider` runs without a subcommand, relative to the current directory.
-const DEMO_GRAPH: &str = "graphs/pelvis_bob.ron";
+/// The graph `strider` runs without a subcommand, relative to the current directory.
+const DEMO_GRAPH: &str = "graphs/locomotion.ron";
 /// The skeleton the demo runs on.
 const DEMO_SKELETON: &str = "graphs/skeletons/mannequin.ron";
-/// Frames the demo runs (two seconds at 60 Hz).
-const DEMO_FRAMES: u32 = 120;
+/// The scenario the demo walks through.
+const DEMO_SCENARIO: &str = "graphs/scenarios/walk_flat.ron";
 
 #[derive(Debug, Parser)]
 #[command(
@@ -42,9 +42,9 @@ const DEMO_FRAMES: u32 = 120;
         Skeletons are RON files (`Skeleton( ... )`) listing bones with rest transforms. \
         Rig space is +Z up, +Y forward, +X the character's left; lengths are centimetres, \
         angles degrees, time seconds.\n\n\
-        Without a subcommand, runs the demo: `strider run graphs/pelvis_bob.ron \
-        --skeleton graphs/skeletons/mannequin.ron --frames 120`, with paths relative to the \
-        current directory.",
+        Without a subcommand, runs the demo: `strider report graphs/locomotion.ron \
+        --skeleton graphs/skeletons/mannequin.ron --scenario graphs/scenarios/walk_flat.ron \
+        --compare-hz 30,60,144,240`, with paths relative to the current directory.",
     after_help = "Exit codes: 0 success, 1 failure (invalid files, I/O), 2 bad arguments."
 )]
 struct Cli {
@@ -95,28 +95,35 @@ fn run_cli() -> ExitCode {
     }
 }
 
-/// `strider` with no subcommand: the headless demo, then a hint about the subcommands.
+/// `strider` with no subcommand: the headless demo — the locomotion graph walking the
+/// `walk_flat` scenario, measured by the quality report — then a hint about the
+/// subcommands.
 fn demo() -> anyhow::Result<ExitCode> {
-    if !std::path::Path::new(DEMO_GRAPH).is_file() {
-        anyhow::bail!(
-            "`{DEMO_GRAPH}` not found in the current directory: run `strider` from the \
-             repository root, or see `strider --help`"
-        );
+    for file in [DEMO_GRAPH, DEMO_SKELETON, DEMO_SCENARIO] {
+        if !std::path::Path::new(file).is_file() {
+            anyhow::bail!(
+                "`{file}` not found in the current directory: run `strider` from the \
+                 repository root, or see `strider --help`"
+            );
+        }
     }
-    let args = run::RunArgs {
+    let args = report::ReportArgs {
         graph: PathBuf::from(DEMO_GRAPH),
         skeleton: PathBuf::from(DEMO_SKELETON),
-        frames: Some(DEMO_FRAMES),
-        scenario: None,
-        hz: run::DEFAULT_HZ,
+        scenario: PathBuf::from(DEMO_SCENARIO),
+        hz: 60,
+        json: false,
+        compare_hz: vec![30, 60, 144, 240],
+        plots: None,
         set: Vec::new(),
-        out: None,
-        debug: false,
+        check: false,
     };
-    let code = run::run(&args)?;
+    let code = report::run(&args)?;
     output::print_stdout(
-        "\nhint: this was the demo; subcommands: `strider check FILE...`, \
-         `strider run GRAPH --skeleton SKEL`, `strider nodes` (see `strider --help`)\n",
+        "\nhint: this was the demo (`strider report graphs/locomotion.ron --skeleton \
+         graphs/skeletons/mannequin.ron --scenario graphs/scenarios/walk_flat.ron \
+         --compare-hz 30,60,144,240`); other scenarios are in graphs/scenarios/. \
+         Subcommands: check, run, report, nodes (see `strider --help`)\n",
     )?;
     Ok(code)
 }
