@@ -51,16 +51,17 @@
 //! flagged [`SimFrame::teleported`]. The mover is put on the floor ([`Mover::settle`]) at
 //! the start and after each teleport, so those frames already stand on the ground.
 
-use std::fmt;
 use std::path::{Path, PathBuf};
 
 use glam::{Vec2, Vec3};
 use serde::Deserialize;
-use serde::de::{self, Deserializer, SeqAccess, Visitor};
+use serde::de::{self, Deserializer};
 use strider_core::Transform;
 
 use crate::mover::{Facing, MoveInput, Mover, MoverSettings, heading_vector};
-use crate::world::{World, WorldDesc, describe_ron_error, ron_options};
+use crate::world::{
+    CheckedElement, World, WorldDesc, describe_ron_error, deserialize_checked_seq, ron_options,
+};
 
 /// Rate of the mover's fixed internal step, Hz.
 pub const MOVER_RATE_HZ: u32 = 720;
@@ -312,7 +313,7 @@ struct ScenarioFile {
     start: Start,
     #[serde(default, deserialize_with = "deserialize_checked_mover")]
     mover: Option<MoverSettings>,
-    #[serde(deserialize_with = "deserialize_checked_timeline")]
+    #[serde(deserialize_with = "deserialize_checked_seq")]
     timeline: Vec<Segment>,
 }
 
@@ -326,31 +327,14 @@ fn deserialize_checked_mover<'de, D: Deserializer<'de>>(
     Ok(settings)
 }
 
-fn deserialize_checked_timeline<'de, D: Deserializer<'de>>(
-    deserializer: D,
-) -> Result<Vec<Segment>, D::Error> {
-    struct TimelineVisitor;
-    impl<'de> Visitor<'de> for TimelineVisitor {
-        type Value = Vec<Segment>;
-        fn expecting(&self, f: &mut fmt::Formatter) -> fmt::Result {
-            f.write_str("a list of timeline segments")
-        }
-        fn visit_seq<A: SeqAccess<'de>>(self, mut seq: A) -> Result<Self::Value, A::Error> {
-            let mut segments = Vec::new();
-            while let Some(segment) = seq.next_element::<Segment>()? {
-                if let Err(message) = segment.validate() {
-                    return Err(de::Error::custom(format!(
-                        "{} (segment {}): {message}",
-                        segment.kind(),
-                        segments.len()
-                    )));
-                }
-                segments.push(segment);
-            }
-            Ok(segments)
-        }
+impl CheckedElement for Segment {
+    const NOUN: &'static str = "segment";
+    fn kind(&self) -> &'static str {
+        Segment::kind(self)
     }
-    deserializer.deserialize_seq(TimelineVisitor)
+    fn validate(&self) -> Result<(), String> {
+        Segment::validate(self)
+    }
 }
 
 /// An error reading a scenario.

@@ -333,37 +333,61 @@ impl ShapeDesc {
 #[serde(deny_unknown_fields)]
 pub struct WorldDesc {
     /// The shapes. Each is checked while the file is read, so an error points at it.
-    #[serde(deserialize_with = "deserialize_checked_shapes")]
+    #[serde(deserialize_with = "deserialize_checked_seq")]
     pub shapes: Vec<ShapeDesc>,
 }
 
-/// Reads a list of shapes, validating each as soon as it is read so the parse error carries
-/// the position of the faulty shape.
-fn deserialize_checked_shapes<'de, D: Deserializer<'de>>(
-    deserializer: D,
-) -> Result<Vec<ShapeDesc>, D::Error> {
-    struct ShapesVisitor;
-    impl<'de> Visitor<'de> for ShapesVisitor {
-        type Value = Vec<ShapeDesc>;
+/// An element of a list that is validated as soon as it is read, so that a parse error
+/// carries the position of the faulty element (shapes of a world, segments of a timeline).
+pub(crate) trait CheckedElement: Sized {
+    /// What the list holds, for messages: "shape", "segment".
+    const NOUN: &'static str;
+    /// The element's variant name as written in RON.
+    fn kind(&self) -> &'static str;
+    /// Checks the element's values; the message names the field and the range.
+    fn validate(&self) -> Result<(), String>;
+}
+
+impl CheckedElement for ShapeDesc {
+    const NOUN: &'static str = "shape";
+    fn kind(&self) -> &'static str {
+        ShapeDesc::kind(self)
+    }
+    fn validate(&self) -> Result<(), String> {
+        ShapeDesc::validate(self)
+    }
+}
+
+/// Reads a list of `T`, validating each element as soon as it is read; an invalid one is
+/// reported as `Kind (noun index): message`.
+pub(crate) fn deserialize_checked_seq<'de, D, T>(deserializer: D) -> Result<Vec<T>, D::Error>
+where
+    D: Deserializer<'de>,
+    T: CheckedElement + Deserialize<'de>,
+{
+    struct CheckedVisitor<T>(std::marker::PhantomData<T>);
+    impl<'de, T: CheckedElement + Deserialize<'de>> Visitor<'de> for CheckedVisitor<T> {
+        type Value = Vec<T>;
         fn expecting(&self, f: &mut fmt::Formatter) -> fmt::Result {
-            f.write_str("a list of shapes")
+            write!(f, "a list of {}s", T::NOUN)
         }
         fn visit_seq<A: SeqAccess<'de>>(self, mut seq: A) -> Result<Self::Value, A::Error> {
-            let mut shapes = Vec::new();
-            while let Some(shape) = seq.next_element::<ShapeDesc>()? {
-                if let Err(message) = shape.validate() {
+            let mut items = Vec::new();
+            while let Some(item) = seq.next_element::<T>()? {
+                if let Err(message) = item.validate() {
                     return Err(de::Error::custom(format!(
-                        "{} (shape {}): {message}",
-                        shape.kind(),
-                        shapes.len()
+                        "{} ({} {}): {message}",
+                        item.kind(),
+                        T::NOUN,
+                        items.len()
                     )));
                 }
-                shapes.push(shape);
+                items.push(item);
             }
-            Ok(shapes)
+            Ok(items)
         }
     }
-    deserializer.deserialize_seq(ShapesVisitor)
+    deserializer.deserialize_seq(CheckedVisitor(std::marker::PhantomData))
 }
 
 /// An error reading or building a world.
