@@ -10,6 +10,7 @@
 //! Spaces and units: world +Z up, centimetres, seconds, as in the report.
 
 use crate::report::{FrameRecord, Ground, PlantSpan, Report, ReportRig, Samples, Side};
+use plotters::coord::types::RangedCoordf64;
 use plotters::prelude::*;
 use std::path::{Path, PathBuf};
 
@@ -168,6 +169,44 @@ fn err(e: impl std::fmt::Display) -> String {
     e.to_string()
 }
 
+/// A chart of these plots: an SVG with plain `f64` axes.
+type Chart<'a, 'b> = ChartContext<'a, SVGBackend<'b>, Cartesian2d<RangedCoordf64, RangedCoordf64>>;
+
+/// Draws each polyline as a solid line of `colour`; the first one carries the legend entry
+/// `label` (the others are the same series, broken where values were missing).
+fn draw_polylines<'a, 'b: 'a>(
+    chart: &mut Chart<'a, 'b>,
+    lines: Vec<Vec<(f64, f64)>>,
+    colour: RGBColor,
+    label: &str,
+) -> Result<(), String> {
+    for (n, line) in lines.into_iter().enumerate() {
+        let series = chart
+            .draw_series(LineSeries::new(line, colour.stroke_width(2)))
+            .map_err(err)?;
+        if n == 0 {
+            series.label(label).legend(move |(x, y)| {
+                PathElement::new(vec![(x, y), (x + 20, y)], colour.stroke_width(2))
+            });
+        }
+    }
+    Ok(())
+}
+
+/// Draws the legend box at `position`.
+fn draw_legend<'a, 'b: 'a>(
+    chart: &mut Chart<'a, 'b>,
+    position: SeriesLabelPosition,
+) -> Result<(), String> {
+    chart
+        .configure_series_labels()
+        .position(position)
+        .background_style(WHITE.mix(0.85))
+        .border_style(BLACK)
+        .draw()
+        .map_err(err)
+}
+
 fn foot_heights(
     rig: &ReportRig,
     frames: &[FrameRecord],
@@ -292,30 +331,14 @@ fn foot_heights(
                     .zip(heights(i))
                     .map(|(f, h)| h.map(|h| (f.time, h.clamp(y0, y1)))),
             );
-            for (n, line) in lines.into_iter().enumerate() {
-                let series = chart
-                    .draw_series(LineSeries::new(line, colour.stroke_width(2)))
-                    .map_err(err)?;
-                if n == 0 {
-                    series
-                        .label(format!(
-                            "{} ({}; shaded / bar below: planted)",
-                            leg.name,
-                            side_name(leg.side)
-                        ))
-                        .legend(move |(x, y)| {
-                            PathElement::new(vec![(x, y), (x + 20, y)], colour.stroke_width(2))
-                        });
-                }
-            }
+            let label = format!(
+                "{} ({}; shaded / bar below: planted)",
+                leg.name,
+                side_name(leg.side)
+            );
+            draw_polylines(&mut chart, lines, colour, &label)?;
         }
-        chart
-            .configure_series_labels()
-            .position(SeriesLabelPosition::UpperRight)
-            .background_style(WHITE.mix(0.85))
-            .border_style(BLACK)
-            .draw()
-            .map_err(err)?;
+        draw_legend(&mut chart, SeriesLabelPosition::UpperRight)?;
         root.present().map_err(err)?;
     }
     Ok(svg)
@@ -391,16 +414,7 @@ fn footprints(
             .y_label_formatter(&|y| format!("{y:.0}"))
             .draw()
             .map_err(err)?;
-        for (n, line) in polylines(path.into_iter()).into_iter().enumerate() {
-            let series = chart
-                .draw_series(LineSeries::new(line, GREY.stroke_width(2)))
-                .map_err(err)?;
-            if n == 0 {
-                series.label("root path").legend(|(x, y)| {
-                    PathElement::new(vec![(x, y), (x + 20, y)], GREY.stroke_width(2))
-                });
-            }
-        }
+        draw_polylines(&mut chart, polylines(path.into_iter()), GREY, "root path")?;
         for side in [Side::Left, Side::Right] {
             let colour = side_colour(side);
             let points: Vec<(f64, f64)> = plants
@@ -421,13 +435,7 @@ fn footprints(
                 .label(format!("{} foot plants", side_name(side)))
                 .legend(move |(x, y)| Circle::new((x + 10, y), 5, colour.filled()));
         }
-        chart
-            .configure_series_labels()
-            .position(SeriesLabelPosition::UpperLeft)
-            .background_style(WHITE.mix(0.85))
-            .border_style(BLACK)
-            .draw()
-            .map_err(err)?;
+        draw_legend(&mut chart, SeriesLabelPosition::UpperLeft)?;
         root.present().map_err(err)?;
     }
     Ok(svg)
@@ -493,25 +501,13 @@ fn pelvis_height(
                 });
             }
         }
-        for (n, line) in polylines(above.into_iter()).into_iter().enumerate() {
-            let series = chart
-                .draw_series(LineSeries::new(line, LEFT.stroke_width(2)))
-                .map_err(err)?;
-            if n == 0 {
-                series
-                    .label("above the ground below it (cm)")
-                    .legend(|(x, y)| {
-                        PathElement::new(vec![(x, y), (x + 20, y)], LEFT.stroke_width(2))
-                    });
-            }
-        }
-        chart
-            .configure_series_labels()
-            .position(SeriesLabelPosition::LowerRight)
-            .background_style(WHITE.mix(0.85))
-            .border_style(BLACK)
-            .draw()
-            .map_err(err)?;
+        draw_polylines(
+            &mut chart,
+            polylines(above.into_iter()),
+            LEFT,
+            "above the ground below it (cm)",
+        )?;
+        draw_legend(&mut chart, SeriesLabelPosition::LowerRight)?;
         root.present().map_err(err)?;
     }
     Ok(svg)
