@@ -10,9 +10,10 @@
 use crate::check::{Arg, Body, CStep, Checked, LoopPart, NodeKind, Src, VarRef};
 use std::collections::{HashMap, HashSet};
 use strider_graph::{EventKind, FunctionDecl, LoadedGraph, NodeDecl, Step};
-use strider_nodes::{Elem, Op, Value, ValueType};
+use strider_nodes::{Elem, Op, Value, ValueType, registry};
 use strider_vm::{
-    Event, InstrOrigin, OriginId, OriginKind, OriginScope, Program, ProgramBuilder, VariableInfo,
+    Event, InstrOrigin, OriginId, OriginKind, OriginScope, PinOwner, PinSlot, Program,
+    ProgramBuilder, VariableInfo,
 };
 
 /// What the document says about one node of a checked body (same index), for origins.
@@ -196,7 +197,7 @@ pub(crate) fn generate(loaded: &LoadedGraph, checked: &Checked) -> Program {
             location: v.location.clone(),
         });
     }
-    let top = g.frame(None);
+    let top = g.frame(None, Vec::new());
     for (steps, doc, event) in [
         (
             &checked.graph.construction,
@@ -290,8 +291,80 @@ impl Gen<'_> {
         }
     }
 
-    /// Allocates the slots of one instance of a body (and, recursively, of its calls).
-    fn frame(&mut self, function: Option<usize>) -> usize {
+    /// Output pin names of node `n` of body `body` (`None`: the graph), for the pin table.
+    fn output_names(&self, body: Option<usize>, n: usize) -> Vec<String> {
+        let node = match body {
+            None => &self.checked.graph.nodes[n],
+            Some(f) => &self.checked.functions[f].nodes[n],
+        };
+        match node.kind {
+            NodeKind::Call(f) => self.fn_decls[f]
+                .outputs
+                .iter()
+                .map(|p| p.name.name.clone())
+                .collect(),
+            NodeKind::Builtin(op) => {
+                let sources = &self.node_sources[body.unwrap_or(self.node_sources.len() - 1)];
+                sources
+                    .get(n)
+                    .and_then(|src| registry().get(&src.kind))
+                    .and_then(|spec| spec.overloads.iter().find(|o| o.op == op))
+                    .map(|o| o.outputs.iter().map(|p| p.name.to_string()).collect())
+                    .unwrap_or_default()
+            }
+        }
+    }
+
+    /// Records the slots of a body instance's inputs and locals (functions) and of its node
+    /// outputs in the program's pin table.
+    fn record_pins(&mut self, frame: usize, path: &[u32]) {
+        let body = self.frames[frame].body;
+        let function = body.map(|f| self.fn_decls[f].name.name.clone());
+        let mut entries = Vec::new();
+        if let Some(f) = body {
+            let decl = self.fn_decls[f];
+            let b = &self.checked.functions[f];
+            for (i, p) in decl.inputs.iter().enumerate() {
+                entries.push((
+                    PinOwner::FunctionInput,
+                    p.name.name.clone(),
+                    b.inputs[i],
+                    self.frames[frame].inputs[i],
+                ));
+            }
+            for (i, l) in decl.locals.iter().enumerate() {
+                entries.push((
+                    PinOwner::Local,
+                    l.name.name.clone(),
+                    b.locals[i].0,
+                    self.frames[frame].locals[i],
+                ));
+            }
+        }
+        for n in 0..self.frames[frame].node_out.len() {
+            let names = self.output_names(body, n);
+            let types = self.body(frame).nodes[n].outputs.clone();
+            for (o, &slot) in self.frames[frame].node_out[n].iter().enumerate() {
+                if let (Some(name), Some(&ty)) = (names.get(o), types.get(o)) {
+                    entries.push((PinOwner::NodeOutput(n as u32), name.clone(), ty, slot));
+                }
+            }
+        }
+        for (owner, pin, ty, slot) in entries {
+            self.pb.pin_slot(PinSlot {
+                call_path: path.to_vec(),
+                function: function.clone(),
+                owner,
+                pin,
+                ty,
+                slot,
+            });
+        }
+    }
+
+    /// Allocates the slots of one instance of a body (and, recursively, of its calls);
+    /// `path` is the call path that reaches it (see [`PinSlot::call_path`]).
+    fn frame(&mut self, function: Option<usize>, path: Vec<u32>) -> usize {
         let body = match function {
             None => &self.checked.graph,
             Some(f) => &self.checked.functions[f],
@@ -339,7 +412,9 @@ impl Gen<'_> {
             node_state.push(state_types.iter().map(|&t| self.pb.alloc(t)).collect());
             match kind {
                 NodeKind::Call(f) => {
-                    let callee = self.frame(Some(f));
+                    let mut callee_path = path.clone();
+                    callee_path.push(n as u32);
+                    let callee = self.frame(Some(f), callee_path);
                     self.frames[id].callees.insert(n, callee);
                     node_out.push(self.frames[callee].outputs.clone());
                 }
@@ -350,6 +425,7 @@ impl Gen<'_> {
         }
         self.frames[id].node_out = node_out;
         self.frames[id].node_state = node_state;
+        self.record_pins(id, &path);
         id
     }
 
@@ -609,5 +685,116 @@ impl Gen<'_> {
                 rets.push(j);
             }
         }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use std::path::Path;
+    use std::sync::Arc;
+    use strider_core::{Bone, EmptyWorld, Skeleton, Transform};
+    use strider_nodes::{Value, ValueType};
+    use strider_vm::{FrameInput, Instance, PinOwner};
+
+    /// `Twice(x)` returns `2·x`; the forward event calls it on 3 and on `var("A")` (7), so
+    /// its `doubled` node has one slot per call site.
+    const GRAPH: &str = r#"Graph(
+        version: 1,
+        name: "pins",
+        variables: { "A": (type: Float, default: 7.0), "Out1": (type: Float), "Out2": (type: Float) },
+        functions: {
+            "Twice": (
+                inputs: { "x": Float },
+                outputs: { "y": Float },
+                locals: { "scratch": (type: Float, default: 1.5) },
+                nodes: { "doubled": Multiply(a: "x", b: 2.0) },
+                exec: [ Return(y: "doubled") ],
+            ),
+        },
+        nodes: {
+            "first": Twice(x: 3.0),
+            "second": Twice(x: var("A")),
+            "sum": Add(a: "first.y", b: "second.y"),
+            "parts": BreakVector(value: (1.0, 2.0, 3.0)),
+        },
+        events: {
+            forward: [ Set("Out1", "sum"), Set("Out2", "parts.z") ],
+        },
+    )"#;
+
+    fn skeleton() -> Arc<Skeleton> {
+        Arc::new(
+            Skeleton::new(vec![Bone {
+                name: "root".to_string(),
+                parent: None,
+                rest_local: Transform::IDENTITY,
+            }])
+            .expect("one-bone skeleton"),
+        )
+    }
+
+    #[test]
+    fn every_call_site_has_its_own_pin_slots() {
+        let program = crate::compile_str(Path::new("pins.ron"), GRAPH).expect("compiles");
+        let doubled: Vec<_> = program
+            .pin_slots()
+            .iter()
+            .filter(|p| p.function.as_deref() == Some("Twice") && p.pin == "result")
+            .collect();
+        assert_eq!(doubled.len(), 2, "one entry per call site: {doubled:?}");
+        assert_ne!(doubled[0].slot, doubled[1].slot);
+        assert_ne!(doubled[0].call_path, doubled[1].call_path);
+        assert!(doubled.iter().all(|p| p.ty == ValueType::Float));
+        // Top-level nodes in file order: first (0), second (1), sum (2), parts (3).
+        let top = |n: u32, pin: &str| {
+            program
+                .pin_slot(&[], &PinOwner::NodeOutput(n), pin)
+                .unwrap_or_else(|| panic!("node {n} pin {pin}"))
+                .clone()
+        };
+        assert_eq!(top(0, "y").ty, ValueType::Float);
+        assert_eq!(top(2, "result").ty, ValueType::Float);
+        assert_eq!(top(3, "z").ty, ValueType::Float);
+        assert!(
+            program
+                .pin_slot(&[0], &PinOwner::FunctionInput, "x")
+                .is_some()
+        );
+        assert!(
+            program
+                .pin_slot(&[1], &PinOwner::Local, "scratch")
+                .is_some()
+        );
+        assert!(
+            program
+                .pin_slot(&[], &PinOwner::NodeOutput(9), "y")
+                .is_none()
+        );
+
+        let mut instance = Instance::new(Arc::new(program.clone()), skeleton()).expect("instance");
+        instance.run_forward(&FrameInput::default(), &EmptyWorld, false);
+        let read = |call_path: &[u32], owner: PinOwner, pin: &str| {
+            let p = program.pin_slot(call_path, &owner, pin).expect("entry");
+            instance.slots().read(p.ty, p.slot)
+        };
+        // 3·2 and 7·2 at their call sites; their sum; the vector's z.
+        assert_eq!(
+            read(&[0], PinOwner::NodeOutput(0), "result"),
+            Value::Float(6.0)
+        );
+        assert_eq!(
+            read(&[1], PinOwner::NodeOutput(0), "result"),
+            Value::Float(14.0)
+        );
+        assert_eq!(read(&[0], PinOwner::FunctionInput, "x"), Value::Float(3.0));
+        assert_eq!(read(&[1], PinOwner::FunctionInput, "x"), Value::Float(7.0));
+        assert_eq!(read(&[], PinOwner::NodeOutput(0), "y"), Value::Float(6.0));
+        assert_eq!(read(&[], PinOwner::NodeOutput(1), "y"), Value::Float(14.0));
+        assert_eq!(
+            read(&[], PinOwner::NodeOutput(2), "result"),
+            Value::Float(20.0)
+        );
+        assert_eq!(read(&[], PinOwner::NodeOutput(3), "z"), Value::Float(3.0));
+        assert_eq!(read(&[1], PinOwner::Local, "scratch"), Value::Float(1.5));
     }
 }

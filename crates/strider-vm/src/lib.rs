@@ -31,8 +31,8 @@ pub mod slots;
 pub use instance::{FrameInput, InputPose, Instance, InstantiateError, MissingBone, VariableError};
 pub use profile::{InstrProfile, NodeProfile, PROFILING_AVAILABLE, profile_by_node};
 pub use program::{
-    BoneLiteral, BoneSlot, Event, Instr, InstrOrigin, OriginId, OriginKind, OriginScope, Program,
-    ProgramBuilder, VariableId, VariableInfo,
+    BoneLiteral, BoneSlot, Event, Instr, InstrOrigin, OriginId, OriginKind, OriginScope, PinOwner,
+    PinSlot, Program, ProgramBuilder, VariableId, VariableInfo,
 };
 pub use slots::Slots;
 pub use strider_core::{DebugDraw, EmptyWorld, TraceHit, WorldQuery};

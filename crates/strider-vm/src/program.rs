@@ -153,6 +153,46 @@ impl fmt::Display for InstrOrigin {
     }
 }
 
+/// What a [`PinSlot`] entry is the value of.
+#[derive(Clone, Debug, PartialEq, Eq, Hash)]
+pub enum PinOwner {
+    /// An output pin of a node of the body: the node's index in its body, in the checker's
+    /// order (the body's declared `nodes` in file order, then its inline exec nodes in the
+    /// order the exec lists are walked, depth first; for the graph's top level, the
+    /// `construction` list before `forward`). A function call node's outputs are the
+    /// callee's outputs at that call site.
+    NodeOutput(u32),
+    /// An input of the function the body belongs to (as copied in by the call).
+    FunctionInput,
+    /// A local variable of the function the body belongs to.
+    Local,
+}
+
+/// Where one value of a graph element lives in an instance's slots, at one call site: a
+/// side table of the [`Program`] for tools such as the inspector (see
+/// [`Program::pin_slots`]); the executor never reads it.
+///
+/// Function calls are inlined per call site, so a node inside a function has one entry per
+/// call path. Inside a loop body the slot holds the value of the last iteration run.
+#[derive(Clone, Debug, PartialEq, Eq, Hash)]
+pub struct PinSlot {
+    /// The call sites from the graph's top level down to the body the value belongs to:
+    /// each entry is the index of a call node in the body of the previous one (the first in
+    /// the graph's top level), numbered as [`PinOwner::NodeOutput`]. Empty for the top
+    /// level.
+    pub call_path: Vec<u32>,
+    /// The function whose body holds the value; `None` for the graph's top level.
+    pub function: Option<String>,
+    /// Which element of that body.
+    pub owner: PinOwner,
+    /// The pin, function input or local variable name.
+    pub pin: String,
+    /// Its type.
+    pub ty: ValueType,
+    /// The slot of `ty` holding it.
+    pub slot: u32,
+}
+
 /// Identifies an entry of a program's origin table ([`Program::origins`]).
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, PartialOrd, Ord)]
 pub struct OriginId(pub u32);
@@ -177,6 +217,8 @@ pub struct Program {
     pub(crate) origins: Vec<InstrOrigin>,
     /// Per instruction, an index into `origins` or [`NO_ORIGIN`]. Same length as `code`.
     pub(crate) instr_origins: Vec<u32>,
+    /// Where node outputs, function inputs and locals live, per call path (tools only).
+    pub(crate) pin_slots: Vec<PinSlot>,
 }
 
 impl Program {
@@ -258,6 +300,23 @@ impl Program {
     pub fn origin(&self, id: OriginId) -> &InstrOrigin {
         &self.origins[id.0 as usize]
     }
+
+    /// Where every node output, function input and function local lives, per call path,
+    /// in the order the compiler allocated them (empty for a hand-built program). For
+    /// tools: read a pin's current value with `Slots::read(entry.ty, entry.slot)`.
+    #[must_use]
+    pub fn pin_slots(&self) -> &[PinSlot] {
+        &self.pin_slots
+    }
+
+    /// The entry of `pin` of `owner` in the body reached by `call_path` (a linear search:
+    /// for tools, resolve once).
+    #[must_use]
+    pub fn pin_slot(&self, call_path: &[u32], owner: &PinOwner, pin: &str) -> Option<&PinSlot> {
+        self.pin_slots
+            .iter()
+            .find(|p| p.call_path == call_path && &p.owner == owner && p.pin == pin)
+    }
 }
 
 /// Builds a [`Program`]: allocates slots, places constants, emits instructions and patches
@@ -288,6 +347,7 @@ impl ProgramBuilder {
                 variables: Vec::new(),
                 origins: Vec::new(),
                 instr_origins: Vec::new(),
+                pin_slots: Vec::new(),
             },
             current_origin: None,
             origin_ids: HashMap::new(),
@@ -382,6 +442,12 @@ impl ProgramBuilder {
     /// origin); returns the previous one, to restore after a nested node.
     pub fn set_origin(&mut self, origin: Option<OriginId>) -> Option<OriginId> {
         std::mem::replace(&mut self.current_origin, origin)
+    }
+
+    /// Records where a pin's value lives (see [`Program::pin_slots`]); never read by the
+    /// executor.
+    pub fn pin_slot(&mut self, entry: PinSlot) {
+        self.p().pin_slots.push(entry);
     }
 
     /// Sets operand `index` of instruction `at` (used to patch jump targets).
