@@ -1,5 +1,8 @@
-//! The `strider` command: `check`, `run` and `nodes`, or the headless demo without a
-//! subcommand. Everything happens in [`strider_cli::main`].
+//! The `strider` command: see [`strider_cli::main`] for the subcommands. The counting
+//! allocator lets `strider bench` report heap allocations per frame.
+
+#[global_allocator]
+static ALLOCATOR: strider_cli::CountingAllocator = strider_cli::CountingAllocator;
 
 fn main() -> std::process::ExitCode {
     strider_cli::main()

@@ -4,7 +4,9 @@
 //! strider check FILE...                       validate graph and skeleton files
 //! strider run GRAPH --skeleton SKEL [...]     run a graph headless, optionally dump poses
 //! strider report GRAPH --skeleton SKEL --scenario SCEN   measure the motion in a scenario
+//! strider bench GRAPH --skeleton SKEL --scenario SCEN   cost per character-frame, crowds
 //! strider nodes [--markdown]                  list the built-in nodes
+//! strider native GRAPH [--out FILE]           a graph's forward event as Rust source
 //! strider                                     the demo: the locomotion report on walk_flat
 //! ```
 //!
@@ -12,14 +14,20 @@
 //! [`main`]. Exit codes: 0 on success, 1 on any failure (invalid files, I/O errors), 2 for
 //! bad command-line arguments (clap's code).
 
+mod alloc_count;
+mod bench;
 mod check;
 mod jsonl;
+mod native;
 mod nodes;
 mod output;
 mod report;
 mod run;
 mod setup;
 mod value;
+
+pub use alloc_count::CountingAllocator;
+pub use native::generate as native_source;
 
 use clap::{Parser, Subcommand};
 use std::path::PathBuf;
@@ -58,6 +66,8 @@ enum Command {
     Run(run::RunArgs),
     Report(report::ReportArgs),
     Nodes(nodes::NodesArgs),
+    Native(native::NativeArgs),
+    Bench(bench::BenchArgs),
 }
 
 /// Parses the command line, runs the command and returns the process exit code.
@@ -83,6 +93,8 @@ fn run_cli() -> ExitCode {
         Some(Command::Run(args)) => run::run(&args),
         Some(Command::Report(args)) => report::run(&args),
         Some(Command::Nodes(args)) => nodes::run(&args),
+        Some(Command::Native(args)) => native::run(&args),
+        Some(Command::Bench(args)) => bench::run(&args),
         None => demo(),
     };
     match result {

@@ -16,6 +16,8 @@ use strider_nodes::{Elem, Op, ValueType};
 /// What one run of an event works on.
 pub(crate) struct Ctx<'a> {
     pub slots: &'a mut Slots,
+    /// The program's text table (names read by `FindBones`).
+    pub texts: &'a [String],
     pub pose: &'a mut Pose,
     pub debug: &'a mut DebugDraw,
     pub world: &'a dyn WorldQuery,
@@ -64,42 +66,19 @@ fn copy_vec<T: Clone>(v: &mut [Vec<T>], from: usize, to: usize) {
     }
 }
 
-/// Runs from `entry` until an `End` instruction.
-pub(crate) fn run(program: &Program, entry: u32, cx: &mut Ctx<'_>) {
-    // Profiling picks a separately compiled copy of the loop once per run, so the copy that
-    // runs unprofiled has no per-instruction test; without the feature there is no timing
-    // code at all.
-    #[cfg(feature = "profile")]
-    if let Some(profile) = cx.profile.take() {
-        run_loop::<true>(program, entry, cx, profile);
-        return;
-    }
-    run_loop::<false>(program, entry, cx, &mut []);
-}
+/// The "next instruction" of an `End`: the event is over.
+pub(crate) const END: usize = usize::MAX;
 
-/// The executor loop. With `PROFILE` (only instantiated with the `profile` feature), adds
-/// each instruction's elapsed time and one run to `profile[pc]`.
-#[cfg_attr(not(feature = "profile"), allow(unused_variables))]
-fn run_loop<const PROFILE: bool>(
-    program: &Program,
-    entry: u32,
-    cx: &mut Ctx<'_>,
-    profile: &mut [crate::profile::InstrProfile],
-) {
-    let code: &[Instr] = &program.code;
-    let operands: &[u32] = &program.operands;
-    let s = &mut *cx.slots;
-    let mut pc = entry as usize;
-    // One clock read per instruction: an instruction's time runs from the end of the one
-    // before it to its own end.
-    #[cfg(feature = "profile")]
-    let mut last = PROFILE.then(std::time::Instant::now);
-    loop {
-        #[cfg(feature = "profile")]
-        let here = pc;
-        let Instr { op, args } = code[pc];
-        pc += 1;
-        let o = &operands[args as usize..];
+/// Every op's handler, as one `match` over `$op` with operands `$o` on slots `$s` (`$cx.slots`,
+/// borrowed apart so the interpreter can hold it across instructions) and context `$cx`.
+///
+/// Expanded twice: in the interpreter loop ([`run_loop`]) and in [`step`], the entry point
+/// of code generated ahead of time. After a control op the expansion site decides what
+/// happens: `$jump!(target)` continues at instruction `target`, `$end!()` ends the event.
+macro_rules! execute {
+    ($op:expr, $o:expr, $s:expr, $cx:ident, $jump:ident, $end:ident) => {{
+        let (op, o): (Op, &[u32]) = ($op, $o);
+        let s: &mut Slots = $s;
         macro_rules! at {
             ($k:expr) => {
                 o[$k] as usize
@@ -136,17 +115,11 @@ fn run_loop<const PROFILE: bool>(
             };
         }
         match op {
-            Op::End => {
-                #[cfg(feature = "profile")]
-                if PROFILE {
-                    profile[here].count += 1;
-                }
-                return;
-            }
-            Op::Jump => pc = o[0] as usize,
+            Op::End => $end!(),
+            Op::Jump => $jump!(o[0] as usize),
             Op::JumpIfFalse => {
                 if !b!(0) {
-                    pc = o[1] as usize;
+                    $jump!(o[1] as usize);
                 }
             }
             Op::ForEachNext(e) => {
@@ -155,7 +128,7 @@ fn run_loop<const PROFILE: bool>(
                     ($sc:expr, $ar:expr, $zero:expr) => {{
                         let len = $ar[at!(0)].len();
                         if counter < 0 || counter as usize >= len {
-                            pc = o[5] as usize;
+                            $jump!(o[5] as usize);
                         } else {
                             $sc[at!(2)] = $ar[at!(0)][counter as usize];
                             i!(3) = counter;
@@ -169,7 +142,7 @@ fn run_loop<const PROFILE: bool>(
             Op::ForNext => {
                 let counter = i!(0);
                 if counter >= i!(1) {
-                    pc = o[3] as usize;
+                    $jump!(o[3] as usize);
                 } else {
                     i!(2) = counter;
                     i!(0) = counter + 1;
@@ -366,54 +339,54 @@ fn run_loop<const PROFILE: bool>(
             Op::ClampSpatially => v!(4) = k::clamp_spatially(v!(0), v!(1), f!(2), f!(3)),
 
             Op::GetTransform => {
-                let result = match bone(cx.pose, s.bones[at!(0)]) {
+                let result = match bone($cx.pose, s.bones[at!(0)]) {
                     None => Transform::IDENTITY,
                     Some(bi) => {
                         let global = i!(1) == 0;
                         match (b!(2), global) {
-                            (true, true) => cx.pose.skeleton().rest_global(bi),
-                            (true, false) => cx.pose.skeleton().rest_local(bi),
-                            (false, true) => cx.pose.global(bi),
-                            (false, false) => cx.pose.local(bi),
+                            (true, true) => $cx.pose.skeleton().rest_global(bi),
+                            (true, false) => $cx.pose.skeleton().rest_local(bi),
+                            (false, true) => $cx.pose.global(bi),
+                            (false, false) => $cx.pose.local(bi),
                         }
                     }
                 };
                 t!(3) = result;
             }
             Op::SetTransform => {
-                if let Some(bi) = bone(cx.pose, s.bones[at!(0)]) {
+                if let Some(bi) = bone($cx.pose, s.bones[at!(0)]) {
                     let weight = f!(4);
                     if i!(2) == 0 {
-                        let value = k::blend_transform(cx.pose.global(bi), t!(1), weight);
-                        cx.pose.set_global(bi, value, b!(3));
+                        let value = k::blend_transform($cx.pose.global(bi), t!(1), weight);
+                        $cx.pose.set_global(bi, value, b!(3));
                     } else {
-                        let value = k::blend_transform(cx.pose.local(bi), t!(1), weight);
-                        cx.pose.set_local(bi, value);
+                        let value = k::blend_transform($cx.pose.local(bi), t!(1), weight);
+                        $cx.pose.set_local(bi, value);
                     }
                 }
             }
             Op::GetParent => {
-                s.bones[at!(1)] = match bone(cx.pose, s.bones[at!(0)]) {
-                    Some(bi) => cx.pose.skeleton().parent(bi).map_or(-1, |p| p.0 as i32),
+                s.bones[at!(1)] = match bone($cx.pose, s.bones[at!(0)]) {
+                    Some(bi) => $cx.pose.skeleton().parent(bi).map_or(-1, |p| p.0 as i32),
                     None => -1,
                 };
             }
             Op::FindBones => {
                 let out = &mut s.bone_arrays[at!(3)];
-                match bone(cx.pose, s.bones[at!(0)]) {
+                match bone($cx.pose, s.bones[at!(0)]) {
                     Some(root) => {
-                        let contains = &program.texts[s.names[at!(1)] as usize];
-                        let excludes = &program.texts[s.names[at!(2)] as usize];
-                        k::find_bones(cx.pose.skeleton(), root, contains, excludes, out);
+                        let contains = &$cx.texts[s.names[at!(1)] as usize];
+                        let excludes = &$cx.texts[s.names[at!(2)] as usize];
+                        k::find_bones($cx.pose.skeleton(), root, contains, excludes, out);
                     }
                     None => out.clear(),
                 }
             }
             Op::TwoBoneIK => {
                 let chain = (
-                    bone(cx.pose, s.bones[at!(0)]),
-                    bone(cx.pose, s.bones[at!(1)]),
-                    bone(cx.pose, s.bones[at!(2)]),
+                    bone($cx.pose, s.bones[at!(0)]),
+                    bone($cx.pose, s.bones[at!(1)]),
+                    bone($cx.pose, s.bones[at!(2)]),
                 );
                 let (reached, distance) = match chain {
                     (Some(a), Some(b), Some(c)) => {
@@ -430,7 +403,7 @@ fn run_loop<const PROFILE: bool>(
                             stretch: b!(9).then_some((f!(10), f!(11))),
                             set_effector_rotation: b!(12),
                         };
-                        let report = ik.solve(cx.pose, a, b, c, t!(3));
+                        let report = ik.solve($cx.pose, a, b, c, t!(3));
                         (report.reached, report.distance_to_target)
                     }
                     _ => (false, f32::INFINITY),
@@ -438,25 +411,25 @@ fn run_loop<const PROFILE: bool>(
                 b!(13) = reached;
                 f!(14) = distance;
             }
-            Op::DeltaTime => f!(0) = cx.dt,
-            Op::WorldTransform => t!(0) = cx.to_world,
+            Op::DeltaTime => f!(0) = $cx.dt,
+            Op::WorldTransform => t!(0) = $cx.to_world,
             Op::LineTrace | Op::SphereTrace => {
                 let (start, end) = (v!(0), v!(1));
                 let (ws, we) = (
-                    cx.to_world.transform_point(start),
-                    cx.to_world.transform_point(end),
+                    $cx.to_world.transform_point(start),
+                    $cx.to_world.transform_point(end),
                 );
                 let (hit, outs) = if op == Op::LineTrace {
-                    (cx.world.line_trace(ws, we), 2)
+                    ($cx.world.line_trace(ws, we), 2)
                 } else {
-                    (cx.world.sphere_trace(ws, we, f!(2).max(0.0)), 3)
+                    ($cx.world.sphere_trace(ws, we, f!(2).max(0.0)), 3)
                 };
                 let hit = hit.filter(|h| {
                     h.point.is_finite() && h.normal.is_finite() && h.distance.is_finite()
                 });
                 match hit {
                     Some(h) => {
-                        let from_world = cx.to_world.inverse();
+                        let from_world = $cx.to_world.inverse();
                         b!(outs) = true;
                         v!(outs + 1) = from_world.transform_point(h.point);
                         v!(outs + 2) = k::unit_v(from_world.transform_vector(h.normal));
@@ -471,44 +444,44 @@ fn run_loop<const PROFILE: bool>(
                 }
             }
 
-            Op::FloatLerp => f!(3) = loco::lerp_exponential(f!(0), f!(1), cx.dt, f!(2)),
+            Op::FloatLerp => f!(3) = loco::lerp_exponential(f!(0), f!(1), $cx.dt, f!(2)),
             Op::VectorLerp => {
                 let max = f!(3);
                 v!(4) = if max > 0.0 {
-                    loco::lerp_max_step(v!(0), v!(1), cx.dt, f!(2), max)
+                    loco::lerp_max_step(v!(0), v!(1), $cx.dt, f!(2), max)
                 } else {
-                    loco::lerp_exponential_v(v!(0), v!(1), cx.dt, f!(2))
+                    loco::lerp_exponential_v(v!(0), v!(1), $cx.dt, f!(2))
                 };
             }
-            Op::QuatLerp => q!(3) = loco::lerp_exponential_q(q!(0), q!(1), cx.dt, f!(2)),
-            Op::FInterpToF => f!(3) = loco::finterp_to(f!(0), f!(1), cx.dt, f!(2)),
-            Op::FInterpToV => v!(3) = loco::vinterp_to(v!(0), v!(1), cx.dt, f!(2)),
-            Op::FInterpToQ => q!(3) = loco::qinterp_to(q!(0), q!(1), cx.dt, f!(2)),
+            Op::QuatLerp => q!(3) = loco::lerp_exponential_q(q!(0), q!(1), $cx.dt, f!(2)),
+            Op::FInterpToF => f!(3) = loco::finterp_to(f!(0), f!(1), $cx.dt, f!(2)),
+            Op::FInterpToV => v!(3) = loco::vinterp_to(v!(0), v!(1), $cx.dt, f!(2)),
+            Op::FInterpToQ => q!(3) = loco::qinterp_to(q!(0), q!(1), $cx.dt, f!(2)),
             Op::SpringF => {
                 // State: [last run, value, velocity]. Advances once per run, however many
                 // steps read it; starts at rest on the first target it sees.
-                if i!(3) != cx.run {
+                if i!(3) != $cx.run {
                     let target = f!(0);
                     if i!(3) == 0 {
                         f!(4) = target;
                         f!(5) = 0.0;
                     }
-                    i!(3) = cx.run;
-                    let (x, vel) = loco::spring_damper(f!(4), f!(5), target, f!(1), cx.dt);
+                    i!(3) = $cx.run;
+                    let (x, vel) = loco::spring_damper(f!(4), f!(5), target, f!(1), $cx.dt);
                     f!(4) = x;
                     f!(5) = vel;
                 }
                 f!(2) = f!(4);
             }
             Op::SpringV => {
-                if i!(3) != cx.run {
+                if i!(3) != $cx.run {
                     let target = v!(0);
                     if i!(3) == 0 {
                         v!(4) = target;
                         v!(5) = Vec3::ZERO;
                     }
-                    i!(3) = cx.run;
-                    let (x, vel) = loco::spring_damper_v(v!(4), v!(5), target, f!(1), cx.dt);
+                    i!(3) = $cx.run;
+                    let (x, vel) = loco::spring_damper_v(v!(4), v!(5), target, f!(1), $cx.dt);
                     v!(4) = x;
                     v!(5) = vel;
                 }
@@ -519,7 +492,7 @@ fn run_loop<const PROFILE: bool>(
                     v!(0),
                     f!(1),
                     f!(2),
-                    cx.dt,
+                    $cx.dt,
                     f!(3),
                     f!(4),
                     f!(5),
@@ -564,7 +537,7 @@ fn run_loop<const PROFILE: bool>(
                 v!(8) = heel;
             }
             Op::CycleStep => {
-                let (master, per_foot) = loco::cycle_step(f!(0), cx.dt, f!(1), f!(2), b!(3));
+                let (master, per_foot) = loco::cycle_step(f!(0), $cx.dt, f!(1), f!(2), b!(3));
                 f!(4) = master;
                 f!(5) = per_foot;
             }
@@ -633,14 +606,14 @@ fn run_loop<const PROFILE: bool>(
 
             // Draw ops: DebugDraw::push records nothing when drawing is off.
             Op::DrawPoint => {
-                cx.debug.push(DebugPrimitive::Point {
+                $cx.debug.push(DebugPrimitive::Point {
                     position: v!(0),
                     size: f!(1),
                     color: color(v!(2)),
                 });
             }
             Op::DrawLine => {
-                cx.debug.push(DebugPrimitive::Line {
+                $cx.debug.push(DebugPrimitive::Line {
                     start: v!(0),
                     end: v!(1),
                     thickness: f!(2),
@@ -648,7 +621,7 @@ fn run_loop<const PROFILE: bool>(
                 });
             }
             Op::DrawArrow => {
-                cx.debug.push(DebugPrimitive::Arrow {
+                $cx.debug.push(DebugPrimitive::Arrow {
                     start: v!(0),
                     end: v!(1),
                     thickness: f!(2),
@@ -656,21 +629,21 @@ fn run_loop<const PROFILE: bool>(
                 });
             }
             Op::DrawSphere => {
-                cx.debug.push(DebugPrimitive::Sphere {
+                $cx.debug.push(DebugPrimitive::Sphere {
                     center: v!(0),
                     radius: f!(1),
                     color: color(v!(2)),
                 });
             }
             Op::DrawBox => {
-                cx.debug.push(DebugPrimitive::Box {
+                $cx.debug.push(DebugPrimitive::Box {
                     transform: t!(0),
                     half_extents: v!(1),
                     color: color(v!(2)),
                 });
             }
             Op::DrawSpline => {
-                if cx.debug.is_enabled() {
+                if $cx.debug.is_enabled() {
                     let mode = if i!(1) == 1 {
                         SplineMode::CatmullRom
                     } else {
@@ -682,7 +655,7 @@ fn run_loop<const PROFILE: bool>(
                     let mut start = spline::evaluate(points, 0.0, mode).0;
                     for k in 1..=pieces {
                         let end = spline::evaluate(points, k as f32 / pieces as f32, mode).0;
-                        cx.debug.push(DebugPrimitive::Line {
+                        $cx.debug.push(DebugPrimitive::Line {
                             start,
                             end,
                             thickness,
@@ -693,13 +666,67 @@ fn run_loop<const PROFILE: bool>(
                 }
             }
             Op::DrawTransform => {
-                cx.debug.push(DebugPrimitive::Axes {
+                $cx.debug.push(DebugPrimitive::Axes {
                     transform: t!(0),
                     size: f!(1),
                     thickness: f!(2),
                 });
             }
         }
+    }};
+}
+
+/// Runs from `entry` until an `End` instruction.
+pub(crate) fn run(program: &Program, entry: u32, cx: &mut Ctx<'_>) {
+    // Profiling picks a separately compiled copy of the loop once per run, so the copy that
+    // runs unprofiled has no per-instruction test; without the feature there is no timing
+    // code at all.
+    #[cfg(feature = "profile")]
+    if let Some(profile) = cx.profile.take() {
+        run_loop::<true>(program, entry, cx, profile);
+        return;
+    }
+    run_loop::<false>(program, entry, cx, &mut []);
+}
+
+/// The executor loop. With `PROFILE` (only instantiated with the `profile` feature), adds
+/// each instruction's elapsed time and one run to `profile[pc]`.
+#[cfg_attr(not(feature = "profile"), allow(unused_variables))]
+fn run_loop<const PROFILE: bool>(
+    program: &Program,
+    entry: u32,
+    cx: &mut Ctx<'_>,
+    profile: &mut [crate::profile::InstrProfile],
+) {
+    let code: &[Instr] = &program.code;
+    let operands: &[u32] = &program.operands;
+    let s = &mut *cx.slots;
+    let mut pc = entry as usize;
+    // One clock read per instruction: an instruction's time runs from the end of the one
+    // before it to its own end.
+    #[cfg(feature = "profile")]
+    let mut last = PROFILE.then(std::time::Instant::now);
+    loop {
+        #[cfg(feature = "profile")]
+        let here = pc;
+        let Instr { op, args } = code[pc];
+        pc += 1;
+        macro_rules! jump {
+            ($target:expr) => {
+                pc = $target
+            };
+        }
+        macro_rules! end {
+            () => {{
+                #[cfg(feature = "profile")]
+                if PROFILE {
+                    // `End` counts as run but takes no time of its own.
+                    profile[here].count += 1;
+                }
+                return;
+            }};
+        }
+        execute!(op, &operands[args as usize..], &mut *s, cx, jump, end);
         #[cfg(feature = "profile")]
         if PROFILE && let Some(started) = last {
             let now = std::time::Instant::now();
@@ -709,4 +736,28 @@ fn run_loop<const PROFILE: bool>(
             last = Some(now);
         }
     }
+}
+
+/// Executes one instruction: `op` with its operands `o` (slot indices and jump targets, as
+/// laid out in [`Op`]'s documentation) on the run's context, and returns the index of the
+/// instruction to run next: `next` (the following one) unless the op jumps, [`END`] after
+/// `End`.
+///
+/// Always inlined: in code generated ahead of time from a program (see [`crate::native`])
+/// `op` and `o` are constants, so each call folds to that op's handler with its slot
+/// indices as immediates.
+#[inline(always)]
+pub(crate) fn step(op: Op, o: &[u32], cx: &mut Ctx<'_>, next: usize) -> usize {
+    macro_rules! jump {
+        ($target:expr) => {
+            return $target
+        };
+    }
+    macro_rules! end {
+        () => {
+            return END
+        };
+    }
+    execute!(op, o, &mut *cx.slots, cx, jump, end);
+    next
 }

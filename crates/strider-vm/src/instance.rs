@@ -1,6 +1,7 @@
 //! [`Instance`]: one character's state for a shared [`Program`].
 
 use crate::exec::{self, Ctx};
+use crate::native::NativeProgram;
 use crate::program::{BoneSlot, Program, VariableId};
 use crate::slots::Slots;
 use std::fmt;
@@ -121,6 +122,9 @@ pub struct Instance {
     to_world: Transform,
     /// Runs so far (construction and frames); stateful nodes use it to advance once per run.
     runs: i32,
+    /// Fingerprint of the native code last checked against the program
+    /// ([`Instance::run_forward_native`]).
+    native_checked: Option<u64>,
     /// Whether runs accumulate into `profile`.
     #[cfg(feature = "profile")]
     profiling: bool,
@@ -147,6 +151,7 @@ impl Instance {
             debug: DebugDraw::new(false),
             to_world: Transform::IDENTITY,
             runs: 0,
+            native_checked: None,
             #[cfg(feature = "profile")]
             profiling: false,
             #[cfg(feature = "profile")]
@@ -175,6 +180,7 @@ impl Instance {
             debug: DebugDraw::new(false),
             to_world: self.to_world,
             runs: 0,
+            native_checked: self.native_checked,
             #[cfg(feature = "profile")]
             profiling: self.profiling,
             #[cfg(feature = "profile")]
@@ -286,18 +292,7 @@ impl Instance {
         self.pose.reset_to_rest();
         self.debug.clear();
         let entry = self.program.construction;
-        let mut cx = Ctx {
-            slots: &mut self.slots,
-            pose: &mut self.pose,
-            debug: &mut self.debug,
-            world,
-            dt: 0.0,
-            to_world: self.to_world,
-            run: next_run(&mut self.runs),
-            #[cfg(feature = "profile")]
-            profile: self.profiling.then_some(&mut self.profile[..]),
-        };
-        exec::run(&self.program, entry, &mut cx);
+        self.run_event(Body::Program(entry), world, 0.0);
     }
 
     /// Runs one frame of the `forward` event.
@@ -305,11 +300,44 @@ impl Instance {
     /// `debug` turns debug drawing on for this frame; the primitives are then available
     /// from [`Instance::debug_draw`] until the next frame.
     pub fn run_forward(&mut self, input: &FrameInput<'_>, world: &dyn WorldQuery, debug: bool) {
-        let dt = if input.dt.is_finite() && input.dt > 0.0 {
-            input.dt
-        } else {
-            0.0
-        };
+        let dt = self.begin_frame(input, debug);
+        let entry = self.program.forward;
+        self.run_event(Body::Program(entry), world, dt);
+    }
+
+    /// Runs one frame of the `forward` event with code generated ahead of time from this
+    /// instance's program ([`crate::native`]) instead of the interpreter: the native
+    /// baseline. Same inputs, same effects, bit-identical results.
+    ///
+    /// # Errors
+    /// [`NativeMismatch`] (and nothing runs) when `native` was generated from another
+    /// program. The check costs O(program size) the first time a given `native` is used
+    /// with this instance, then nothing.
+    pub fn run_forward_native(
+        &mut self,
+        native: &NativeProgram,
+        input: &FrameInput<'_>,
+        world: &dyn WorldQuery,
+        debug: bool,
+    ) -> Result<(), NativeMismatch> {
+        if self.native_checked != Some(native.fingerprint) {
+            let program = crate::native::fingerprint(&self.program);
+            if program != native.fingerprint {
+                return Err(NativeMismatch {
+                    graph: self.program.name.clone(),
+                    program,
+                    native: native.fingerprint,
+                });
+            }
+            self.native_checked = Some(program);
+        }
+        let dt = self.begin_frame(input, debug);
+        self.run_event(Body::Native(native.forward), world, dt);
+        Ok(())
+    }
+
+    /// Applies a frame's input (placement, start pose, debug switch) and returns its dt.
+    fn begin_frame(&mut self, input: &FrameInput<'_>, debug: bool) -> f32 {
         if input.component_to_world.is_finite() {
             self.to_world = input.component_to_world;
         }
@@ -322,9 +350,18 @@ impl Instance {
             self.debug.set_enabled(debug);
         }
         self.debug.clear();
-        let entry = self.program.forward;
+        if input.dt.is_finite() && input.dt > 0.0 {
+            input.dt
+        } else {
+            0.0
+        }
+    }
+
+    /// Runs an event's code on this instance.
+    fn run_event(&mut self, body: Body, world: &dyn WorldQuery, dt: f32) {
         let mut cx = Ctx {
             slots: &mut self.slots,
+            texts: &self.program.texts,
             pose: &mut self.pose,
             debug: &mut self.debug,
             world,
@@ -334,7 +371,16 @@ impl Instance {
             #[cfg(feature = "profile")]
             profile: self.profiling.then_some(&mut self.profile[..]),
         };
-        exec::run(&self.program, entry, &mut cx);
+        match body {
+            Body::Program(entry) => exec::run(&self.program, entry, &mut cx),
+            Body::Native(forward) => {
+                #[cfg(feature = "profile")]
+                {
+                    cx.profile = None;
+                }
+                forward(&mut crate::native::Frame { cx });
+            }
+        }
     }
 
     /// The output pose. Call [`Pose::globals`] on it for rig-space transforms.
@@ -439,6 +485,29 @@ impl Instance {
             self.slots.floats[info.slot as usize] = value;
         }
     }
+}
+
+/// The code an event runs.
+enum Body {
+    /// The interpreter, from this instruction.
+    Program(u32),
+    /// Code generated ahead of time.
+    Native(fn(&mut crate::native::Frame<'_>)),
+}
+
+/// Generated code was made from another program than the instance's
+/// ([`Instance::run_forward_native`]).
+#[derive(Clone, Debug, PartialEq, Eq, thiserror::Error)]
+#[error(
+    "the native code was generated from another program than `{graph}` (fingerprint {native:#018x}, the program's is {program:#018x})\n  hint: regenerate it from the current graph"
+)]
+pub struct NativeMismatch {
+    /// The instance's graph.
+    pub graph: String,
+    /// The instance's program's fingerprint.
+    pub program: u64,
+    /// The fingerprint the native code was generated from.
+    pub native: u64,
 }
 
 /// The next run number: counts up, wrapping past `i32::MAX` to 1 (0 means "never ran").

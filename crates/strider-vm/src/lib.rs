@@ -24,11 +24,14 @@
 
 mod exec;
 pub mod instance;
+pub mod native;
 pub mod profile;
 pub mod program;
 pub mod slots;
 
-pub use instance::{FrameInput, InputPose, Instance, InstantiateError, MissingBone, VariableError};
+pub use instance::{
+    FrameInput, InputPose, Instance, InstantiateError, MissingBone, NativeMismatch, VariableError,
+};
 pub use profile::{InstrProfile, NodeProfile, PROFILING_AVAILABLE, profile_by_node};
 pub use program::{
     BoneLiteral, BoneSlot, Event, Instr, InstrOrigin, OriginId, OriginKind, OriginScope, PinOwner,

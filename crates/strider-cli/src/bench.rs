@@ -1,0 +1,589 @@
+//! `strider bench GRAPH --skeleton SKEL --scenario SCEN`: how many characters running one
+//! compiled graph fit in a frame, against the native baseline, from one thread to all cores.
+
+use crate::alloc_count;
+use crate::output;
+use crate::setup::{Assignment, apply_assignments, instantiate, load, parse_assignments};
+use anyhow::{Context as _, anyhow, bail};
+use indicatif::{ProgressBar, ProgressDrawTarget, ProgressStyle};
+use rayon::prelude::*;
+use std::fmt::Write as _;
+use std::path::PathBuf;
+use std::process::ExitCode;
+use std::sync::Arc;
+use std::time::Instant;
+use strider_graph::SkeletonFile;
+use strider_host::scenario::{Scenario, Simulation};
+use strider_host::world::World;
+use strider_vm::native::NativeProgram;
+use strider_vm::{FrameInput, InputPose, Instance, Program};
+
+/// A 60 Hz frame, in nanoseconds: the budget `characters_per_16ms` divides.
+const FRAME_BUDGET_NS: f64 = 1e9 / 60.0;
+/// Compiles timed for `compile_ms`.
+const COMPILES: usize = 5;
+
+/// Arguments of `strider bench`.
+#[derive(Debug, clap::Args)]
+#[command(
+    about = "Measure a graph's cost per character and frame, crowds on threads, native ratio",
+    long_about = "Measure what a graph costs per character and frame.\n\n\
+        N instances of one compiled program each walk their own copy of the scenario's \
+        input (60 Hz), offset in time so they are not in lock-step, in the scenario's world. \
+        After a warm-up, the timed part runs F frames of all N characters, R times, at each \
+        thread count from 1 to T (the instances split across threads with rayon; the program \
+        is shared). Reported: the median time per character-frame with min and max over the \
+        repetitions, characters per 16.6 ms frame, speed-up over one thread, heap \
+        allocations per frame during the timed part, compile time (load + validate + \
+        compile), and, for graphs with a native baseline (code generated ahead of time by \
+        `strider native`, in crates/strider-native), the interpreter's time over the native \
+        code's, measured in the same run, interleaved. See docs/performance.md."
+)]
+pub(crate) struct BenchArgs {
+    /// Graph file to run (`Graph( ... )`, RON).
+    #[arg(value_name = "GRAPH")]
+    pub graph: PathBuf,
+
+    /// Skeleton file (`Skeleton( ... )`, RON).
+    #[arg(long, short = 's', value_name = "SKEL")]
+    pub skeleton: PathBuf,
+
+    /// Scenario file (`Scenario( ... )`, RON): the world and the input the characters walk.
+    #[arg(long, value_name = "SCEN")]
+    pub scenario: PathBuf,
+
+    /// Number of characters (instances).
+    #[arg(long, value_name = "N", default_value_t = 1000, value_parser = clap::value_parser!(u32).range(1..=1_000_000))]
+    pub characters: u32,
+
+    /// Timed frames per repetition (each frame runs every character once).
+    #[arg(long, value_name = "F", default_value_t = 120, value_parser = clap::value_parser!(u32).range(1..=1_000_000))]
+    pub frames: u32,
+
+    /// Largest thread count; every count from 1 up to it is measured. Default: all cores.
+    #[arg(long, value_name = "T", value_parser = clap::value_parser!(u32).range(1..=1024))]
+    pub threads: Option<u32>,
+
+    /// Repetitions per thread count (the median is reported).
+    #[arg(long, value_name = "R", default_value_t = 5, value_parser = clap::value_parser!(u32).range(1..=1000))]
+    pub repetitions: u32,
+
+    /// Frames every character runs before timing starts. Default: the whole scenario once,
+    /// so that every character has been through every phase and its arrays have reached
+    /// their working size.
+    #[arg(long, value_name = "W")]
+    pub warm_up: Option<u32>,
+
+    /// Print one JSON object instead of the table.
+    #[arg(long)]
+    pub json: bool,
+
+    /// Also profile one character and print the 20 graph nodes with the most time (needs
+    /// a build with `--features profile`).
+    #[arg(long)]
+    pub profile: bool,
+
+    /// Skip the native baseline even when the graph has one.
+    #[arg(long)]
+    pub no_native: bool,
+
+    /// Set a graph variable before the first frame; repeatable (as in `strider run`).
+    #[arg(long, value_name = "NAME=VALUE")]
+    pub set: Vec<String>,
+}
+
+/// Time per character-frame over the repetitions of one configuration, ns.
+#[derive(Clone, Copy, Debug, serde::Serialize)]
+struct Spread {
+    median: f64,
+    min: f64,
+    max: f64,
+}
+
+impl Spread {
+    fn of(samples: &mut [f64]) -> Spread {
+        samples.sort_by(f64::total_cmp);
+        let n = samples.len();
+        let median = if n % 2 == 1 {
+            samples[n / 2]
+        } else {
+            0.5 * (samples[n / 2 - 1] + samples[n / 2])
+        };
+        Spread {
+            median,
+            min: samples[0],
+            max: samples[n - 1],
+        }
+    }
+}
+
+/// The figures of one thread count.
+#[derive(Clone, Debug, serde::Serialize)]
+struct Row {
+    threads: u32,
+    ns_per_character_frame: Spread,
+    characters_per_16ms: f64,
+    speedup: f64,
+    native_ns_per_character_frame: Option<Spread>,
+    native_ratio: Option<f64>,
+}
+
+/// The scenario's per-frame input, shared by all characters.
+struct Track {
+    inputs: Vec<(f32, strider_core::Transform)>,
+}
+
+/// One set of characters: instances and where each is in the track.
+struct Crowd {
+    instances: Vec<Instance>,
+    offsets: Vec<usize>,
+}
+
+impl Crowd {
+    /// Runs every character one frame (`frame` counts from the start of the run).
+    fn run_frame(
+        &mut self,
+        track: &Track,
+        world: &World,
+        frame: usize,
+        native: Option<&NativeProgram>,
+        threads: u32,
+    ) {
+        let run = |(instance, offset): (&mut Instance, &usize)| {
+            let (dt, to_world) = track.inputs[(frame + offset) % track.inputs.len()];
+            let input = FrameInput {
+                dt,
+                component_to_world: to_world,
+                pose: InputPose::Rest,
+            };
+            match native {
+                // Checked once before timing: cannot fail here.
+                Some(native) => {
+                    let _ = instance.run_forward_native(native, &input, world, false);
+                }
+                None => instance.run_forward(&input, world, false),
+            }
+        };
+        if threads == 1 {
+            self.instances.iter_mut().zip(&self.offsets).for_each(run);
+        } else {
+            self.instances
+                .par_iter_mut()
+                .zip(self.offsets.par_iter())
+                .for_each(run);
+        }
+    }
+}
+
+/// Runs `strider bench`.
+pub(crate) fn run(args: &BenchArgs) -> anyhow::Result<ExitCode> {
+    let (program, skeleton) = load(&args.graph, &args.skeleton)?;
+    let compile_ms = compile_ms(args)?;
+    let program = Arc::new(program);
+    let assignments = parse_assignments(&program, &args.set)?;
+    let scenario = Scenario::load(&args.scenario).map_err(|e| anyhow!("{e}"))?;
+    if args.profile && !cfg!(feature = "profile") {
+        bail!(
+            "--profile needs a build with profiling: cargo run --release --features profile -- bench ..."
+        );
+    }
+    let cores = std::thread::available_parallelism().map_or(1, |n| n.get() as u32);
+    let max_threads = args.threads.unwrap_or(cores);
+    let native = if args.no_native {
+        None
+    } else {
+        strider_native::find(&program)
+    };
+
+    let mut sim = Simulation::new(&scenario, 60);
+    let world = sim.world().clone();
+    let mut track = Track { inputs: Vec::new() };
+    while let Some(frame) = sim.next_frame() {
+        track.inputs.push((frame.dt, frame.component_to_world));
+    }
+    if track.inputs.is_empty() {
+        bail!("{}: the scenario has no frames", args.scenario.display());
+    }
+
+    let n = args.characters as usize;
+    let make_crowd = || -> anyhow::Result<Crowd> {
+        let mut instances = Vec::with_capacity(n);
+        for _ in 0..n {
+            let mut instance = instantiate(&program, &skeleton, &args.skeleton)?;
+            apply(&mut instance, &skeleton, &assignments, &world)?;
+            instances.push(instance);
+        }
+        let offsets = (0..n).map(|i| i * track.inputs.len() / n).collect();
+        Ok(Crowd { instances, offsets })
+    };
+    let mut crowd = make_crowd()?;
+    let mut native_crowd = match native {
+        Some(_) => Some(make_crowd()?),
+        None => None,
+    };
+
+    let bar = progress_bar(args, max_threads);
+    let pools: Vec<rayon::ThreadPool> = (1..=max_threads)
+        .map(|t| {
+            rayon::ThreadPoolBuilder::new()
+                .num_threads(t as usize)
+                // As much stack as the main thread has.
+                .stack_size(8 << 20)
+                .build()
+                .context("cannot start the worker threads")
+        })
+        .collect::<anyhow::Result<_>>()?;
+
+    // Warm-up: both crowds run the same frames, so they stay in step.
+    let warm_up = args.warm_up.unwrap_or(track.inputs.len() as u32);
+    let mut frame = 0usize;
+    bar.set_message("warm-up");
+    for _ in 0..warm_up {
+        crowd.run_frame(&track, &world, frame, None, 1);
+        if let (Some(c), Some(code)) = (native_crowd.as_mut(), native) {
+            c.run_frame(&track, &world, frame, Some(code), 1);
+        }
+        frame += 1;
+    }
+
+    let mut rows = Vec::new();
+    let mut allocations: Option<u64> = Some(0);
+    let mut timed_frames = 0u64;
+    let per_rep = f64::from(args.frames) * n as f64;
+    for (t, pool) in (1..=max_threads).zip(&pools) {
+        bar.set_message(format!("{t} thread{}", if t == 1 { "" } else { "s" }));
+        let mut measure = || {
+            let mut interp = Vec::new();
+            let mut native_times = Vec::new();
+            // One untimed frame on these threads first (their first jobs set up per-thread
+            // state of the scheduler).
+            crowd.run_frame(&track, &world, frame, None, t);
+            if let (Some(c), Some(code)) = (native_crowd.as_mut(), native) {
+                c.run_frame(&track, &world, frame, Some(code), t);
+            }
+            frame += 1;
+            for rep in 0..args.repetitions {
+                // Interleaved, alternating which goes first.
+                let mut order = [false, true];
+                if rep % 2 == 1 {
+                    order.reverse();
+                }
+                for is_native in order {
+                    let (c, code) = match (is_native, native_crowd.as_mut(), native) {
+                        (false, _, _) => (&mut crowd, None),
+                        (true, Some(c), Some(code)) => (c, Some(code)),
+                        (true, _, _) => continue,
+                    };
+                    let start_frame = frame;
+                    let (elapsed, counted) = alloc_count::count(|| {
+                        let start = Instant::now();
+                        for f in 0..args.frames as usize {
+                            c.run_frame(&track, &world, start_frame + f, code, t);
+                        }
+                        start.elapsed()
+                    });
+                    allocations = allocations.zip(counted).map(|(a, b)| a + b);
+                    timed_frames += u64::from(args.frames);
+                    let ns = elapsed.as_nanos() as f64 / per_rep;
+                    if is_native {
+                        native_times.push(ns);
+                    } else {
+                        interp.push(ns);
+                    }
+                }
+                frame += args.frames as usize;
+                bar.inc(1);
+            }
+            (interp, native_times)
+        };
+        // One thread runs here, without the pool; more run inside the pool (entered once per
+        // thread count, outside the counted spans: entering it queues a job, which may
+        // allocate).
+        let (mut interp, mut native_times) = if t == 1 {
+            measure()
+        } else {
+            pool.install(measure)
+        };
+        let spread = Spread::of(&mut interp);
+        let native_spread = (!native_times.is_empty()).then(|| Spread::of(&mut native_times));
+        rows.push(Row {
+            threads: t,
+            ns_per_character_frame: spread,
+            characters_per_16ms: FRAME_BUDGET_NS / spread.median,
+            speedup: 0.0,
+            native_ns_per_character_frame: native_spread,
+            native_ratio: native_spread.map(|s| spread.median / s.median),
+        });
+    }
+    bar.finish_and_clear();
+    let single = rows[0].ns_per_character_frame.median;
+    for row in &mut rows {
+        row.speedup = single / row.ns_per_character_frame.median;
+    }
+    let identical = match &native_crowd {
+        Some(c) => Some(
+            crowd
+                .instances
+                .iter()
+                .zip(&c.instances)
+                .all(|(a, b)| same_state(a, b)),
+        ),
+        None => None,
+    };
+    let allocations_per_frame = allocations.map(|a| a as f64 / timed_frames.max(1) as f64);
+    let profile = if args.profile {
+        Some(profile_top(
+            &program,
+            &skeleton,
+            args,
+            &assignments,
+            &track,
+            &world,
+            warm_up as usize,
+        )?)
+    } else {
+        None
+    };
+
+    let headline = rows
+        .last()
+        .cloned()
+        .ok_or_else(|| anyhow!("no thread count"))?;
+    if args.json {
+        let value = serde_json::json!({
+            "graph": program.name(),
+            "scenario": scenario.name,
+            "characters": n,
+            "frames": args.frames,
+            "repetitions": args.repetitions,
+            "warm_up_frames": warm_up,
+            "threads": max_threads,
+            "cores": cores,
+            "ns_per_character_frame": headline.ns_per_character_frame,
+            "characters_per_16ms": headline.characters_per_16ms,
+            "allocations_per_frame": allocations_per_frame,
+            "compile_ms": compile_ms,
+            "native_ratio": headline.native_ratio,
+            "native_identical": identical,
+            "scaling": rows,
+            "profile": profile.as_ref().map(|p| &p.json),
+        });
+        output::print_stdout(&format!("{value}\n"))?;
+    } else {
+        let mut text = String::new();
+        let _ = writeln!(
+            text,
+            "graph       {} ({})\nscenario    {} ({}), 60 Hz input, characters offset in time\n\
+             workload    {n} characters x {} frames x {} repetitions per thread count, after {} warm-up frames\n\
+             machine     {cores} cores\n\
+             compile     {compile_ms:.2} ms (load + validate + compile, median of {COMPILES})\n",
+            program.name(),
+            args.graph.display(),
+            scenario.name,
+            args.scenario.display(),
+            args.frames,
+            args.repetitions,
+            warm_up,
+        );
+        let _ = writeln!(
+            text,
+            "threads   ns/character-frame [min, max]   characters/16.6 ms   speed-up   native ns [min, max]     native ratio"
+        );
+        for r in &rows {
+            let s = r.ns_per_character_frame;
+            let native = match (r.native_ns_per_character_frame, r.native_ratio) {
+                (Some(n), Some(ratio)) => format!(
+                    "{:>7.0} [{:.0}, {:.0}]   {ratio:>6.2}x",
+                    n.median, n.min, n.max
+                ),
+                _ => "      -".to_string(),
+            };
+            let _ = writeln!(
+                text,
+                "{:>7}   {:>8.0} [{:.0}, {:.0}]   {:>18.0}   {:>7.2}x   {native}",
+                r.threads, s.median, s.min, s.max, r.characters_per_16ms, r.speedup
+            );
+        }
+        let _ = writeln!(text);
+        match allocations_per_frame {
+            Some(a) => {
+                let _ = writeln!(
+                    text,
+                    "allocations {a} per frame ({} in {timed_frames} timed frames of {n} characters)",
+                    allocations.unwrap_or(0)
+                );
+            }
+            None => {
+                let _ = writeln!(text, "allocations not counted (no counting allocator)");
+            }
+        }
+        match (native, identical) {
+            (Some(code), Some(same)) => {
+                let _ = writeln!(
+                    text,
+                    "native      code generated from `{}`; outputs {} the interpreter's",
+                    code.name,
+                    if same {
+                        "bit-identical to"
+                    } else {
+                        "DIFFERENT from"
+                    }
+                );
+            }
+            _ if args.no_native => {}
+            _ => {
+                let _ = writeln!(
+                    text,
+                    "native      no baseline for this program (generate one with `strider native`)"
+                );
+            }
+        }
+        if let Some(p) = &profile {
+            let _ = write!(text, "\n{}", p.table);
+        }
+        output::print_stdout(&text)?;
+    }
+    Ok(ExitCode::SUCCESS)
+}
+
+/// Load + validate + compile of the graph, median of [`COMPILES`] runs, ms.
+fn compile_ms(args: &BenchArgs) -> anyhow::Result<f64> {
+    let mut times = Vec::with_capacity(COMPILES);
+    for _ in 0..COMPILES {
+        let start = Instant::now();
+        let compiled = strider_compiler::compile_file(&args.graph);
+        times.push(start.elapsed().as_secs_f64() * 1e3);
+        if compiled.is_err() {
+            bail!("{} no longer compiles", args.graph.display());
+        }
+    }
+    Ok(Spread::of(&mut times).median)
+}
+
+fn apply(
+    instance: &mut Instance,
+    skeleton: &SkeletonFile,
+    assignments: &[Assignment],
+    world: &World,
+) -> anyhow::Result<()> {
+    if !assignments.is_empty() {
+        apply_assignments(instance, skeleton, assignments, world)?;
+    }
+    Ok(())
+}
+
+/// Whether two instances hold bit-identical slots and poses.
+fn same_state(a: &Instance, b: &Instance) -> bool {
+    let bits = |t: &strider_core::Transform| {
+        let (tr, r, s) = (t.translation, t.rotation, t.scale);
+        [tr.x, tr.y, tr.z, r.x, r.y, r.z, r.w, s.x, s.y, s.z].map(f32::to_bits)
+    };
+    let (sa, sb) = (a.slots(), b.slots());
+    let floats = |x: &[f32], y: &[f32]| {
+        x.len() == y.len() && x.iter().zip(y).all(|(p, q)| p.to_bits() == q.to_bits())
+    };
+    a.pose()
+        .locals()
+        .iter()
+        .map(bits)
+        .eq(b.pose().locals().iter().map(bits))
+        && floats(&sa.floats, &sb.floats)
+        && sa.ints == sb.ints
+        && sa.bools == sb.bools
+        && sa
+            .transforms
+            .iter()
+            .map(bits)
+            .eq(sb.transforms.iter().map(bits))
+}
+
+fn progress_bar(args: &BenchArgs, max_threads: u32) -> ProgressBar {
+    let bar = ProgressBar::new(u64::from(max_threads) * u64::from(args.repetitions));
+    bar.set_style(
+        ProgressStyle::with_template("{msg:>12} [{bar:40}] {pos}/{len} repetitions ({eta})")
+            .unwrap_or_else(|_| ProgressStyle::default_bar())
+            .progress_chars("=> "),
+    );
+    if args.json {
+        bar.set_draw_target(ProgressDrawTarget::hidden());
+    }
+    bar
+}
+
+/// The profiler's top 20, as a table and as JSON.
+struct ProfileTop {
+    table: String,
+    json: serde_json::Value,
+}
+
+#[cfg(feature = "profile")]
+fn profile_top(
+    program: &Arc<Program>,
+    skeleton: &SkeletonFile,
+    args: &BenchArgs,
+    assignments: &[Assignment],
+    track: &Track,
+    world: &World,
+    warm_up: usize,
+) -> anyhow::Result<ProfileTop> {
+    let mut instance = instantiate(program, skeleton, &args.skeleton)?;
+    apply(&mut instance, skeleton, assignments, world)?;
+    let mut crowd = Crowd {
+        instances: vec![instance],
+        offsets: vec![0],
+    };
+    for f in 0..warm_up {
+        crowd.run_frame(track, world, f, None, 1);
+    }
+    crowd.instances[0].set_profiling(true);
+    let frames = track.inputs.len().max(args.frames as usize);
+    for f in 0..frames {
+        crowd.run_frame(track, world, warm_up + f, None, 1);
+    }
+    let nodes = crowd.instances[0].profile_by_node();
+    let total: u64 = nodes.iter().map(|n| n.nanos).sum();
+    let per_frame = |x: u64| x as f64 / frames as f64;
+    let mut table = format!(
+        "profile     one character, {frames} frames, {:.0} ns per frame profiled (the timer inflates cheap nodes; see docs/performance.md)\n\
+          share   ns/frame   runs/f  node\n",
+        per_frame(total)
+    );
+    let mut json = Vec::new();
+    for node in nodes.iter().take(20) {
+        let what = node
+            .origin(program)
+            .map_or_else(|| "(no origin)".to_string(), ToString::to_string);
+        let share = 100.0 * node.nanos as f64 / total.max(1) as f64;
+        let _ = writeln!(
+            table,
+            "{share:>6.1}% {:>10.1} {:>8.1}  {what}",
+            per_frame(node.nanos),
+            per_frame(node.runs),
+        );
+        json.push(serde_json::json!({
+            "node": what,
+            "share_percent": share,
+            "ns_per_frame": per_frame(node.nanos),
+            "runs_per_frame": per_frame(node.runs),
+        }));
+    }
+    Ok(ProfileTop {
+        table,
+        json: json.into(),
+    })
+}
+
+#[cfg(not(feature = "profile"))]
+fn profile_top(
+    _: &Arc<Program>,
+    _: &SkeletonFile,
+    _: &BenchArgs,
+    _: &[Assignment],
+    _: &Track,
+    _: &World,
+    _: usize,
+) -> anyhow::Result<ProfileTop> {
+    bail!(
+        "--profile needs a build with profiling: cargo run --release --features profile -- bench ..."
+    )
+}
