@@ -66,7 +66,7 @@ pub fn generate(program: &strider_vm::Program, graph: &Path, out: Option<&Path>)
         "The forward event of `{graph}`, compiled ahead of time: the native baseline that\n\
          `strider bench` measures the interpreter against (see docs/performance.md).\n\n\
          Generated from the graph; do not edit. Regenerate after changing the graph or the\n\
-         compiler with:\n\n    cargo run --release -- {command}\n"
+         compiler with:\n\n```text\ncargo run --release -- {command}\n```\n"
     );
     strider_vm::native::generate(program, program.name(), &header)
 }

@@ -1,13 +1,20 @@
 //! Code generation: typed slot layout and a flat instruction list.
 //!
 //! Each function call site gets its own frame of slots (calls are inlined), so per-call
-//! state never aliases. Pure nodes are emitted in front of every step that needs them;
-//! within one step each is emitted once.
+//! state never aliases. Pure nodes are emitted in front of the first step that needs them,
+//! and their values are kept for later steps for as long as nothing they read changes
+//! (see [`Gen::invalidate`]): a `Set` of a variable they read, a mutating node that edits
+//! an array they read or moves the pose they read, a call of a function that does either.
+//! Values are not kept across a loop's iterations, nor past the end of a loop; after a
+//! `Branch`, only values both arms kept are. The result is the same as pulling every pure
+//! node again for each step (the semantics of the graph), with each computed once per
+//! stretch of code in which its inputs are unchanged.
 //!
 //! Every instruction is tagged with its origin (the node or step that produced it, see
 //! [`strider_vm::InstrOrigin`]) in the program's side table, for profiling and tools.
 
 use crate::check::{Arg, Body, CStep, Checked, LoopPart, NodeKind, Src, VarRef};
+use crate::reads::{ReadsTable, writes_pose};
 use std::collections::{HashMap, HashSet};
 use strider_graph::{EventKind, FunctionDecl, LoadedGraph, NodeDecl, Step};
 use strider_nodes::{Elem, Op, Value, ValueType, registry};
@@ -131,6 +138,11 @@ struct Gen<'a> {
     event: Event,
     /// Origin of node `n` of body `f` (`None`: the graph) in an event (`None` in functions).
     node_origins: HashMap<(Option<usize>, usize, Option<Event>), OriginId>,
+    /// Per frame: the pure nodes whose output slots hold their current value at the point
+    /// being emitted.
+    avail: Vec<HashSet<usize>>,
+    /// What each pure node's value depends on.
+    reads: ReadsTable,
 }
 
 pub(crate) fn generate(loaded: &LoadedGraph, checked: &Checked) -> Program {
@@ -183,6 +195,8 @@ pub(crate) fn generate(loaded: &LoadedGraph, checked: &Checked) -> Program {
         node_sources,
         event: Event::Construction,
         node_origins: HashMap::new(),
+        avail: Vec::new(),
+        reads: ReadsTable::default(),
     };
     for v in &checked.globals {
         let slot = g.pb.alloc(v.ty);
@@ -198,6 +212,7 @@ pub(crate) fn generate(loaded: &LoadedGraph, checked: &Checked) -> Program {
         });
     }
     let top = g.frame(None, Vec::new());
+    g.avail = vec![HashSet::new(); g.frames.len()];
     for (steps, doc, event) in [
         (
             &checked.graph.construction,
@@ -207,6 +222,7 @@ pub(crate) fn generate(loaded: &LoadedGraph, checked: &Checked) -> Program {
         (&checked.graph.forward, &forward_doc, Event::Forward),
     ] {
         g.event = event;
+        g.avail.iter_mut().for_each(HashSet::clear);
         let entry = g.pb.here();
         if event == Event::Construction {
             g.pb.set_construction_entry(entry);
@@ -480,35 +496,35 @@ impl Gen<'_> {
         }
     }
 
-    /// Emits the pure nodes `args` depend on (each once per step), then returns the
-    /// argument slots.
-    fn pull(&mut self, frame: usize, args: &[Arg], done: &mut HashSet<usize>) -> Vec<u32> {
+    /// Emits the pure nodes `args` depend on that do not hold their current value yet,
+    /// then returns the argument slots.
+    fn pull(&mut self, frame: usize, args: &[Arg]) -> Vec<u32> {
         for a in args {
             if let Src::Node { node, .. } = a.src {
-                self.pure_closure(frame, node, done);
+                self.pure_closure(frame, node);
             }
         }
         args.iter().map(|a| self.slot(frame, a)).collect()
     }
 
     /// Emits pure node `root` after the pure nodes it depends on, in dependency order,
-    /// skipping those already emitted for this step. Iterative (post-order with an explicit
-    /// stack), so long data-flow chains cannot overflow the stack; the checker guarantees
-    /// the dependencies are acyclic.
-    fn pure_closure(&mut self, frame: usize, root: usize, done: &mut HashSet<usize>) {
+    /// skipping those that hold their current value (see [`Gen::avail`]). Iterative
+    /// (post-order with an explicit stack), so long data-flow chains cannot overflow the
+    /// stack; the checker guarantees the dependencies are acyclic.
+    fn pure_closure(&mut self, frame: usize, root: usize) {
         let mut stack = vec![(root, false)];
         while let Some((n, inputs_done)) = stack.pop() {
             if inputs_done {
-                self.node(frame, n, done);
+                self.node(frame, n);
                 continue;
             }
-            if !self.body(frame).nodes[n].pure || !done.insert(n) {
+            if !self.body(frame).nodes[n].pure || !self.avail[frame].insert(n) {
                 continue;
             }
             stack.push((n, true));
             for a in self.body(frame).nodes[n].inputs.iter().rev() {
                 if let Src::Node { node, .. } = a.src
-                    && !done.contains(&node)
+                    && !self.avail[frame].contains(&node)
                 {
                     stack.push((node, false));
                 }
@@ -516,19 +532,73 @@ impl Gen<'_> {
         }
     }
 
+    /// Forgets the kept values of `frame` that read the outputs of exec node `n`, which
+    /// just ran.
+    fn invalidate_readers_of(&mut self, frame: usize, n: usize) {
+        let body = self.frames[frame].body;
+        let kept: Vec<usize> = self.avail[frame].iter().copied().collect();
+        for m in kept {
+            if self
+                .reads
+                .node(self.checked, body, m)
+                .execs
+                .binary_search(&n)
+                .is_ok()
+            {
+                self.avail[frame].remove(&m);
+            }
+        }
+    }
+
+    /// Forgets the kept values of `frame` that depend on what a step just wrote: graph
+    /// variable or local `var`, and/or the pose.
+    fn invalidate(&mut self, frame: usize, var: Option<VarRef>, pose: bool) {
+        let body = self.frames[frame].body;
+        let kept: Vec<usize> = self.avail[frame].iter().copied().collect();
+        for n in kept {
+            let r = self.reads.node(self.checked, body, n);
+            let stale = (pose && r.pose)
+                || match var {
+                    Some(VarRef::Global(g)) => r.globals.binary_search(&g).is_ok(),
+                    Some(VarRef::Local(l)) => r.locals.binary_search(&l).is_ok(),
+                    None => false,
+                };
+            if stale {
+                self.avail[frame].remove(&n);
+            }
+        }
+    }
+
+    /// Forgets the kept values of `frame` that a mutating node's run may have changed:
+    /// arrays it edits in place (variables, or a pure node's output: then everything), and
+    /// the pose if it may move bones.
+    fn invalidate_after(&mut self, frame: usize, op: Op, inputs: &[Arg]) {
+        for a in inputs {
+            match a.src {
+                Src::Global(g) => self.invalidate(frame, Some(VarRef::Global(g)), false),
+                Src::Local(l) => self.invalidate(frame, Some(VarRef::Local(l)), false),
+                Src::Node { .. } if a.ty.elem().is_some() => self.avail[frame].clear(),
+                _ => {}
+            }
+        }
+        if writes_pose(op) {
+            self.invalidate(frame, None, true);
+        }
+    }
+
     /// Emits node `n` of `frame` itself; the pure nodes it reads must already be emitted
     /// for this step (see [`Gen::pull`]).
-    fn node(&mut self, frame: usize, n: usize, done: &mut HashSet<usize>) {
+    fn node(&mut self, frame: usize, n: usize) {
         let origin = self.node_origin(frame, n);
         let outer = self.pb.set_origin(Some(origin));
-        self.node_code(frame, n, done);
+        self.node_code(frame, n);
         self.pb.set_origin(outer);
     }
 
     /// [`Gen::node`] without setting the origin.
-    fn node_code(&mut self, frame: usize, n: usize, done: &mut HashSet<usize>) {
+    fn node_code(&mut self, frame: usize, n: usize) {
         let node = self.body(frame).nodes[n].clone();
-        let ins = self.pull(frame, &node.inputs, done);
+        let ins = self.pull(frame, &node.inputs);
         match node.kind {
             NodeKind::Builtin(op) => {
                 let mut operands = ins;
@@ -553,6 +623,8 @@ impl Gen<'_> {
                     let to = self.frames[callee].locals[i];
                     self.pb.emit(Op::Copy(*ty), &[from, to]);
                 }
+                // The inputs were just copied: nothing of an earlier run of the body holds.
+                self.avail[callee].clear();
                 let mut rets = Vec::new();
                 let exec = &self.checked.functions[f].exec;
                 let doc = &self.fn_decls[f].exec;
@@ -560,6 +632,17 @@ impl Gen<'_> {
                 let end = self.pb.here();
                 for r in rets {
                     self.pb.patch(r, 0, end);
+                }
+                if !node.pure {
+                    // It may have set any graph variable and moved any bone.
+                    let kept: Vec<usize> = self.avail[frame].iter().copied().collect();
+                    let body = self.frames[frame].body;
+                    for m in kept {
+                        let r = self.reads.node(self.checked, body, m);
+                        if r.pose || !r.globals.is_empty() {
+                            self.avail[frame].remove(&m);
+                        }
+                    }
                 }
             }
         }
@@ -585,23 +668,31 @@ impl Gen<'_> {
 
     /// [`Gen::step`] without setting the origin.
     fn step_code(&mut self, frame: usize, step: &CStep, doc: Option<&Step>, rets: &mut Vec<u32>) {
-        let mut done = HashSet::new();
         match step {
             CStep::Set { target, ty, arg } => {
-                let from = self.pull(frame, std::slice::from_ref(arg), &mut done)[0];
+                let from = self.pull(frame, std::slice::from_ref(arg))[0];
                 let to = match target {
                     VarRef::Global(i) => self.globals[*i],
                     VarRef::Local(i) => self.frames[frame].locals[*i],
                 };
                 self.pb.emit(Op::Copy(*ty), &[from, to]);
+                self.invalidate(frame, Some(*target), false);
             }
-            CStep::Exec(n) => self.node(frame, *n, &mut done),
+            CStep::Exec(n) => {
+                self.node(frame, *n);
+                self.invalidate_readers_of(frame, *n);
+                let node = &self.body(frame).nodes[*n];
+                if let NodeKind::Builtin(op) = node.kind {
+                    let inputs = node.inputs.clone();
+                    self.invalidate_after(frame, op, &inputs);
+                }
+            }
             CStep::Branch {
                 condition,
                 then,
                 otherwise,
             } => {
-                let c = self.pull(frame, std::slice::from_ref(condition), &mut done)[0];
+                let c = self.pull(frame, std::slice::from_ref(condition))[0];
                 let (then_doc, else_doc): (&[Step], &[Step]) = match doc {
                     Some(Step::Branch {
                         then: t,
@@ -611,16 +702,19 @@ impl Gen<'_> {
                     _ => (&[], &[]),
                 };
                 let jf = self.pb.emit(Op::JumpIfFalse, &[c, 0]);
+                let before = self.avail[frame].clone();
                 self.steps(frame, then, then_doc, rets);
+                let after_then = std::mem::replace(&mut self.avail[frame], before);
                 let j = self.pb.emit(Op::Jump, &[0]);
                 let else_at = self.pb.here();
                 self.pb.patch(jf, 1, else_at);
                 self.steps(frame, otherwise, else_doc, rets);
                 let end = self.pb.here();
                 self.pb.patch(j, 0, end);
+                self.avail[frame].retain(|n| after_then.contains(n));
             }
             CStep::ForEach { items, lp, body } => {
-                let source = self.pull(frame, std::slice::from_ref(items), &mut done)[0];
+                let source = self.pull(frame, std::slice::from_ref(items))[0];
                 let elem = items.ty.elem().unwrap_or(Elem::Int);
                 let zero = self.constant(&Value::Int(0), "");
                 let (counter, element, index, count, arr) = {
@@ -638,13 +732,16 @@ impl Gen<'_> {
                     Some(Step::ForEach { body, .. }) => body,
                     _ => &[],
                 };
+                // Nothing is kept into, across or out of the iterations.
+                self.avail[frame].clear();
                 self.steps(frame, body, body_doc, rets);
                 self.pb.emit(Op::Jump, &[head]);
                 let exit = self.pb.here();
                 self.pb.patch(next, 5, exit);
+                self.avail[frame].clear();
             }
             CStep::For { count, lp, body } => {
-                let source = self.pull(frame, std::slice::from_ref(count), &mut done)[0];
+                let source = self.pull(frame, std::slice::from_ref(count))[0];
                 let zero = self.constant(&Value::Int(0), "");
                 let (counter, index, n) = {
                     let l = &self.frames[frame].loops[*lp];
@@ -658,10 +755,13 @@ impl Gen<'_> {
                     Some(Step::For { body, .. }) => body,
                     _ => &[],
                 };
+                // Nothing is kept into, across or out of the iterations.
+                self.avail[frame].clear();
                 self.steps(frame, body, body_doc, rets);
                 self.pb.emit(Op::Jump, &[head]);
                 let exit = self.pb.here();
                 self.pb.patch(next, 3, exit);
+                self.avail[frame].clear();
             }
             CStep::Sequence(blocks) => {
                 let docs: &[Vec<Step>] = match doc {
@@ -675,8 +775,7 @@ impl Gen<'_> {
             }
             CStep::Return(values) => {
                 for (o, arg) in values {
-                    let mut done = HashSet::new();
-                    let from = self.pull(frame, std::slice::from_ref(arg), &mut done)[0];
+                    let from = self.pull(frame, std::slice::from_ref(arg))[0];
                     let to = self.frames[frame].outputs[*o];
                     let ty = self.body(frame).outputs[*o];
                     self.pb.emit(Op::Copy(ty), &[from, to]);
@@ -796,5 +895,79 @@ mod tests {
         );
         assert_eq!(read(&[], PinOwner::NodeOutput(3), "z"), Value::Float(3.0));
         assert_eq!(read(&[1], PinOwner::Local, "scratch"), Value::Float(1.5));
+    }
+
+    /// Pure values are kept between steps only while what they read is unchanged.
+    const REUSE: &str = r#"Graph(
+        version: 1,
+        name: "reuse",
+        variables: {
+            "A": (type: Float, default: 1.0),
+            "Arr": (type: FloatArray, default: [1.0, 2.0]),
+            "Flag": (type: Bool, default: true),
+            "B": (type: Float), "C": (type: Float), "D": (type: Float), "E": (type: Float),
+            "F": (type: Float), "G": (type: Float), "P1": (type: Float), "P2": (type: Float),
+            "H": (type: Float), "K": (type: Float),
+        },
+        nodes: {
+            "twice": Multiply(a: var("A"), b: 2.0),
+            "trace": SphereTrace(start: (0.0, 0.0, 100.0), end: (0.0, 0.0, -100.0), radius: 5.0),
+            "first": At(array: var("Arr"), index: 0),
+            "pelvis": GetTransform(bone: bone("root"), space: Global),
+            "parts": BreakTransform(value: "pelvis"),
+            "pz": BreakVector(value: "parts.translation"),
+            "moved": MakeTransform(translation: (0.0, 0.0, 5.0)),
+            "plus_one": Add(a: var("A"), b: 1.0),
+        },
+        events: {
+            forward: [
+                Set("B", "twice"),
+                Set("A", 5.0),
+                Set("C", "twice"),
+                Set("D", "trace.distance"),
+                Set("E", "trace.distance"),
+                Set("F", "first"),
+                SetAt(array: var("Arr"), index: 0, value: 7.0),
+                Set("G", "first"),
+                Set("P1", "pz.z"),
+                SetTransform(bone: bone("root"), value: "moved", space: Global),
+                Set("P2", "pz.z"),
+                Set("H", "plus_one"),
+                Branch(condition: var("Flag"), then: [Set("A", 0.5)]),
+                Set("K", "plus_one"),
+            ],
+        },
+    )"#;
+
+    #[test]
+    fn pure_values_are_kept_only_while_their_inputs_are_unchanged() {
+        use strider_nodes::Op;
+        let program = crate::compile_str(Path::new("reuse.ron"), REUSE).expect("compiles");
+        // Read by two steps with nothing in between that it reads: traced once.
+        let traces = program
+            .code()
+            .iter()
+            .filter(|i| i.op == Op::SphereTrace)
+            .count();
+        assert_eq!(traces, 1);
+        let mut instance = Instance::new(Arc::new(program.clone()), skeleton()).expect("instance");
+        instance.run_forward(&FrameInput::default(), &EmptyWorld, false);
+        let get = |name: &str| instance.variable(program.variable_id(name).expect(name));
+        // A = 1, then 5: `twice` is computed again after the Set.
+        assert_eq!(get("B"), Value::Float(2.0));
+        assert_eq!(get("C"), Value::Float(10.0));
+        // A miss reports the trace's length: 200.
+        assert_eq!(get("D"), Value::Float(200.0));
+        assert_eq!(get("E"), Value::Float(200.0));
+        // SetAt edits the array in place: `first` is read again.
+        assert_eq!(get("F"), Value::Float(1.0));
+        assert_eq!(get("G"), Value::Float(7.0));
+        // SetTransform moves the bone: the pose is read again.
+        assert_eq!(get("P1"), Value::Float(0.0));
+        assert_eq!(get("P2"), Value::Float(5.0));
+        // `plus_one` (A = 5: 6) is kept by the empty else arm but not by the then arm, which
+        // sets A = 0.5: after the branch it is computed again (1.5).
+        assert_eq!(get("H"), Value::Float(6.0));
+        assert_eq!(get("K"), Value::Float(1.5));
     }
 }

@@ -5,13 +5,15 @@
 //! names), picks each node's overload from its input types, finds data-flow cycles and
 //! recursion (petgraph), validates exec lists, and reports **all** problems as
 //! diagnostics. Only a graph without errors reaches `codegen`, which lays out typed slots
-//! and emits a flat instruction list: pure nodes are emitted in front of each exec step
-//! that needs them (once per step, once per loop iteration), function calls are inlined
-//! with their own slots per call site, and control flow becomes jumps.
+//! and emits a flat instruction list: pure nodes are emitted in front of the first exec
+//! step that needs them and kept while what they read is unchanged (at most once per
+//! loop iteration; `reads` says what each reads), function calls are inlined with their
+//! own slots per call site, and control flow becomes jumps.
 
 mod check;
 mod codegen;
 mod literal;
+mod reads;
 
 use std::path::Path;
 use strider_graph::{Diagnostic, LoadedGraph};
