@@ -9,6 +9,7 @@
 
 pub mod drive;
 pub mod mover;
+pub mod overrides;
 pub mod plots;
 pub mod report;
 pub mod scenario;

@@ -1,0 +1,672 @@
+//! The running character behind the panels: the graph (document and compiled program), the
+//! skeleton, the world, the mover or a scenario, the instance, the recording, and hot reload.
+//!
+//! The simulation advances in fixed steps of [`SIM_DT`] (1/60 s) whatever the UI's frame
+//! rate: the mover takes [`MOVER_SUBSTEPS`] steps of 1/720 s per frame (the host's mover
+//! rate, as in scenarios), then the graph runs its `forward` event once with `dt = 1/60`.
+//! Slow motion and pause change how many steps run per wall-clock second, never `dt`.
+
+use crate::recording::Recorder;
+use crate::{InspectError, InspectOptions};
+use std::path::{Path, PathBuf};
+use std::sync::Arc;
+use std::sync::mpsc::{Receiver, channel};
+use std::time::{Duration, Instant};
+use strider_core::{Transform, Vec3};
+use strider_graph::{LoadedGraph, SkeletonFile};
+use strider_host::mover::{MoveInput, Mover};
+use strider_host::overrides::Overrides;
+use strider_host::report::{PlantSpan, Report, ReportRig};
+use strider_host::scenario::{Scenario, Simulation};
+use strider_host::world::World;
+use strider_nodes::Value;
+use strider_vm::{FrameInput, InputPose, Instance, Program, VariableId};
+
+/// Simulation rate, frames per second.
+pub const SIM_HZ: u32 = 60;
+/// Seconds per simulation frame.
+pub const SIM_DT: f32 = 1.0 / SIM_HZ as f32;
+/// Mover steps per simulation frame (the host's mover runs at 720 Hz).
+pub const MOVER_SUBSTEPS: u32 = 12;
+/// How many frames the recording keeps: 32 s at 60 Hz.
+pub const RECORD_FRAMES: usize = 32 * SIM_HZ as usize;
+/// How long the watched files must stay quiet before a reload, so that an editor's
+/// several writes reload once.
+pub const RELOAD_QUIET: Duration = Duration::from_millis(150);
+
+/// The world used when neither a scenario nor a world file is given: ground, a box, a
+/// ramp, stairs, a platform and a patch of uneven ground around the start.
+pub const DEMO_WORLD: &str = include_str!("../assets/demo_world.ron");
+
+/// Where the character's input comes from.
+#[derive(Clone, Debug)]
+pub enum Drive {
+    /// The keyboard (or a test) sets [`Session::input`] before each step.
+    Keyboard,
+    /// A scenario's timeline plays (and starts again at its end).
+    Scenario {
+        /// The scenario file.
+        path: PathBuf,
+        /// The scenario.
+        scenario: Box<Scenario>,
+        /// Its simulation at [`SIM_HZ`].
+        sim: Box<Simulation>,
+    },
+}
+
+/// The live quality report and the foot plants of the recorded frames of the current run.
+#[derive(Clone, Debug, Default)]
+pub struct Quality {
+    /// The report over the recorded frames of the current program (`None` before the
+    /// first evaluation or when the skeleton has no contact points).
+    pub report: Option<Report>,
+    /// Frames the report covers.
+    pub frames: usize,
+    /// Planted spans found in those frames (world positions in each span).
+    pub plants: Vec<PlantSpan>,
+    /// Why there is no report, if there is none.
+    pub unavailable: Option<String>,
+}
+
+/// A file watcher: events from notify, and which files matter.
+struct Watch {
+    _watcher: notify::RecommendedWatcher,
+    events: Receiver<notify::Result<notify::Event>>,
+    files: Vec<PathBuf>,
+}
+
+/// Everything the inspector runs. See the module docs for the stepping model.
+pub struct Session {
+    options: InspectOptions,
+    loaded: Arc<LoadedGraph>,
+    program: Arc<Program>,
+    skeleton: SkeletonFile,
+    rig: Result<ReportRig, String>,
+    instance: Instance,
+    world: World,
+    world_path: Option<PathBuf>,
+    mover: Mover,
+    drive: Drive,
+    /// The input used by the next keyboard-driven steps.
+    pub input: MoveInput,
+    frame: u64,
+    time: f64,
+    generation: u32,
+    recorder: Recorder,
+    problems: Vec<String>,
+    status: String,
+    watch: Option<Watch>,
+    dirty_since: Option<Instant>,
+    quality: Quality,
+    quality_frame: u64,
+    /// Per node location (`file:line:col`), mean µs per frame over the last half second
+    /// (profiling builds only).
+    profile_us: Option<std::collections::HashMap<String, f64>>,
+}
+
+fn diagnostics_text(d: &[strider_graph::Diagnostic]) -> Vec<String> {
+    d.iter().map(ToString::to_string).collect()
+}
+
+fn canonical(path: &Path) -> PathBuf {
+    std::fs::canonicalize(path).unwrap_or_else(|_| path.to_path_buf())
+}
+
+impl Session {
+    /// Loads the graph, skeleton, world or scenario and overrides of `options`, creates the
+    /// instance and starts watching the files.
+    ///
+    /// # Errors
+    /// [`InspectError::Load`] with every problem (`path:line:col: error: ...`) when the
+    /// first load fails: there is no last good program to run yet.
+    pub fn open(options: InspectOptions) -> Result<Session, InspectError> {
+        let fail = |lines: Vec<String>| InspectError::Load(lines.join("\n"));
+        let loaded =
+            strider_graph::load_graph(&options.graph).map_err(|d| fail(diagnostics_text(&d)))?;
+        let program = strider_compiler::compile(&loaded).map_err(|d| fail(diagnostics_text(&d)))?;
+        let skeleton = strider_graph::load_skeleton(&options.skeleton)
+            .map_err(|d| fail(diagnostics_text(&d)))?;
+        let program = Arc::new(program);
+        let mut instance = Instance::new(Arc::clone(&program), Arc::clone(&skeleton.skeleton))
+            .map_err(|e| fail(vec![e.to_string()]))?;
+        let (world, world_path, drive) = match (&options.scenario, &options.world) {
+            (Some(path), _) => {
+                let scenario = Scenario::load(path).map_err(|e| fail(vec![e.to_string()]))?;
+                let sim = Simulation::new(&scenario, SIM_HZ);
+                (
+                    sim.world().clone(),
+                    None,
+                    Drive::Scenario {
+                        path: path.clone(),
+                        scenario: Box::new(scenario),
+                        sim: Box::new(sim),
+                    },
+                )
+            }
+            (None, Some(path)) => (
+                World::load(path).map_err(|e| fail(vec![e.to_string()]))?,
+                Some(path.clone()),
+                Drive::Keyboard,
+            ),
+            (None, None) => (
+                World::from_str(DEMO_WORLD).map_err(|e| fail(vec![e.to_string()]))?,
+                None,
+                Drive::Keyboard,
+            ),
+        };
+        if let Some(path) = &options.overrides {
+            Overrides::load(path, &program)
+                .map_err(|d| fail(diagnostics_text(&d)))?
+                .apply(&mut instance);
+        }
+        let mut mover = Mover::new(Default::default(), Vec3::ZERO, 0.0);
+        mover.settle(&world);
+        let rig = ReportRig::from_skeleton(&skeleton).map_err(|e| e.to_string());
+        let recorder = Recorder::new(RECORD_FRAMES);
+        let mut session = Session {
+            options,
+            loaded: Arc::new(loaded),
+            program,
+            skeleton,
+            rig,
+            instance,
+            world,
+            world_path,
+            mover,
+            drive,
+            input: MoveInput::STAND,
+            frame: 0,
+            time: 0.0,
+            generation: 0,
+            recorder,
+            problems: Vec::new(),
+            status: String::new(),
+            watch: None,
+            dirty_since: None,
+            quality: Quality::default(),
+            quality_frame: 0,
+            profile_us: None,
+        };
+        session.start_profiling();
+        session.status = format!("loaded {}", session.options.graph.display());
+        session.watch = session.start_watch();
+        Ok(session)
+    }
+
+    /// The files whose changes reload the session: the graph, its imports, the skeleton,
+    /// and the scenario or world file.
+    #[must_use]
+    pub fn watched_files(&self) -> Vec<PathBuf> {
+        let mut files: Vec<PathBuf> = self
+            .loaded
+            .sources
+            .files()
+            .map(|f| canonical(self.loaded.sources.path(f)))
+            .collect();
+        files.push(canonical(&self.options.skeleton));
+        if let Drive::Scenario { path, .. } = &self.drive {
+            files.push(canonical(path));
+        }
+        if let Some(path) = &self.world_path {
+            files.push(canonical(path));
+        }
+        files.sort();
+        files.dedup();
+        files
+    }
+
+    fn start_watch(&self) -> Option<Watch> {
+        use notify::Watcher as _;
+        let (tx, rx) = channel();
+        let mut watcher = notify::recommended_watcher(move |event| {
+            let _ = tx.send(event);
+        })
+        .ok()?;
+        let files = self.watched_files();
+        let mut dirs: Vec<PathBuf> = files
+            .iter()
+            .filter_map(|f| f.parent().map(Path::to_path_buf))
+            .collect();
+        dirs.sort();
+        dirs.dedup();
+        for dir in dirs {
+            // Watching the folder (not the file) also sees editors that save by renaming a
+            // new file over the old one.
+            let _ = watcher.watch(&dir, notify::RecursiveMode::NonRecursive);
+        }
+        Some(Watch {
+            _watcher: watcher,
+            events: rx,
+            files,
+        })
+    }
+
+    /// Looks at file events; once a watched file changed and [`RELOAD_QUIET`] passed
+    /// without further change, reloads. Returns true when a reload was attempted.
+    pub fn poll_files(&mut self) -> bool {
+        let Some(watch) = &self.watch else {
+            return false;
+        };
+        let mut changed = false;
+        while let Ok(event) = watch.events.try_recv() {
+            let Ok(event) = event else { continue };
+            if matches!(event.kind, notify::EventKind::Access(_)) {
+                continue;
+            }
+            if event
+                .paths
+                .iter()
+                .any(|p| watch.files.iter().any(|f| *f == canonical(p) || f == p))
+            {
+                changed = true;
+            }
+        }
+        if changed {
+            self.dirty_since = Some(Instant::now());
+        }
+        match self.dirty_since {
+            Some(at) if at.elapsed() >= RELOAD_QUIET => {
+                self.dirty_since = None;
+                self.reload();
+                true
+            }
+            _ => false,
+        }
+    }
+
+    /// Reloads every file now. On success the new program replaces the old one (the
+    /// instance is re-created; every variable whose name and type are unchanged keeps its
+    /// value, tunables and state alike); on failure the problems are listed and the last
+    /// good program keeps running. Returns true on success.
+    pub fn reload(&mut self) -> bool {
+        let mut problems = Vec::new();
+        let skeleton = match strider_graph::load_skeleton(&self.options.skeleton) {
+            Ok(s) => s,
+            Err(d) => {
+                problems.extend(diagnostics_text(&d));
+                self.skeleton.clone()
+            }
+        };
+        let compiled = strider_graph::load_graph(&self.options.graph).and_then(|loaded| {
+            let program = strider_compiler::compile(&loaded)?;
+            Ok((loaded, program))
+        });
+        let (loaded, program) = match compiled {
+            Ok(ok) => ok,
+            Err(d) => {
+                problems.extend(diagnostics_text(&d));
+                return self.reload_failed(problems);
+            }
+        };
+        let program = Arc::new(program);
+        let mut instance = match Instance::new(Arc::clone(&program), Arc::clone(&skeleton.skeleton))
+        {
+            Ok(i) => i,
+            Err(e) => {
+                problems.push(e.to_string());
+                return self.reload_failed(problems);
+            }
+        };
+        self.reload_drive(&mut problems);
+        carry_variables(&self.instance, &mut instance);
+        let same_program = program.code() == self.program.code()
+            && program.operands() == self.program.operands()
+            && program.variables() == self.program.variables();
+        self.loaded = Arc::new(loaded);
+        self.program = program;
+        self.rig = ReportRig::from_skeleton(&skeleton).map_err(|e| e.to_string());
+        self.skeleton = skeleton;
+        self.instance = instance;
+        self.start_profiling();
+        if !same_program {
+            self.generation += 1;
+        }
+        self.status = format!(
+            "reloaded {} at frame {}",
+            self.options.graph.display(),
+            self.frame
+        );
+        self.problems = problems;
+        self.watch = self.start_watch();
+        self.problems.is_empty()
+    }
+
+    fn reload_failed(&mut self, problems: Vec<String>) -> bool {
+        self.status = format!(
+            "reload failed at frame {}: running the last good program",
+            self.frame
+        );
+        self.problems = problems;
+        false
+    }
+
+    /// Reloads the scenario or world file, keeping the old one on error.
+    fn reload_drive(&mut self, problems: &mut Vec<String>) {
+        if let Drive::Scenario { path, .. } = &self.drive {
+            let path = path.clone();
+            match Scenario::load(&path) {
+                Ok(s) => self.play_loaded_scenario(path, s),
+                Err(e) => problems.push(e.to_string()),
+            }
+        } else if let Some(path) = &self.world_path {
+            match World::load(path) {
+                Ok(w) => self.world = w,
+                Err(e) => problems.push(e.to_string()),
+            }
+        }
+    }
+
+    /// Plays the scenario at `path` from its start (the character is placed at the
+    /// scenario's start).
+    ///
+    /// # Errors
+    /// The scenario's problem, `path:line:col: error: ...`.
+    pub fn play_scenario(&mut self, path: &Path) -> Result<(), String> {
+        let scenario = Scenario::load(path).map_err(|e| e.to_string())?;
+        self.play_loaded_scenario(path.to_path_buf(), scenario);
+        self.watch = self.start_watch();
+        Ok(())
+    }
+
+    fn play_loaded_scenario(&mut self, path: PathBuf, scenario: Scenario) {
+        let sim = Simulation::new(&scenario, SIM_HZ);
+        self.world = sim.world().clone();
+        self.world_path = None;
+        self.drive = Drive::Scenario {
+            path,
+            scenario: Box::new(scenario),
+            sim: Box::new(sim),
+        };
+    }
+
+    /// Drives the character with [`Session::input`] from where it stands now (in the
+    /// current world).
+    pub fn drive_with_keyboard(&mut self) {
+        if let Drive::Scenario { sim, .. } = &self.drive {
+            let m = sim.mover();
+            self.mover = Mover::new(*m.settings(), m.position(), m.yaw());
+            self.mover.settle(&self.world);
+        }
+        self.drive = Drive::Keyboard;
+    }
+
+    /// Runs one simulation frame: moves the character (keyboard input or scenario), runs
+    /// the graph with `dt` = [`SIM_DT`] and debug drawing on, and records the frame.
+    pub fn step(&mut self) {
+        let (dt, to_world, velocity, standing, teleported) = match &mut self.drive {
+            Drive::Keyboard => {
+                for _ in 0..MOVER_SUBSTEPS {
+                    self.mover.step(
+                        &self.input,
+                        1.0 / (SIM_HZ * MOVER_SUBSTEPS) as f32,
+                        &self.world,
+                    );
+                }
+                (
+                    SIM_DT,
+                    self.mover.component_to_world(),
+                    self.mover.velocity(),
+                    self.input.is_standing_still(),
+                    false,
+                )
+            }
+            Drive::Scenario { scenario, sim, .. } => {
+                let frame = match sim.next_frame() {
+                    Some(f) => f,
+                    None => {
+                        **sim = Simulation::new(scenario, SIM_HZ);
+                        match sim.next_frame() {
+                            Some(f) => f,
+                            None => return,
+                        }
+                    }
+                };
+                (
+                    frame.dt,
+                    frame.component_to_world,
+                    frame.velocity,
+                    frame.standing_still,
+                    frame.teleported,
+                )
+            }
+        };
+        let input = FrameInput {
+            dt,
+            component_to_world: to_world,
+            pose: InputPose::Rest,
+        };
+        self.instance.run_forward(&input, &self.world, true);
+        self.time += f64::from(dt);
+        self.recorder.push(
+            crate::recording::FrameMeta {
+                frame: self.frame,
+                time: self.time,
+                dt,
+                generation: self.generation,
+                to_world,
+                velocity,
+                standing_still: standing,
+                teleported,
+            },
+            &mut self.instance,
+        );
+        self.frame += 1;
+        if self.frame >= self.quality_frame + u64::from(SIM_HZ) / 2 {
+            self.update_quality();
+        }
+    }
+
+    fn start_profiling(&mut self) {
+        #[cfg(feature = "profile")]
+        {
+            self.instance.set_profiling(true);
+            self.instance.reset_profile();
+        }
+    }
+
+    /// Mean time per frame of each node or step, µs, keyed by where it is written
+    /// (`file:line:col`); `None` without the `profile` feature or before the first half
+    /// second.
+    #[must_use]
+    pub fn profile_us(&self) -> Option<&std::collections::HashMap<String, f64>> {
+        self.profile_us.as_ref()
+    }
+
+    #[cfg(feature = "profile")]
+    fn update_profile(&mut self, frames: u64) {
+        let mut map = std::collections::HashMap::new();
+        let program = Arc::clone(&self.program);
+        for n in self.instance.profile_by_node() {
+            if let Some(origin) = n.origin(&program)
+                && !origin.location.is_empty()
+            {
+                *map.entry(origin.location.clone()).or_insert(0.0) +=
+                    n.nanos as f64 / 1000.0 / frames.max(1) as f64;
+            }
+        }
+        self.instance.reset_profile();
+        self.profile_us = Some(map);
+    }
+
+    /// Recomputes the live quality report from the recorded frames of the current program.
+    pub fn update_quality(&mut self) {
+        #[cfg(feature = "profile")]
+        self.update_profile(self.frame - self.quality_frame);
+        self.quality_frame = self.frame;
+        let rig = match &self.rig {
+            Ok(rig) => rig,
+            Err(e) => {
+                self.quality = Quality {
+                    unavailable: Some(e.clone()),
+                    ..Quality::default()
+                };
+                return;
+            }
+        };
+        let records = self.recorder.frame_records(self.generation);
+        if records.len() < 2 {
+            return;
+        }
+        let report = strider_host::report::analyse(rig, &records, &self.world);
+        let plants = strider_host::report::plant_spans(rig, &records, &self.world);
+        self.quality = Quality {
+            report: Some(report),
+            frames: records.len(),
+            plants,
+            unavailable: None,
+        };
+    }
+
+    /// Sets a variable by id on the live instance (slider edits).
+    ///
+    /// # Errors
+    /// As [`Instance::set_variable`].
+    pub fn set_variable(&mut self, id: VariableId, value: &Value) -> Result<(), String> {
+        self.instance
+            .set_variable(id, value)
+            .map_err(|e| e.to_string())
+    }
+
+    /// Sets every tunable variable back to its default from the graph file.
+    pub fn reset_tunables(&mut self) {
+        let program = Arc::clone(&self.program);
+        for (i, v) in program.variables().iter().enumerate() {
+            if v.tunable.is_some() {
+                let _ = self.instance.set_variable(VariableId(i as u32), &v.default);
+            }
+        }
+    }
+
+    /// Writes the current tunable values as an overrides file at `path`. Refuses to write
+    /// over any file the session reads (the graph, its imports, the skeleton, ...).
+    ///
+    /// # Errors
+    /// A message when `path` is one of those files or cannot be written.
+    pub fn export_overrides(&self, path: &Path) -> Result<(), String> {
+        let target = canonical(path);
+        if self.watched_files().contains(&target) {
+            return Err(format!(
+                "{} is one of the files the inspector reads; choose another file",
+                path.display()
+            ));
+        }
+        std::fs::write(path, Overrides::from_instance(&self.instance).to_ron())
+            .map_err(|e| format!("cannot write {}: {e}", path.display()))
+    }
+
+    /// Reads an overrides file and applies it to the live instance.
+    ///
+    /// # Errors
+    /// Every problem, `path:line:col: error: ...`, one per line.
+    pub fn load_overrides(&mut self, path: &Path) -> Result<usize, String> {
+        let o =
+            Overrides::load(path, &self.program).map_err(|d| diagnostics_text(&d).join("\n"))?;
+        o.apply(&mut self.instance);
+        Ok(o.entries.len())
+    }
+
+    /// The options the session was opened with.
+    #[must_use]
+    pub fn options(&self) -> &InspectOptions {
+        &self.options
+    }
+
+    /// The loaded graph document (main file and libraries) of the running program.
+    #[must_use]
+    pub fn document(&self) -> &Arc<LoadedGraph> {
+        &self.loaded
+    }
+
+    /// The running program.
+    #[must_use]
+    pub fn program(&self) -> &Arc<Program> {
+        &self.program
+    }
+
+    /// The live instance.
+    #[must_use]
+    pub fn instance(&self) -> &Instance {
+        &self.instance
+    }
+
+    /// The skeleton file (bones and sole contact points).
+    #[must_use]
+    pub fn skeleton(&self) -> &SkeletonFile {
+        &self.skeleton
+    }
+
+    /// The world the character walks in.
+    #[must_use]
+    pub fn world(&self) -> &World {
+        &self.world
+    }
+
+    /// Where the input comes from.
+    #[must_use]
+    pub fn drive(&self) -> &Drive {
+        &self.drive
+    }
+
+    /// The recording of the last frames.
+    #[must_use]
+    pub fn recorder(&self) -> &Recorder {
+        &self.recorder
+    }
+
+    /// Frames run so far.
+    #[must_use]
+    pub fn frame(&self) -> u64 {
+        self.frame
+    }
+
+    /// Simulated seconds so far.
+    #[must_use]
+    pub fn time(&self) -> f64 {
+        self.time
+    }
+
+    /// Counts reloads that changed the program (recorded frames carry it).
+    #[must_use]
+    pub fn generation(&self) -> u32 {
+        self.generation
+    }
+
+    /// Problems of the last reload (empty when it succeeded).
+    #[must_use]
+    pub fn problems(&self) -> &[String] {
+        &self.problems
+    }
+
+    /// One line about the last load or reload.
+    #[must_use]
+    pub fn status(&self) -> &str {
+        &self.status
+    }
+
+    /// The live quality report.
+    #[must_use]
+    pub fn quality(&self) -> &Quality {
+        &self.quality
+    }
+
+    /// The component-to-world transform of the last frame (or the mover's, before any).
+    #[must_use]
+    pub fn component_to_world(&self) -> Transform {
+        self.recorder
+            .latest()
+            .map_or_else(|| self.mover.component_to_world(), |f| f.meta.to_world)
+    }
+}
+
+/// Copies every variable of `from` whose name and type `to`'s program also declares.
+fn carry_variables(from: &Instance, to: &mut Instance) {
+    let old = Arc::clone(from.program());
+    let new = Arc::clone(to.program());
+    for (i, v) in new.variables().iter().enumerate() {
+        if let Some(j) = old.variable_id(&v.name)
+            && old.variable(j).ty == v.ty
+        {
+            let _ = to.set_variable(VariableId(i as u32), &from.variable(j));
+        }
+    }
+}

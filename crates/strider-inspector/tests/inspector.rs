@@ -1,0 +1,421 @@
+//! The inspector opened headless on the locomotion graph (egui_kittest): read a live pin
+//! value, scrub back in time, change a tunable, break the graph file and keep walking.
+//!
+//! Paths are relative to this crate's folder (the tests' working directory), so what the
+//! panels print does not depend on where the repository is checked out. Snapshots are
+//! written under the repository's `tests/snapshots/` (`UPDATE_SNAPSHOTS=1` refreshes
+//! them; the tolerance is in `kittest.toml`).
+
+use egui::Key;
+use egui_kittest::kittest::Queryable;
+use egui_kittest::{Harness, SnapshotOptions};
+use glam::{Vec2, Vec3};
+use std::path::{Path, PathBuf};
+use std::time::{Duration, Instant};
+use strider_host::mover::{Facing, MoveInput};
+use strider_inspector::values::ValueSource;
+use strider_inspector::{InspectOptions, InspectorApp, Session};
+use strider_nodes::Value;
+
+const GRAPHS: &str = "../../graphs";
+
+fn options(graph: &Path) -> InspectOptions {
+    InspectOptions {
+        graph: graph.to_path_buf(),
+        skeleton: PathBuf::from(GRAPHS).join("skeletons/mannequin.ron"),
+        scenario: None,
+        world: None,
+        overrides: None,
+    }
+}
+
+fn harness(options: InspectOptions) -> Harness<'static, InspectorApp> {
+    let session = Session::open(options).expect("the locomotion graph loads");
+    let mut harness = Harness::builder()
+        .with_size([1600.0, 950.0])
+        .with_step_dt(1.0 / 60.0)
+        .build_eframe(move |cc| InspectorApp::new(&cc.egui_ctx, session));
+    // The tests step the simulation themselves (deterministic frames).
+    harness.state_mut().playback.playing = false;
+    harness.run_steps(2);
+    harness
+}
+
+/// Runs `frames` simulation frames walking at `speed` cm/s along world `direction`.
+fn walk(harness: &mut Harness<'_, InspectorApp>, direction: Vec2, speed: f32, frames: u32) {
+    let app = harness.state_mut();
+    app.session.input = MoveInput {
+        direction,
+        speed,
+        facing: Facing::Velocity,
+    };
+    app.advance(frames);
+}
+
+fn pelvis_world(app: &InspectorApp) -> Vec3 {
+    let frame = app.session.recorder().latest().expect("a frame");
+    let pelvis = app
+        .session
+        .skeleton()
+        .skeleton
+        .find("pelvis")
+        .expect("mannequin pelvis");
+    frame
+        .meta
+        .to_world
+        .transform_point(frame.globals[pelvis.0 as usize].translation)
+}
+
+fn snapshot_options() -> SnapshotOptions {
+    SnapshotOptions::new()
+        .output_path(PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../../tests/snapshots"))
+}
+
+#[test]
+fn selecting_a_node_shows_its_live_pin_values() {
+    let mut harness = harness(options(&PathBuf::from(GRAPHS).join("locomotion.ron")));
+    walk(&mut harness, Vec2::Y, 150.0, 120);
+    {
+        let app = harness.state_mut();
+        let program = std::sync::Arc::clone(app.session.program());
+        let loaded = std::sync::Arc::clone(app.session.document());
+        assert!(
+            app.graph
+                .open_function_anywhere(&program, &loaded, "CalculateFootSpline"),
+            "CalculateFootSpline is reached by a call path"
+        );
+    }
+    harness.run_steps(3);
+    // The breadcrumb shows the path from the graph to the function.
+    harness.get_by_label("CalculateFootSpline");
+    harness.get_by_label("CalculateFootTargetPlatform");
+    // Click the node `clear_s`: MakeVector(z: var("SplineStartClearance")). The graph is
+    // drawn in a zoomed layer: its widgets' rects are in graph coordinates.
+    let title = harness.get_by_label("clear_s: MakeVector").rect().center();
+    let layer = egui::LayerId::new(egui::Order::Background, egui::Id::new("strider-graph-view"));
+    let at = harness
+        .ctx
+        .layer_transform_to_global(layer)
+        .map_or(title, |t| t * title);
+    harness.hover_at(at);
+    harness.run_steps(1);
+    harness.drag_at(at);
+    harness.run_steps(1);
+    harness.drop_at(at);
+    harness.run_steps(3);
+    let app = harness.state();
+    let selected = app.graph.selected.expect("the click selects the node");
+    assert_eq!(app.graph.body().nodes[selected].label(), "clear_s");
+    // Its output is (0, 0, SplineStartClearance) with the file's 3 cm.
+    harness.get_by_label("out result");
+    harness.get_by_label("(0.0, 0.0, 3.0)");
+
+    harness.snapshot_options("inspector_calculate_foot_spline", &snapshot_options());
+}
+
+#[test]
+fn scrubbing_back_shows_older_values() {
+    let mut harness = harness(options(&PathBuf::from(GRAPHS).join("locomotion.ron")));
+    // Stand 3 s, then walk 3 s: IsMoving is false while standing and true walking.
+    walk(&mut harness, Vec2::ZERO, 0.0, 180);
+    walk(&mut harness, Vec2::Y, 150.0, 180);
+    harness.state_mut().variables.filter = "IsMoving".to_string();
+    harness.run_steps(2);
+    harness.get_by_label("All variables (frame shown)").click();
+    harness.run_steps(2);
+    assert!(
+        harness.query_by_label("true").is_some(),
+        "walking: IsMoving is true"
+    );
+
+    // Travel back 5 s: into the standing second.
+    {
+        let app = harness.state_mut();
+        let recorder = app.session.recorder();
+        let live_time = recorder.latest().expect("frames").meta.time;
+        app.playback.scrub_back(app.session.recorder(), 5.0);
+        let shown = app.playback.shown(app.session.recorder()).expect("a frame");
+        let t = app.session.recorder().get(shown).expect("kept").meta.time;
+        assert!(
+            (live_time - t - 5.0).abs() < 1.0 / 60.0 + 1e-9,
+            "{live_time} {t}"
+        );
+        let id = app
+            .session
+            .program()
+            .variable_id("IsMoving")
+            .expect("declared");
+        let info = app.session.program().variable(id).clone();
+        let value = ValueSource::of(&app.session, Some(shown)).read(info.ty, info.slot);
+        assert_eq!(value, Some(Value::Bool(false)));
+    }
+    harness.run_steps(2);
+    assert!(
+        harness.query_by_label("false").is_some(),
+        "standing: IsMoving is false"
+    );
+    assert!(harness.query_by_label("true").is_none());
+    // The timeline says how far back the frame is.
+    harness.get_by_label_contains("(-5.00 s)");
+    // Playing again returns to the live frame.
+    harness.get_by_label("▶ Play").click();
+    harness.run_steps(2);
+    assert!(harness.state().playback.cursor.is_none());
+}
+
+/// Highest world height of the left ball joint over the recorded frames of the current
+/// program.
+fn highest_ball(app: &InspectorApp) -> f32 {
+    let ball = app
+        .session
+        .skeleton()
+        .skeleton
+        .find("ball_l")
+        .expect("mannequin ball_l");
+    app.session
+        .recorder()
+        .iter()
+        .filter(|f| f.meta.generation == app.session.generation())
+        .skip(60)
+        .map(|f| {
+            f.meta
+                .to_world
+                .transform_point(f.globals[ball.0 as usize].translation)
+                .z
+        })
+        .fold(f32::MIN, f32::max)
+}
+
+#[test]
+fn a_higher_lift_tunable_lifts_the_swinging_foot_higher() {
+    let mut a = harness(options(&PathBuf::from(GRAPHS).join("locomotion.ron")));
+    let mut b = harness(options(&PathBuf::from(GRAPHS).join("locomotion.ron")));
+    // Raise SplineLiftStart and SplineLiftEnd (the swing curve's lift above its ends) with
+    // the variables panel's sliders, typed in as a person would.
+    for name in ["SplineLiftStart", "SplineLiftEnd"] {
+        b.state_mut().variables.filter = name.to_string();
+        b.run_steps(2);
+        // The slider's value field shows the file's default (10 and 30 cm); a click opens
+        // it for typing with its text selected.
+        let default = if name == "SplineLiftStart" {
+            "10.0"
+        } else {
+            "30.0"
+        };
+        b.get_by_value(default).click();
+        b.run_steps(1);
+        b.event(egui::Event::Text("60".to_string()));
+        b.key_press(Key::Enter);
+        b.run_steps(2);
+        let app = b.state();
+        let id = app.session.program().variable_id(name).expect("declared");
+        assert_eq!(
+            app.session.instance().variable(id),
+            Value::Float(60.0),
+            "{name}"
+        );
+    }
+    walk(&mut a, Vec2::Y, 150.0, 240);
+    walk(&mut b, Vec2::Y, 150.0, 240);
+    let (low, high) = (highest_ball(a.state()), highest_ball(b.state()));
+    assert!(
+        high > low + 5.0,
+        "doubling the lift (30 → 60 cm at full curve speed) raises the foot: {low} → {high}"
+    );
+    // Reset puts the file's default back.
+    b.get_by_label("↺").click();
+    b.run_steps(2);
+    let app = b.state();
+    let id = app
+        .session
+        .program()
+        .variable_id("SplineLiftEnd")
+        .expect("declared");
+    assert_eq!(app.session.instance().variable(id), Value::Float(30.0));
+}
+
+/// A fresh folder under the system's temporary folder.
+fn scratch_dir(name: &str) -> PathBuf {
+    let nanos = std::time::SystemTime::now()
+        .duration_since(std::time::UNIX_EPOCH)
+        .map_or(0, |d| d.as_nanos());
+    let dir = std::env::temp_dir().join(format!(
+        "strider-inspector-{name}-{}-{nanos}",
+        std::process::id()
+    ));
+    std::fs::create_dir_all(&dir).expect("temp dir");
+    dir
+}
+
+/// Steps the UI until `done` or `timeout` (file events arrive from another thread).
+fn wait_until(
+    harness: &mut Harness<'_, InspectorApp>,
+    timeout: Duration,
+    done: impl Fn(&InspectorApp) -> bool,
+) -> bool {
+    let start = Instant::now();
+    while start.elapsed() < timeout {
+        harness.step();
+        if done(harness.state()) {
+            return true;
+        }
+        std::thread::sleep(Duration::from_millis(20));
+    }
+    false
+}
+
+#[test]
+fn a_broken_graph_file_shows_a_diagnostic_while_the_character_keeps_walking() {
+    let dir = scratch_dir("reload");
+    let graph = dir.join("locomotion.ron");
+    let text = std::fs::read_to_string(PathBuf::from(GRAPHS).join("locomotion.ron")).expect("read");
+    std::fs::write(&graph, &text).expect("copy");
+    let mut harness = harness(options(&graph));
+    walk(&mut harness, Vec2::Y, 150.0, 60);
+    // A tuned value survives reloads.
+    {
+        let app = harness.state_mut();
+        let id = app
+            .session
+            .program()
+            .variable_id("SplineLiftEnd")
+            .expect("declared");
+        app.session
+            .set_variable(id, &Value::Float(42.0))
+            .expect("float");
+    }
+
+    // Misspell a node type inside CalculateFootSpline.
+    let needle = "\"dir\":       Unit(";
+    let at = text.find(needle).expect("the graph has the `dir` node") + "\"dir\":       ".len();
+    let line = text[..at].lines().count();
+    let col = at - text[..at].rfind('\n').map_or(0, |i| i + 1) + 1;
+    let broken = text.replacen(needle, "\"dir\":       Unti(", 1);
+    std::fs::write(&graph, &broken).expect("write broken");
+    assert!(
+        wait_until(&mut harness, Duration::from_secs(10), |app| !app
+            .session
+            .problems()
+            .is_empty()),
+        "the watcher sees the change and the reload reports it"
+    );
+    let expected = format!("locomotion.ron:{line}:{col}: error:");
+    let problems = harness.state().session.problems().join("\n");
+    assert!(
+        problems.contains(&expected),
+        "expected `{expected}` in:\n{problems}"
+    );
+    assert!(problems.contains("Unti"), "{problems}");
+    harness.run_steps(2);
+    harness.get_by_label_contains(&expected);
+    harness.get_by_label_contains("problem(s): running the last good program");
+
+    // The last good program keeps running: the character walks on (1 s at 150 cm/s).
+    let before = pelvis_world(harness.state());
+    walk(&mut harness, Vec2::Y, 150.0, 60);
+    let after = pelvis_world(harness.state());
+    assert!(after.y - before.y > 100.0, "{before:?} → {after:?}");
+
+    // Fixed: the reload succeeds, the problems go, the tuned value is still there.
+    std::fs::write(&graph, &text).expect("write fixed");
+    assert!(
+        wait_until(&mut harness, Duration::from_secs(10), |app| app
+            .session
+            .problems()
+            .is_empty()),
+        "the fixed file reloads"
+    );
+    let app = harness.state();
+    let id = app
+        .session
+        .program()
+        .variable_id("SplineLiftEnd")
+        .expect("declared");
+    assert_eq!(app.session.instance().variable(id), Value::Float(42.0));
+    // The user's file is exactly what they wrote.
+    assert_eq!(std::fs::read_to_string(&graph).expect("read"), text);
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
+#[test]
+fn the_keyboard_drives_the_character_relative_to_the_camera() {
+    let mut harness = harness(options(&PathBuf::from(GRAPHS).join("locomotion.ron")));
+    harness.state_mut().playback.playing = true;
+    // The camera looks along +Y (yaw 0): W walks towards +Y, A towards +X (screen left).
+    harness.key_down(Key::W);
+    harness.run_steps(60);
+    harness.key_up(Key::W);
+    let p = harness.state().session.component_to_world().translation;
+    assert!(p.y > 30.0 && p.x.abs() < 5.0, "{p:?}");
+    harness.key_down(Key::A);
+    harness.run_steps(60);
+    harness.key_up(Key::A);
+    let q = harness.state().session.component_to_world().translation;
+    assert!(q.x - p.x > 30.0, "{p:?} → {q:?}");
+}
+
+#[test]
+fn exported_overrides_are_read_back_by_a_new_session() {
+    let dir = scratch_dir("overrides");
+    let mut harness = harness(options(&PathBuf::from(GRAPHS).join("locomotion.ron")));
+    let file = dir.join("tuned.ron");
+    {
+        let app = harness.state_mut();
+        let id = app
+            .session
+            .program()
+            .variable_id("SplineLiftEnd")
+            .expect("declared");
+        app.session
+            .set_variable(id, &Value::Float(12.5))
+            .expect("float");
+        app.variables.overrides_path = file.display().to_string();
+        // A short list, so that the buttons below it are on screen.
+        app.variables.filter = "SplineLift".to_string();
+    }
+    harness.run_steps(2);
+    harness.get_by_label("Export").click();
+    harness.run_steps(2);
+    assert!(file.exists());
+    // Exporting over the graph file is refused.
+    {
+        let app = harness.state();
+        let err = app
+            .session
+            .export_overrides(&app.session.options().graph)
+            .expect_err("never rewrite the graph");
+        assert!(
+            err.contains("one of the files the inspector reads"),
+            "{err}"
+        );
+    }
+    let mut opts = options(&PathBuf::from(GRAPHS).join("locomotion.ron"));
+    opts.overrides = Some(file.clone());
+    let session = Session::open(opts).expect("opens with the overrides");
+    let id = session
+        .program()
+        .variable_id("SplineLiftEnd")
+        .expect("declared");
+    assert_eq!(session.instance().variable(id), Value::Float(12.5));
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
+#[test]
+fn without_a_display_run_names_the_headless_commands() {
+    let saved: Vec<_> = ["DISPLAY", "WAYLAND_DISPLAY"]
+        .iter()
+        .map(|v| (*v, std::env::var_os(v)))
+        .collect();
+    if saved.iter().any(|(_, v)| v.is_some()) {
+        // A display is present: opening a real window is not this test's business.
+        return;
+    }
+    let err = strider_inspector::run(options(&PathBuf::from(GRAPHS).join("locomotion.ron")))
+        .expect_err("no display");
+    let text = err.to_string();
+    assert!(text.contains("needs a display"), "{text}");
+    assert!(
+        text.contains("strider run") && text.contains("strider report"),
+        "{text}"
+    );
+}
