@@ -7,6 +7,11 @@
 
 use crate::types::{Elem, ValueType};
 
+/// The most operands any instruction has: the executor reads each instruction's operands
+/// as a window of this many (the program's operand list is padded at its end), so the
+/// handlers' operand reads need no bounds checks of their own.
+pub const MAX_OPERANDS: usize = 16;
+
 /// One instruction kind. Variants that carry a type are a family of ops whose handler is
 /// the same but for the slot array it touches.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]

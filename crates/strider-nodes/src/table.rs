@@ -1964,6 +1964,23 @@ mod tests {
     use super::*;
 
     #[test]
+    fn every_overload_fits_the_operand_window() {
+        // Node instructions carry inputs, outputs and state; control instructions (at most
+        // six operands, `ForEachNext`) are laid out by the compiler.
+        for n in registry().nodes() {
+            for o in &n.overloads {
+                let operands = o.inputs.len() + o.outputs.len() + o.state.len();
+                assert!(
+                    operands <= crate::MAX_OPERANDS,
+                    "{} ({:?}) has {operands} operands, more than MAX_OPERANDS",
+                    n.name,
+                    o.op
+                );
+            }
+        }
+    }
+
+    #[test]
     fn names_are_unique_and_every_node_has_docs() {
         let r = registry();
         let mut seen = std::collections::HashSet::new();

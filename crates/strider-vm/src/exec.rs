@@ -11,7 +11,7 @@ use strider_nodes::kernels as k;
 use strider_nodes::kernels::locomotion as loco;
 use strider_nodes::kernels::spline::{self, SplineMode};
 use strider_nodes::kernels::two_bone_ik::{Pole, TwoBoneIk};
-use strider_nodes::{Elem, Op, ValueType};
+use strider_nodes::{Elem, MAX_OPERANDS, Op, ValueType};
 
 /// What one run of an event works on.
 pub(crate) struct Ctx<'a> {
@@ -726,7 +726,17 @@ fn run_loop<const PROFILE: bool>(
                 return;
             }};
         }
-        execute!(op, &operands[args as usize..], &mut *s, cx, jump, end);
+        // A window of constant length (the operand list is padded at its end): one bounds
+        // check here instead of one per operand read.
+        let args = args as usize;
+        execute!(
+            op,
+            &operands[args..args + MAX_OPERANDS],
+            &mut *s,
+            cx,
+            jump,
+            end
+        );
         #[cfg(feature = "profile")]
         if PROFILE && let Some(started) = last {
             let now = std::time::Instant::now();

@@ -20,7 +20,7 @@ use crate::exec::{self, Ctx};
 use crate::program::{Instr, Program};
 use std::collections::{BTreeMap, BTreeSet};
 use std::fmt::Write as _;
-use strider_nodes::{Elem, Op, ValueType};
+use strider_nodes::{Elem, MAX_OPERANDS, Op, ValueType};
 
 /// One running event, as generated code sees it: the instance's slots, pose, debug buffer,
 /// world and frame input. Made by [`Instance::run_forward_native`](crate::Instance::run_forward_native).
@@ -147,13 +147,14 @@ fn successors(program: &Program, pc: usize) -> (Option<usize>, bool) {
 }
 
 /// The operands of instruction `pc`: the builder appends each instruction's operands after
-/// the previous one's, so they run up to the next instruction's.
+/// the previous one's, so they run up to the next instruction's (for the last, up to the
+/// padding at the end of the list).
 fn instruction_operands(program: &Program, pc: usize) -> &[u32] {
     let start = program.code[pc].args as usize;
-    let end = program
-        .code
-        .get(pc + 1)
-        .map_or(program.operands.len(), |next| next.args as usize);
+    let end = program.code.get(pc + 1).map_or(
+        program.operands.len().saturating_sub(MAX_OPERANDS),
+        |next| next.args as usize,
+    );
     &program.operands[start..end.max(start)]
 }
 

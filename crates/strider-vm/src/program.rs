@@ -469,7 +469,11 @@ impl ProgramBuilder {
 
     /// The finished program.
     #[must_use]
-    pub fn finish(self) -> Program {
+    pub fn finish(mut self) -> Program {
+        // The executor reads every instruction's operands as a window of MAX_OPERANDS.
+        self.program
+            .operands
+            .extend(std::iter::repeat_n(0, strider_nodes::MAX_OPERANDS));
         self.program
     }
 }

@@ -14,7 +14,7 @@ use strider_vm::native::{Frame, NativeProgram, step};
 /// The forward event of `foot_ik`, compiled ahead of time.
 pub static NATIVE: NativeProgram = NativeProgram {
     name: "foot_ik",
-    fingerprint: 0xb5b96a4889567734,
+    fingerprint: 0xc92be63a6e46d234,
     forward,
 };
 

@@ -14,7 +14,7 @@ use strider_vm::native::{Frame, NativeProgram, step};
 /// The forward event of `locomotion`, compiled ahead of time.
 pub static NATIVE: NativeProgram = NativeProgram {
     name: "locomotion",
-    fingerprint: 0x6a897cd247ec471c,
+    fingerprint: 0x03f633cb9e6b161c,
     forward,
 };
 
