@@ -222,7 +222,9 @@ fn a_higher_lift_tunable_lifts_the_swinging_foot_higher() {
         high > low + 5.0,
         "doubling the lift (30 → 60 cm at full curve speed) raises the foot: {low} → {high}"
     );
-    // Reset puts the file's default back.
+    // Reset puts the file's default back (after a frame laid out with the new quality
+    // figures, which move the panel's rows).
+    b.run_steps(2);
     b.get_by_label("↺").click();
     b.run_steps(2);
     let app = b.state();
