@@ -325,3 +325,72 @@ fn bad_shapes_are_errors_with_a_position() {
     assert_eq!(w.desc().shapes.len(), 1);
     assert!(World::load("/nonexistent/world.ron").is_err());
 }
+
+#[test]
+fn sphere_traces_onto_the_ground_agree_with_parry3d() {
+    // The world answers ball-versus-ground sweeps in closed form; parry3d's general cast is
+    // the independent reference, on 2000 random sweeps (some start inside the ground, some
+    // move away from it, some stop short of it).
+    use parry3d::math::Pose;
+    use parry3d::query::{ShapeCastOptions, cast_shapes};
+    use parry3d::shape::{Ball, HalfSpace};
+    let height = 12.5;
+    let w = world("(shapes: [Ground(height: 12.5)])");
+    let mut seed = 0x2545_f491_u32;
+    let mut next = || {
+        seed = seed.wrapping_mul(1_664_525).wrapping_add(1_013_904_223);
+        (seed >> 8) as f32 / (1u32 << 24) as f32
+    };
+    let mut hits = 0;
+    for _ in 0..2000 {
+        let start = Vec3::new(
+            next() * 200.0 - 100.0,
+            next() * 200.0 - 100.0,
+            next() * 120.0 - 20.0,
+        );
+        let end = start
+            + Vec3::new(
+                next() * 60.0 - 30.0,
+                next() * 60.0 - 30.0,
+                next() * 200.0 - 150.0,
+            );
+        let radius = 0.5 + next() * 10.0;
+        let ours = w.sphere_trace(start, end, radius);
+        let delta = end - start;
+        let length = delta.length();
+        let reference = cast_shapes(
+            &Pose::from_translation(start),
+            delta / length,
+            &Ball::new(radius),
+            &Pose::from_translation(Vec3::new(0.0, 0.0, height)),
+            Vec3::ZERO,
+            &HalfSpace::new(Vec3::Z),
+            ShapeCastOptions {
+                max_time_of_impact: length,
+                target_distance: 0.0,
+                stop_at_penetration: true,
+                compute_impact_geometry_on_penetration: true,
+            },
+        )
+        .expect("supported pair");
+        match (ours, reference) {
+            (Some(hit), Some(r)) => {
+                hits += 1;
+                let distance = r.time_of_impact.max(0.0);
+                assert!(near(hit.distance, distance, 1e-3), "{hit:?} vs {r:?}");
+                assert_vec_near(hit.normal, Vec3::Z, 1e-5);
+                // The touched point: one radius below the centre where the sweep stopped.
+                let centre = start + delta / length * distance;
+                assert_vec_near(hit.point, centre - Vec3::Z * radius, 1e-3);
+            }
+            (None, None) => {}
+            (ours, reference) => panic!(
+                "start {start} end {end} radius {radius}: ours {ours:?}, parry3d {reference:?}"
+            ),
+        }
+    }
+    assert!(
+        hits > 500 && hits < 1900,
+        "{hits} hits: the sweeps should mix hits and misses"
+    );
+}
