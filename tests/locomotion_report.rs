@@ -30,7 +30,6 @@ const KNOWN_MISSES: &[(&str, &str, f64)] = &[
     ("walk_flat", "pop_cm_per_frame_max", 6.65),
     ("walk_flat", "framerate_deviation_cm_max", 3.44),
     ("run_flat", "skate_cm_per_stance_max", 0.77),
-    ("run_flat", "idle_float_cm_max", 2.76),
     ("run_flat", "pop_cm_per_frame_max", 10.48),
     ("run_flat", "framerate_deviation_cm_max", 4.76),
     ("start_stop", "skate_cm_per_stance_max", 0.90),
