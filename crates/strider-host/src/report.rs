@@ -358,6 +358,10 @@ pub struct Report {
     pub leg_overextension_frames: usize,
     /// Largest bone jump relative to the root, cm per 60 Hz frame.
     pub pop_cm_per_frame_max: f32,
+    /// The bone of the largest pop (`None` when nothing was measured).
+    pub pop_bone: Option<String>,
+    /// The time of the frame of the largest pop, s (`None` when nothing was measured).
+    pub pop_time_s: Option<f64>,
     /// NaN or infinite components in globals and component-to-world transforms.
     pub nonfinite_values: usize,
     /// Planted-span starts after each foot's first.
@@ -551,6 +555,9 @@ impl Report {
             Some((TARGET_POP_CM, "cm/60 Hz frame")),
             f64::from(self.pop_cm_per_frame_max),
         );
+        if let (Some(bone), Some(time)) = (&self.pop_bone, self.pop_time_s) {
+            push("  largest at", format!("{bone}, {time:.2} s"), None, 0.0);
+        }
         push(
             "non-finite values",
             format!("{}", self.nonfinite_values),
@@ -913,6 +920,7 @@ pub fn analyse(rig: &ReportRig, frames: &[FrameRecord], ground: &dyn Ground) -> 
     }
 
     let mut pop = 0.0f32;
+    let mut pop_at: Option<(usize, usize)> = None;
     let usable = |t: usize| {
         let f = &frames[t];
         f.dt > 0.0 && f.dt.is_finite() && !f.teleported && samples.frames[t].is_some()
@@ -942,8 +950,9 @@ pub fn analyse(rig: &ReportRig, frames: &[FrameRecord], ground: &dyn Ground) -> 
                 let before = ((p1 - r1) - (p0 - r0)) / f1.dt;
                 let after = ((p2 - r2) - (p1 - r1)) / f2.dt;
                 let jump = (after - before).length() * scale;
-                if jump.is_finite() {
-                    pop = pop.max(jump);
+                if jump.is_finite() && (pop_at.is_none() || jump > pop) {
+                    pop = jump;
+                    pop_at = Some((b, t));
                 }
             }
         }
@@ -1008,6 +1017,8 @@ pub fn analyse(rig: &ReportRig, frames: &[FrameRecord], ground: &dyn Ground) -> 
         knee_backward_frames: knee_backward,
         leg_overextension_frames: overextended,
         pop_cm_per_frame_max: pop,
+        pop_bone: pop_at.and_then(|(b, _)| rig.bone_names.get(b).cloned()),
+        pop_time_s: pop_at.map(|(_, t)| frames[t].time),
         nonfinite_values: nonfinite,
         steps,
         cadence_steps_per_min: cadence,

@@ -406,7 +406,12 @@ fn pops_are_relative_to_the_root_and_normalised_to_60_hz() {
         frames[6].teleported = true;
         frames[7].dt = 0.0;
         fx.shift(&mut frames[7], "head", Vec3::new(0.0, 0.0, 50.0));
-        analyse(&fx.rig, &frames, &FlatGround(0.0)).pop_cm_per_frame_max
+        let rep = analyse(&fx.rig, &frames, &FlatGround(0.0));
+        // The worst pop is the head's: at frame 4 (it moves) and at frame 5 (it stops)
+        // equally; the first is reported.
+        assert_eq!(rep.pop_bone.as_deref(), Some("head"));
+        assert_eq!(rep.pop_time_s, Some(frames[4].time));
+        rep.pop_cm_per_frame_max
     };
     // 10 cm in a 1/60 s frame: the relative velocity goes 0 → 600 cm/s → 0, a change of
     // 600 cm/s · (1/60)² / (1/60) = 10 cm per 60 Hz frame.
@@ -562,6 +567,8 @@ fn json_has_exactly_the_documented_keys_and_the_table_marks_failures() {
         "knee_backward_frames",
         "leg_overextension_frames",
         "pop_cm_per_frame_max",
+        "pop_bone",
+        "pop_time_s",
         "nonfinite_values",
         "steps",
         "cadence_steps_per_min",
