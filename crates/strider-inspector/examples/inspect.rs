@@ -5,15 +5,21 @@
 //!     [GRAPH] [--skeleton SKEL] [--scenario SCEN | --world WORLD] [--overrides FILE]
 //! ```
 //!
-//! Without arguments: `graphs/locomotion.ron` on the mannequin in the demo world (paths
-//! relative to the repository root, which is found from this crate's folder).
+//! Without arguments: `graphs/locomotion.ron` on the mannequin in the demo world (from the
+//! repository root: the current folder when it holds `graphs/`, else found from this
+//! crate's folder).
 
 use std::path::PathBuf;
 use std::process::ExitCode;
 use strider_inspector::{InspectOptions, run};
 
 fn main() -> ExitCode {
-    let root = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../..");
+    // Relative paths from the repository root when run from there (shorter messages).
+    let root = if PathBuf::from("graphs/locomotion.ron").exists() {
+        PathBuf::new()
+    } else {
+        PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../..")
+    };
     let mut options = InspectOptions {
         graph: root.join("graphs/locomotion.ron"),
         skeleton: root.join("graphs/skeletons/mannequin.ron"),

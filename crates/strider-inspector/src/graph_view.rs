@@ -375,23 +375,40 @@ fn layout(
             break;
         }
     }
-    let mut column_y: HashMap<usize, f32> = HashMap::new();
-    nodes
-        .iter()
-        .enumerate()
-        .map(|(i, n)| {
-            if let Some(id) = &n.id
-                && let Some((_, [x, y])) = editor.positions.iter().find(|(k, _)| &k.name == id)
-            {
-                return pos2(*x as f32, *y as f32);
+    // Columns taller than COLUMN_HEIGHT wrap into several side by side.
+    let mut columns: HashMap<usize, Vec<usize>> = HashMap::new();
+    for (i, d) in depth.iter().enumerate() {
+        columns.entry(*d).or_default().push(i);
+    }
+    let mut order: Vec<usize> = columns.keys().copied().collect();
+    order.sort_unstable();
+    let mut positions = vec![Pos2::ZERO; nodes.len()];
+    let mut x = 0.0;
+    for d in order {
+        let (mut y, mut wraps) = (0.0, 0);
+        for &i in &columns[&d] {
+            if y > 0.0 && y + node_height(&nodes[i]) > COLUMN_HEIGHT {
+                y = 0.0;
+                wraps += 1;
             }
-            let y = column_y.entry(depth[i]).or_insert(0.0);
-            let p = pos2(depth[i] as f32 * 300.0, *y);
-            *y += node_height(n) + 30.0;
-            p
-        })
-        .collect()
+            positions[i] = pos2(x + wraps as f32 * COLUMN_WIDTH, y);
+            y += node_height(&nodes[i]) + 30.0;
+        }
+        x += (wraps + 1) as f32 * COLUMN_WIDTH;
+    }
+    for (i, n) in nodes.iter().enumerate() {
+        if let Some(id) = &n.id
+            && let Some((_, [x, y])) = editor.positions.iter().find(|(k, _)| &k.name == id)
+        {
+            positions[i] = pos2(*x as f32, *y as f32);
+        }
+    }
+    positions
 }
+
+/// Width of a layout column and the height at which a column wraps, canvas units.
+const COLUMN_WIDTH: f32 = 300.0;
+const COLUMN_HEIGHT: f32 = 900.0;
 
 /// The smallest zoom "Fit" uses (below it node text is unreadable).
 const MIN_FIT_SCALE: f32 = 0.45;
@@ -415,6 +432,7 @@ pub struct GraphViewState {
     rects: HashMap<NodeId, Rect>,
     fit: bool,
     view_rect: Rect,
+    fitted_rect: Rect,
     open: Option<Crumb>,
     id: egui::Id,
 }
@@ -433,6 +451,7 @@ impl Default for GraphViewState {
             rects: HashMap::new(),
             fit: true,
             view_rect: Rect::NOTHING,
+            fitted_rect: Rect::NOTHING,
             open: None,
             id: egui::Id::new("strider-graph-view"),
         }
@@ -674,6 +693,13 @@ impl GraphViewState {
         });
         let rect = ui.available_rect_before_wrap();
         self.view_rect = rect;
+        // The window or the panel moved or changed size: fit again.
+        if (rect.min - self.fitted_rect.min).length() + (rect.max - self.fitted_rect.max).length()
+            > 1.0
+        {
+            self.fitted_rect = rect;
+            self.fit = true;
+        }
         let profile = if self.show_profile { profile } else { None };
         let max_us = profile
             .map(|p| p.values().copied().fold(0.0, f64::max))
@@ -977,13 +1003,12 @@ impl SnarlViewer<GraphNode> for Viewer<'_> {
         if !*self.fit || !self.view_rect.is_positive() {
             return;
         }
+        // Canvas positions and estimated sizes (the drawn rects are not needed, so the
+        // first frame fits too).
         let mut bounds = Rect::NOTHING;
         for (id, n) in snarl.node_ids() {
-            let r = self.rects.get(&id).copied().unwrap_or_else(|| {
-                let p = self.body.positions.get(id.0).copied().unwrap_or(Pos2::ZERO);
-                Rect::from_min_size(p, vec2(220.0, node_height(n)))
-            });
-            bounds = bounds.union(r);
+            let p = self.body.positions.get(id.0).copied().unwrap_or(Pos2::ZERO);
+            bounds = bounds.union(Rect::from_min_size(p, vec2(240.0, node_height(n))));
         }
         if !bounds.is_positive() {
             *self.fit = false;
@@ -1001,8 +1026,7 @@ impl SnarlViewer<GraphNode> for Viewer<'_> {
             self.view_rect.center().to_vec2() - bounds.center().to_vec2() * scale
         };
         *to_global = TSTransform::new(anchor, scale);
-        // Node sizes are known after the first frame drawn: fit once more then.
-        *self.fit = self.rects.is_empty();
+        *self.fit = false;
     }
 
     fn draw_background(

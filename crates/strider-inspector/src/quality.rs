@@ -17,7 +17,7 @@ pub fn show(ui: &mut Ui, session: &Session) {
     ));
     egui::Grid::new("quality").striped(true).show(ui, |ui| {
         for t in report.targets_met() {
-            ui.label(t.metric);
+            ui.label(t.metric.replace('_', " "));
             ui.label(format!("{:.3} {}", t.value, t.unit));
             ui.label(format!("≤ {} {}", t.target, t.unit));
             let (text, color) = if t.met {

@@ -34,9 +34,12 @@ fn harness(options: InspectOptions) -> Harness<'static, InspectorApp> {
     let mut harness = Harness::builder()
         .with_size([1600.0, 950.0])
         .with_step_dt(1.0 / 60.0)
-        .build_eframe(move |cc| InspectorApp::new(&cc.egui_ctx, session));
-    // The tests step the simulation themselves (deterministic frames).
-    harness.state_mut().playback.playing = false;
+        .build_eframe(move |cc| {
+            let mut app = InspectorApp::new(&cc.egui_ctx, session);
+            // The tests step the simulation themselves (deterministic frames).
+            app.playback.playing = false;
+            app
+        });
     harness.run_steps(2);
     harness
 }
@@ -109,8 +112,27 @@ fn selecting_a_node_shows_its_live_pin_values() {
     // Its output is (0, 0, SplineStartClearance) with the file's 3 cm.
     harness.get_by_label("out result");
     harness.get_by_label("(0.0, 0.0, 3.0)");
+}
 
-    harness.snapshot_options("inspector_calculate_foot_spline", &snapshot_options());
+/// The whole window on a small frozen graph (tests/data/bob.ron), after 0.25 s: a node
+/// selected, a plot, the comment box of the file's editor section.
+#[test]
+fn snapshot_of_the_window() {
+    let mut harness = harness(options(Path::new("tests/data/bob.ron")));
+    {
+        let app = harness.state_mut();
+        app.advance(14);
+        assert!(app.graph.select("offset"));
+        let id = app.session.program().variable_id("Time").expect("declared");
+        let info = app.session.program().variable(id).clone();
+        app.plots.add("Time", info.ty, info.slot, app.session.generation());
+    }
+    harness.run_steps(3);
+    // 15 frames of 1/60 s (the app runs one when it opens): `Set("Time", "t")` comes
+    // first, so the pelvis step reads Time = 15/60 s, and `offset` = (0, 0, 5 cm ·
+    // sin(360° · 1 Hz · 0.25 s)) = (0, 0, 5 cm).
+    harness.get_by_label("(0.0, 0.0, 5.0)");
+    harness.snapshot_options("inspector_bob", &snapshot_options());
 }
 
 #[test]
@@ -419,5 +441,53 @@ fn without_a_display_run_names_the_headless_commands() {
     assert!(
         text.contains("strider run") && text.contains("strider report"),
         "{text}"
+    );
+}
+
+#[test]
+fn the_recording_keeps_a_bounded_number_of_frames() {
+    let mut session =
+        Session::open(options(&PathBuf::from(GRAPHS).join("locomotion.ron"))).expect("loads");
+    let capacity = session.recorder().capacity();
+    // At least 30 s at 60 Hz.
+    assert!(capacity >= 30 * 60, "{capacity}");
+    session.input = MoveInput {
+        direction: Vec2::Y,
+        speed: 150.0,
+        facing: Facing::Velocity,
+    };
+    for _ in 0..capacity + 30 {
+        session.step();
+    }
+    let recorder = session.recorder();
+    assert_eq!(recorder.len(), capacity);
+    // Oldest first, one frame apart, the newest being the last frame run.
+    let first = recorder.get(0).expect("kept").meta.frame;
+    let last = recorder.latest().expect("kept").meta.frame;
+    assert_eq!(last, session.frame() - 1);
+    assert_eq!(last - first, capacity as u64 - 1);
+    assert!(
+        recorder
+            .iter()
+            .zip(recorder.iter().skip(1))
+            .all(|(a, b)| b.meta.frame == a.meta.frame + 1)
+    );
+    // A frame holds the instance's scalar slots, the pose and the debug drawing.
+    let slots = session.instance().slots();
+    let scalars = slots.bools.len()
+        + 4 * (slots.ints.len() + slots.floats.len() + slots.bones.len())
+        + std::mem::size_of::<glam::Vec3>() * slots.vec3s.len()
+        + std::mem::size_of::<glam::Quat>() * slots.quats.len()
+        + std::mem::size_of::<strider_core::Transform>() * slots.transforms.len();
+    let frame = recorder.latest().expect("kept");
+    assert_eq!(frame.slots.bytes(), scalars);
+    let per_frame = recorder.bytes_per_frame();
+    assert!(per_frame >= scalars);
+    eprintln!(
+        "recording: {per_frame} bytes in the newest frame ({} of slots, {} debug primitives), \
+         {:.1} MB for {capacity} frames",
+        frame.slots.bytes(),
+        frame.debug.len(),
+        recorder.bytes() as f64 / 1.0e6
     );
 }
