@@ -1,6 +1,7 @@
 //! Node kernels, called directly (no VM): one group per kernel family of
-//! `strider_nodes::kernels` — scalar/vector math, transforms (rotate around point, aim),
-//! quaternion ops, splines, two-bone IK and the locomotion units, smoothing.
+//! `strider_nodes::kernels` — scalar/vector math, hierarchy searches, transforms (rotate
+//! around point, aim), quaternion ops, splines, two-bone IK and the locomotion units,
+//! smoothing. Every public kernel has an entry (a test in `tests/nodes.rs` keeps it so).
 //!
 //! Inputs are realistic rig values (cm, degrees, a 60 Hz frame) passed through
 //! `black_box`, so nothing is constant-folded. Times are per call.
@@ -44,6 +45,42 @@ fn math(c: &mut Criterion) {
     });
     g.bench_function("clamp_spatially", |x| {
         x.iter(|| k::clamp_spatially(black_box(v), Vec3::ZERO, 5.0, 20.0))
+    });
+    let (i, j) = (black_box(37_i32), black_box(-5_i32));
+    g.bench_function("div_i", |x| x.iter(|| k::div_i(black_box(i), black_box(j))));
+    g.bench_function("div_v", |x| {
+        x.iter(|| k::div_v(black_box(v), black_box(Vec3::new(2.0, 0.0, -4.0))))
+    });
+    g.bench_function("mod_f", |x| x.iter(|| k::mod_f(black_box(a), black_box(b))));
+    g.bench_function("mod_i", |x| x.iter(|| k::mod_i(black_box(i), black_box(j))));
+    g.bench_function("fract", |x| x.iter(|| k::fract(black_box(b))));
+    g.bench_function("clamp_f", |x| {
+        x.iter(|| k::clamp_f(black_box(a), black_box(b), 20.0))
+    });
+    g.bench_function("cos_deg", |x| x.iter(|| k::cos_deg(black_box(a))));
+    g.bench_function("tan_deg", |x| x.iter(|| k::tan_deg(black_box(a))));
+    g.bench_function("sqrt", |x| x.iter(|| k::sqrt(black_box(a))));
+    g.bench_function("to_int", |x| x.iter(|| k::to_int(black_box(b))));
+    g.bench_function("euler_order", |x| x.iter(|| k::euler_order(black_box(1))));
+    g.finish();
+}
+
+/// Hierarchy kernels: bone searches by name under a root.
+fn hierarchy(c: &mut Criterion) {
+    let mut g = c.benchmark_group("hierarchy");
+    let skeleton = mannequin();
+    let mut out = Vec::with_capacity(skeleton.len());
+    g.bench_function("find_bones", |x| {
+        x.iter(|| {
+            k::find_bones(
+                black_box(&skeleton),
+                strider::core::BoneIndex(0),
+                black_box("foot"),
+                black_box("ik"),
+                &mut out,
+            );
+            out.len()
+        })
     });
     g.finish();
 }
@@ -138,6 +175,9 @@ fn ik(c: &mut Criterion) {
         Vec3::new(9.5, 0.0, 13.5),
     );
     let goal = black_box(Vec3::new(9.5, 10.0, 20.0));
+    g.bench_function("stretch_scale", |x| {
+        x.iter(|| two_bone_ik::stretch_scale(black_box(Some((0.9, 1.1))), black_box(0.97)))
+    });
     g.bench_function("solve_positions", |x| {
         x.iter(|| {
             two_bone_ik::solve_positions(
@@ -177,6 +217,24 @@ fn ik(c: &mut Criterion) {
 /// The locomotion units of `kernels::locomotion`.
 fn locomotion(c: &mut Criterion) {
     let mut g = c.benchmark_group("locomotion");
+    g.bench_function("clavicle_offset", |x| {
+        x.iter(|| loco::clavicle_offset(black_box(0.3), black_box(150.0), 400.0, 2.0))
+    });
+    g.bench_function("cycle_length", |x| {
+        x.iter(|| loco::cycle_length(black_box(150.0), 0.25, 60.0, 100.0))
+    });
+    g.bench_function("foot_offset_from_trace", |x| {
+        x.iter(|| loco::foot_offset_from_trace(black_box(true), black_box(47.0), 50.0))
+    });
+    g.bench_function("pelvis_side_lean", |x| {
+        x.iter(|| loco::pelvis_side_lean(black_box(6.0), 20.0, 8.0))
+    });
+    g.bench_function("per_foot_rotation_factor", |x| {
+        x.iter(|| loco::per_foot_rotation_factor(black_box(-40.0), 0.5, 0.8))
+    });
+    g.bench_function("rotation_from_normal", |x| {
+        x.iter(|| loco::rotation_from_normal(black_box(Vec3::new(0.1, -0.2, 0.97))))
+    });
     let velocity = black_box(Vec3::new(20.0, 180.0, 0.0));
     let facing = black_box(Quat::from_rotation_z(0.3));
     g.bench_function("movement_angle_offset", |x| {
@@ -283,6 +341,12 @@ fn smoothing(c: &mut Criterion) {
     g.bench_function("qinterp_to", |x| {
         x.iter(|| loco::qinterp_to(black_box(qa), black_box(qb), DT, 10.0))
     });
+    g.bench_function("finterp_to", |x| {
+        x.iter(|| loco::finterp_to(black_box(3.0), black_box(8.0), DT, 10.0))
+    });
+    g.bench_function("spring_damper", |x| {
+        x.iter(|| loco::spring_damper(black_box(3.0), 0.0, black_box(8.0), 0.1, DT))
+    });
     g.bench_function("spring_damper_v", |x| {
         x.iter(|| loco::spring_damper_v(black_box(cur), Vec3::ZERO, black_box(tgt), 0.1, DT))
     });
@@ -290,6 +354,6 @@ fn smoothing(c: &mut Criterion) {
 }
 
 criterion_group!(
-    benches, math, transforms, quats, splines, ik, locomotion, smoothing
+    benches, math, hierarchy, transforms, quats, splines, ik, locomotion, smoothing
 );
 criterion_main!(benches);

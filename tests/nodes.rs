@@ -889,3 +889,33 @@ fn every_node_is_exercised_somewhere() {
         "nodes never used from RON in tests or graphs: {missing:?}"
     );
 }
+
+#[test]
+fn every_public_kernel_has_a_benchmark() {
+    // benches/kernels.rs times every kernel of strider_nodes::kernels (docs/performance.md).
+    let bench = std::fs::read_to_string("benches/kernels.rs").expect("benches/kernels.rs");
+    let mut missing = Vec::new();
+    for entry in std::fs::read_dir("crates/strider-nodes/src/kernels").expect("kernels dir") {
+        let path = entry.expect("entry").path();
+        let text = std::fs::read_to_string(&path).expect("kernel source");
+        for line in text.lines() {
+            let Some(rest) = line.strip_prefix("pub fn ") else {
+                continue;
+            };
+            let name: String = rest
+                .chars()
+                .take_while(|c| c.is_alphanumeric() || *c == '_')
+                .collect();
+            let used = bench.match_indices(name.as_str()).any(|(i, _)| {
+                let before = bench[..i].chars().next_back();
+                let after = bench[i + name.len()..].chars().next();
+                let word = |c: Option<char>| c.is_some_and(|c| c.is_alphanumeric() || c == '_');
+                !word(before) && !word(after)
+            });
+            if !used {
+                missing.push(format!("{} ({})", name, path.display()));
+            }
+        }
+    }
+    assert!(missing.is_empty(), "kernels without a benchmark: {missing:?}");
+}
