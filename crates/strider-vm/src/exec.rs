@@ -23,6 +23,8 @@ pub(crate) struct Ctx<'a> {
     pub world: &'a dyn WorldQuery,
     pub dt: f32,
     pub to_world: Transform,
+    /// `to_world.inverse()`, computed once per run (traces bring hits back to rig space).
+    pub from_world: Transform,
     /// Number of this run (construction or frame), never 0: stateful nodes advance once per
     /// run and remember the run they last advanced in.
     pub run: i32,
@@ -429,7 +431,7 @@ macro_rules! execute {
                 });
                 match hit {
                     Some(h) => {
-                        let from_world = $cx.to_world.inverse();
+                        let from_world = $cx.from_world;
                         b!(outs) = true;
                         v!(outs + 1) = from_world.transform_point(h.point);
                         v!(outs + 2) = k::unit_v(from_world.transform_vector(h.normal));

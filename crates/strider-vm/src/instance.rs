@@ -367,6 +367,7 @@ impl Instance {
             world,
             dt,
             to_world: self.to_world,
+            from_world: self.to_world.inverse(),
             run: next_run(&mut self.runs),
             #[cfg(feature = "profile")]
             profile: self.profiling.then_some(&mut self.profile[..]),
