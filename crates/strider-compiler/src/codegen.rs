@@ -5,8 +5,10 @@
 //! and their values are kept for later steps for as long as nothing they read changes
 //! (see [`Gen::invalidate`]): a `Set` of a variable they read, a mutating node that edits
 //! an array they read or moves the pose they read, a call of a function that does either.
-//! Values are not kept across a loop's iterations, nor past the end of a loop; after a
-//! `Branch`, only values both arms kept are. The result is the same as pulling every pure
+//! Before a loop, the pure nodes its body pulls that no iteration can change are emitted
+//! once, and values the body cannot change are kept through and after it; values computed
+//! in an iteration are not kept into the next one, nor past the loop; after a `Branch`,
+//! only values both arms kept are. The result is the same as pulling every pure
 //! node again for each step (the semantics of the graph), with each computed once per
 //! stretch of code in which its inputs are unchanged.
 //!
@@ -14,7 +16,7 @@
 //! [`strider_vm::InstrOrigin`]) in the program's side table, for profiling and tools.
 
 use crate::check::{Arg, Body, CStep, Checked, LoopPart, NodeKind, Src, VarRef};
-use crate::reads::{ReadsTable, writes_pose};
+use crate::reads::{ReadsTable, Writes, pulled_by, writes_pose};
 use std::collections::{HashMap, HashSet};
 use strider_graph::{EventKind, FunctionDecl, LoadedGraph, NodeDecl, Step};
 use strider_nodes::{Elem, Op, Value, ValueType, registry};
@@ -532,6 +534,36 @@ impl Gen<'_> {
         }
     }
 
+    /// Before a loop over `body` in `frame`: emits the pure nodes the body pulls that no
+    /// iteration can change (they read no loop variable, nothing the body writes, and no
+    /// stateful node, whose state must advance where the graph evaluates it), and keeps
+    /// only the values the body cannot change. Returns those values: they hold in every
+    /// iteration and after the loop, however many times it runs.
+    fn enter_loop(&mut self, frame: usize, body: &[CStep]) -> HashSet<usize> {
+        let checked = self.checked;
+        let function = self.frames[frame].body;
+        let frame_body = match function {
+            None => &checked.graph,
+            Some(f) => &checked.functions[f],
+        };
+        let mut writes = Writes::default();
+        writes.collect(frame_body, body);
+        for n in pulled_by(frame_body, body) {
+            let r = self.reads.node(checked, function, n);
+            if !r.loop_vars && !r.stateful && !writes.touch(&r) {
+                self.pure_closure(frame, n);
+            }
+        }
+        let kept: Vec<usize> = self.avail[frame].iter().copied().collect();
+        for n in kept {
+            let r = self.reads.node(checked, function, n);
+            if writes.touch(&r) {
+                self.avail[frame].remove(&n);
+            }
+        }
+        self.avail[frame].clone()
+    }
+
     /// Forgets the kept values of `frame` that read the outputs of exec node `n`, which
     /// just ran.
     fn invalidate_readers_of(&mut self, frame: usize, n: usize) {
@@ -723,6 +755,7 @@ impl Gen<'_> {
                 };
                 self.pb.emit(Op::Copy(items.ty), &[source, arr]);
                 self.pb.emit(Op::Copy(ValueType::Int), &[zero, counter]);
+                let keep = self.enter_loop(frame, body);
                 let head = self.pb.here();
                 let next = self.pb.emit(
                     Op::ForEachNext(elem),
@@ -732,13 +765,11 @@ impl Gen<'_> {
                     Some(Step::ForEach { body, .. }) => body,
                     _ => &[],
                 };
-                // Nothing is kept into, across or out of the iterations.
-                self.avail[frame].clear();
                 self.steps(frame, body, body_doc, rets);
                 self.pb.emit(Op::Jump, &[head]);
                 let exit = self.pb.here();
                 self.pb.patch(next, 5, exit);
-                self.avail[frame].clear();
+                self.avail[frame] = keep;
             }
             CStep::For { count, lp, body } => {
                 let source = self.pull(frame, std::slice::from_ref(count))[0];
@@ -749,19 +780,18 @@ impl Gen<'_> {
                 };
                 self.pb.emit(Op::Copy(ValueType::Int), &[source, n]);
                 self.pb.emit(Op::Copy(ValueType::Int), &[zero, counter]);
+                let keep = self.enter_loop(frame, body);
                 let head = self.pb.here();
                 let next = self.pb.emit(Op::ForNext, &[counter, n, index, 0]);
                 let body_doc: &[Step] = match doc {
                     Some(Step::For { body, .. }) => body,
                     _ => &[],
                 };
-                // Nothing is kept into, across or out of the iterations.
-                self.avail[frame].clear();
                 self.steps(frame, body, body_doc, rets);
                 self.pb.emit(Op::Jump, &[head]);
                 let exit = self.pb.here();
                 self.pb.patch(next, 3, exit);
-                self.avail[frame].clear();
+                self.avail[frame] = keep;
             }
             CStep::Sequence(blocks) => {
                 let docs: &[Vec<Step>] = match doc {
@@ -969,5 +999,53 @@ mod tests {
         // sets A = 0.5: after the branch it is computed again (1.5).
         assert_eq!(get("H"), Value::Float(6.0));
         assert_eq!(get("K"), Value::Float(1.5));
+    }
+
+    /// A loop body's invariant pure nodes run once, before the loop; what the body
+    /// changes is still read afresh in every iteration.
+    const HOIST: &str = r#"Graph(
+        version: 1,
+        name: "hoist",
+        variables: {
+            "Sum": (type: Float), "Last": (type: Float),
+            "Scale": (type: Float, default: 2.0),
+        },
+        nodes: {
+            "probe": SphereTrace(start: (0.0, 0.0, 100.0), end: (0.0, 0.0, -100.0), radius: 5.0),
+            "step": Multiply(a: "probe.distance", b: var("Scale")),
+            "sum": Add(a: var("Sum"), b: "step"),
+            "k": ToFloat(value: "i"),
+            "last": Add(a: "k", b: "step"),
+        },
+        events: {
+            forward: [
+                Set("Sum", 0.0),
+                For(count: 3, index: "i", body: [
+                    Set("Sum", "sum"),
+                    Set("Last", "last"),
+                ]),
+            ],
+        },
+    )"#;
+
+    #[test]
+    fn loop_invariant_pure_nodes_run_once_before_the_loop() {
+        use strider_nodes::Op;
+        let program = crate::compile_str(Path::new("hoist.ron"), HOIST).expect("compiles");
+        let code = program.code();
+        let trace = code.iter().position(|i| i.op == Op::SphereTrace);
+        let head = code.iter().position(|i| i.op == Op::ForNext);
+        assert_eq!(code.iter().filter(|i| i.op == Op::SphereTrace).count(), 1);
+        assert!(
+            trace < head,
+            "the trace is emitted before the loop: {trace:?} {head:?}"
+        );
+        let mut instance = Instance::new(Arc::new(program.clone()), skeleton()).expect("instance");
+        instance.run_forward(&FrameInput::default(), &EmptyWorld, false);
+        let get = |name: &str| instance.variable(program.variable_id(name).expect(name));
+        // A miss reports the trace's length, 200; step = 400. Sum is read afresh in each
+        // iteration (3 × 400); the last iteration's index is 2.
+        assert_eq!(get("Sum"), Value::Float(1200.0));
+        assert_eq!(get("Last"), Value::Float(402.0));
     }
 }

@@ -8,7 +8,7 @@
 //! advance once per run, so none of them ends a value's life. Loop variables do, but values
 //! are never kept across loop iterations.
 
-use crate::check::{Body, CStep, Checked, NodeKind, Src};
+use crate::check::{Body, CStep, Checked, NodeKind, Src, VarRef};
 use std::collections::HashMap;
 use strider_nodes::Op;
 
@@ -23,6 +23,11 @@ pub(crate) struct Reads {
     pub execs: Vec<usize>,
     /// Whether it reads the pose (a bone transform).
     pub pose: bool,
+    /// Whether it reads a loop's element, index or count.
+    pub loop_vars: bool,
+    /// Whether it is or pulls a stateful node (whose state advances when first evaluated
+    /// in a run, so it must not be evaluated where the graph would not evaluate it).
+    pub stateful: bool,
 }
 
 impl Reads {
@@ -31,6 +36,8 @@ impl Reads {
         self.locals.extend_from_slice(&other.locals);
         self.execs.extend_from_slice(&other.execs);
         self.pose |= other.pose;
+        self.loop_vars |= other.loop_vars;
+        self.stateful |= other.stateful;
         self.normalise();
     }
 
@@ -66,6 +73,135 @@ pub(crate) fn writes_pose(op: Op) -> bool {
             | Op::ArrayAdd(_)
             | Op::ArrayReset(_)
     )
+}
+
+/// What running a list of steps may change in its frame: the other side of [`Reads`].
+#[derive(Clone, Debug, Default)]
+pub(crate) struct Writes {
+    /// Variables and locals set, or edited in place by a mutating node.
+    pub vars: Vec<VarRef>,
+    /// Exec nodes run (their outputs change).
+    pub execs: Vec<usize>,
+    /// The pose may move.
+    pub pose: bool,
+    /// Any graph variable may change (an impure function call).
+    pub any_global: bool,
+    /// A mutating node edits a pure node's output in place: nothing is safe to keep.
+    pub everything: bool,
+}
+
+impl Writes {
+    /// Whether a value that reads `r` may be changed by these writes.
+    pub(crate) fn touch(&self, r: &Reads) -> bool {
+        self.everything
+            || (self.pose && r.pose)
+            || (self.any_global && !r.globals.is_empty())
+            || self.execs.iter().any(|e| r.execs.binary_search(e).is_ok())
+            || self.vars.iter().any(|v| match v {
+                VarRef::Global(g) => r.globals.binary_search(g).is_ok(),
+                VarRef::Local(l) => r.locals.binary_search(l).is_ok(),
+            })
+    }
+
+    /// Adds what `steps` of `body` may change (nested lists included; function bodies are
+    /// summarised by their call: an impure call may change any variable and the pose).
+    pub(crate) fn collect(&mut self, body: &Body, steps: &[CStep]) {
+        let mut lists: Vec<&[CStep]> = vec![steps];
+        while let Some(list) = lists.pop() {
+            for s in list {
+                match s {
+                    CStep::Set { target, .. } => self.vars.push(*target),
+                    CStep::Exec(n) => {
+                        self.execs.push(*n);
+                        let node = &body.nodes[*n];
+                        match node.kind {
+                            NodeKind::Builtin(op) => {
+                                for a in &node.inputs {
+                                    match a.src {
+                                        Src::Global(g) => self.vars.push(VarRef::Global(g)),
+                                        Src::Local(l) => self.vars.push(VarRef::Local(l)),
+                                        Src::Node { .. } if a.ty.elem().is_some() => {
+                                            self.everything = true;
+                                        }
+                                        _ => {}
+                                    }
+                                }
+                                self.pose |= writes_pose(op);
+                            }
+                            NodeKind::Call(_) => {
+                                self.any_global |= !node.pure;
+                                self.pose |= !node.pure;
+                            }
+                        }
+                    }
+                    CStep::Branch {
+                        then, otherwise, ..
+                    } => {
+                        lists.push(then);
+                        lists.push(otherwise);
+                    }
+                    CStep::ForEach { body: b, .. } | CStep::For { body: b, .. } => lists.push(b),
+                    CStep::Sequence(blocks) => lists.extend(blocks.iter().map(Vec::as_slice)),
+                    CStep::Return(_) => {}
+                }
+            }
+        }
+    }
+}
+
+/// The pure nodes of `body` that `steps` (nested lists included) pull, with everything
+/// they depend on, in increasing index order.
+pub(crate) fn pulled_by(body: &Body, steps: &[CStep]) -> Vec<usize> {
+    let mut roots = Vec::new();
+    let mut arg = |a: &crate::check::Arg| {
+        if let Src::Node { node, .. } = a.src {
+            roots.push(node);
+        }
+    };
+    let mut lists: Vec<&[CStep]> = vec![steps];
+    while let Some(list) = lists.pop() {
+        for s in list {
+            match s {
+                CStep::Set { arg: a, .. } => arg(a),
+                CStep::Exec(n) => body.nodes[*n].inputs.iter().for_each(&mut arg),
+                CStep::Branch {
+                    condition,
+                    then,
+                    otherwise,
+                } => {
+                    arg(condition);
+                    lists.push(then);
+                    lists.push(otherwise);
+                }
+                CStep::ForEach { items, body: b, .. } => {
+                    arg(items);
+                    lists.push(b);
+                }
+                CStep::For { count, body: b, .. } => {
+                    arg(count);
+                    lists.push(b);
+                }
+                CStep::Sequence(blocks) => lists.extend(blocks.iter().map(Vec::as_slice)),
+                CStep::Return(values) => values.iter().for_each(|(_, a)| arg(a)),
+            }
+        }
+    }
+    let mut seen = vec![false; body.nodes.len()];
+    let mut out = Vec::new();
+    while let Some(n) = roots.pop() {
+        if seen[n] || !body.nodes[n].pure {
+            continue;
+        }
+        seen[n] = true;
+        out.push(n);
+        for a in &body.nodes[n].inputs {
+            if let Src::Node { node, .. } = a.src {
+                roots.push(node);
+            }
+        }
+    }
+    out.sort_unstable();
+    out
 }
 
 /// Memoised [`Reads`] of every node of every body, and of whole pure function bodies.
@@ -115,15 +251,18 @@ impl ReadsTable {
                     }
                     // An exec node's outputs change when that node runs again.
                     Src::Node { node: dep, .. } => reads.execs.push(dep),
+                    Src::Loop { .. } => reads.loop_vars = true,
                     _ => {}
                 }
             }
+            reads.stateful |= !node.state.is_empty();
             match node.kind {
                 NodeKind::Builtin(op) => reads.pose |= reads_pose(op),
                 NodeKind::Call(f) => {
                     let callee = self.function(checked, f);
                     reads.globals.extend_from_slice(&callee.globals);
                     reads.pose |= callee.pose;
+                    reads.stateful |= callee.stateful;
                 }
             }
             reads.normalise();
@@ -146,6 +285,7 @@ impl ReadsTable {
             let r = self.node(checked, Some(f), n);
             reads.globals.extend_from_slice(&r.globals);
             reads.pose |= r.pose;
+            reads.stateful |= r.stateful || !b.nodes[n].state.is_empty();
             if let NodeKind::Builtin(op) = b.nodes[n].kind {
                 reads.pose |= reads_pose(op);
             }

@@ -14,7 +14,7 @@ use strider_vm::native::{Frame, NativeProgram, step};
 /// The forward event of `locomotion`, compiled ahead of time.
 pub static NATIVE: NativeProgram = NativeProgram {
     name: "locomotion",
-    fingerprint: 0x03f633cb9e6b161c,
+    fingerprint: 0x8de6a5b94c45cb01,
     forward,
 };
 
@@ -265,32 +265,32 @@ fn forward(f: &mut Frame<'_>) {
                 step(f, Op::MulI, &[0, 0, 34], 562);
                 step(f, Op::Copy(ValueType::Int), &[34, 33], 563);
                 step(f, Op::Copy(ValueType::Int), &[52, 29], 564);
-                564
+                step(f, Op::SubI, &[0, 53, 37], 565);
+                step(f, Op::DivI, &[37, 54, 38], 566);
+                step(f, Op::MakeVector, &[413, 413, 39, 82], 567);
+                step(f, Op::ScaleV, &[73, 41, 87], 568);
+                568
             }
-            564 => {
-                step(f, Op::ForNext, &[29, 33, 31, 608], 565)
+            568 => {
+                step(f, Op::ForNext, &[29, 33, 31, 608], 569)
             }
-            565 => {
-                step(f, Op::ModI, &[31, 0, 35], 566);
-                step(f, Op::ToFloat, &[35, 181], 567);
-                step(f, Op::MulF, &[181, 40, 183], 568);
-                step(f, Op::MulF, &[183, 179, 184], 569);
-                step(f, Op::MakeVector, &[184, 413, 413, 78], 570);
-                step(f, Op::DivI, &[31, 0, 36], 571);
-                step(f, Op::SubI, &[0, 53, 37], 572);
-                step(f, Op::DivI, &[37, 54, 38], 573);
-                step(f, Op::SubI, &[36, 38, 39], 574);
-                step(f, Op::ToFloat, &[39, 182], 575);
-                step(f, Op::MulF, &[182, 40, 185], 576);
-                step(f, Op::ScaleV, &[73, 185, 79], 577);
-                step(f, Op::AddV, &[78, 79, 80], 578);
-                step(f, Op::AddV, &[72, 80, 81], 579);
-                step(f, Op::MakeVector, &[413, 413, 39, 82], 580);
-                step(f, Op::AddV, &[81, 82, 83], 581);
-                step(f, Op::SubV, &[81, 82, 84], 582);
-                step(f, Op::SphereTrace, &[83, 84, 38, 21, 85, 86, 186], 583);
-                step(f, Op::BreakVector, &[85, 188, 189, 190], 584);
-                step(f, Op::ScaleV, &[73, 41, 87], 585);
+            569 => {
+                step(f, Op::ModI, &[31, 0, 35], 570);
+                step(f, Op::ToFloat, &[35, 181], 571);
+                step(f, Op::MulF, &[181, 40, 183], 572);
+                step(f, Op::MulF, &[183, 179, 184], 573);
+                step(f, Op::MakeVector, &[184, 413, 413, 78], 574);
+                step(f, Op::DivI, &[31, 0, 36], 575);
+                step(f, Op::SubI, &[36, 38, 39], 576);
+                step(f, Op::ToFloat, &[39, 182], 577);
+                step(f, Op::MulF, &[182, 40, 185], 578);
+                step(f, Op::ScaleV, &[73, 185, 79], 579);
+                step(f, Op::AddV, &[78, 79, 80], 580);
+                step(f, Op::AddV, &[72, 80, 81], 581);
+                step(f, Op::AddV, &[81, 82, 83], 582);
+                step(f, Op::SubV, &[81, 82, 84], 583);
+                step(f, Op::SphereTrace, &[83, 84, 38, 21, 85, 86, 186], 584);
+                step(f, Op::BreakVector, &[85, 188, 189, 190], 585);
                 step(f, Op::AddV, &[83, 87, 88], 586);
                 step(f, Op::AddV, &[84, 87, 89], 587);
                 step(f, Op::SphereTrace, &[88, 89, 38, 22, 90, 91, 187], 588);
@@ -317,7 +317,7 @@ fn forward(f: &mut Frame<'_>) {
                 step(f, Op::Jump, &[607], 607)
             }
             607 => {
-                step(f, Op::Jump, &[564], 608)
+                step(f, Op::Jump, &[568], 608)
             }
             608 => {
                 step(f, Op::JumpIfFalse, &[3, 611], 609)
@@ -917,14 +917,14 @@ fn forward(f: &mut Frame<'_>) {
                 step(f, Op::Copy(ValueType::Bool), &[48, 39], 1147);
                 step(f, Op::Copy(ValueType::Array(Elem::Transform)), &[3, 6], 1148);
                 step(f, Op::Copy(ValueType::Int), &[52, 45], 1149);
-                1149
-            }
-            1149 => {
-                step(f, Op::ForEachNext(Elem::Transform), &[6, 45, 72, 46, 47, 1163], 1150)
+                step(f, Op::MakeVector, &[413, 413, 39, 247], 1150);
+                1150
             }
             1150 => {
-                step(f, Op::BreakTransform, &[72, 245, 55, 246], 1151);
-                step(f, Op::MakeVector, &[413, 413, 39, 247], 1152);
+                step(f, Op::ForEachNext(Elem::Transform), &[6, 45, 72, 46, 47, 1163], 1151)
+            }
+            1151 => {
+                step(f, Op::BreakTransform, &[72, 245, 55, 246], 1152);
                 step(f, Op::AddV, &[245, 247, 248], 1153);
                 step(f, Op::SubV, &[245, 247, 249], 1154);
                 step(f, Op::SphereTrace, &[248, 249, 38, 40, 250, 251, 353], 1155);
@@ -939,7 +939,7 @@ fn forward(f: &mut Frame<'_>) {
                 step(f, Op::Jump, &[1162], 1162)
             }
             1162 => {
-                step(f, Op::Jump, &[1149], 1163)
+                step(f, Op::Jump, &[1150], 1163)
             }
             1163 => {
                 step(f, Op::Select(ValueType::Float), &[39, 352, 413, 357], 1164);
