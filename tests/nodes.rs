@@ -917,5 +917,8 @@ fn every_public_kernel_has_a_benchmark() {
             }
         }
     }
-    assert!(missing.is_empty(), "kernels without a benchmark: {missing:?}");
+    assert!(
+        missing.is_empty(),
+        "kernels without a benchmark: {missing:?}"
+    );
 }
