@@ -52,6 +52,9 @@ pub struct InspectorApp {
     /// Keyboard driving.
     pub controls: Controls,
     feet: Vec<usize>,
+    /// CPU time of the previous UI frame (simulation steps, panels, tessellation), ms, as
+    /// eframe measures it; `None` headless.
+    ui_ms: Option<f32>,
 }
 
 impl InspectorApp {
@@ -97,6 +100,7 @@ impl InspectorApp {
                 ..Controls::default()
             },
             feet,
+            ui_ms: None,
         };
         // One frame so that every panel has something to show.
         app.session.step();
@@ -312,6 +316,10 @@ impl InspectorApp {
                 self.session.frame(),
                 self.session.time()
             ));
+            if let Some(ms) = self.ui_ms {
+                ui.label(RichText::new(format!("UI {ms:.1} ms")).weak())
+                    .on_hover_text("CPU time of the last UI frame");
+            }
             ui.separator();
             let keyboard = matches!(self.session.drive(), Drive::Keyboard);
             if ui.selectable_label(keyboard, "⌨ Keyboard").clicked() && !keyboard {
@@ -363,7 +371,8 @@ impl InspectorApp {
 }
 
 impl eframe::App for InspectorApp {
-    fn ui(&mut self, ui: &mut Ui, _frame: &mut eframe::Frame) {
+    fn ui(&mut self, ui: &mut Ui, frame: &mut eframe::Frame) {
+        self.ui_ms = frame.info().cpu_usage.map(|s| s * 1000.0);
         self.frame_ui(ui);
         ui.ctx().request_repaint();
     }

@@ -948,19 +948,23 @@ impl SnarlViewer<GraphNode> for Viewer<'_> {
     ) -> impl SnarlPin + 'static {
         let n = &snarl[pin.id.node];
         let (name, source) = &n.inputs[pin.id.input];
-        let value = match source {
-            PinSource::Literal(t) => Some(t.clone()),
-            PinSource::Default(t) => Some(format!("{t} (default)")),
-            _ => self.value_text(self.input_slot(source)),
-        };
+        let slot = self.input_slot(source);
         let label = match source {
             PinSource::Literal(t) => format!("{name} = {t}"),
             PinSource::Var(v) => format!("{name} ← {v}"),
             PinSource::Link { node, .. } if pin.remotes.is_empty() => format!("{name} ← {node}"),
             _ => name.clone(),
         };
-        ui.label(label)
-            .on_hover_text(value.unwrap_or_else(|| "—".to_string()));
+        // The value is formatted only while the pin is hovered.
+        let response = ui.label(label);
+        if response.hovered() {
+            let value = match source {
+                PinSource::Literal(t) => Some(t.clone()),
+                PinSource::Default(t) => Some(format!("{t} (default)")),
+                _ => self.value_text(slot),
+            };
+            response.on_hover_text(value.unwrap_or_else(|| "—".to_string()));
+        }
         let mut info = PinInfo::circle();
         info.fill = Some(match source {
             PinSource::Link { .. } => Color32::from_rgb(120, 200, 255),
@@ -981,9 +985,11 @@ impl SnarlViewer<GraphNode> for Viewer<'_> {
         let slot = n
             .index
             .and_then(|i| self.state_outputs.get(&(i, name.clone())).copied());
-        let value = self.value_text(slot);
-        ui.label(name)
-            .on_hover_text(value.unwrap_or_else(|| "—".to_string()));
+        let response = ui.label(name);
+        if response.hovered() {
+            let value = self.value_text(slot);
+            response.on_hover_text(value.unwrap_or_else(|| "—".to_string()));
+        }
         let mut info = PinInfo::circle();
         info.fill = Some(Color32::from_rgb(255, 200, 120));
         info

@@ -45,6 +45,8 @@ pub struct ViewportState {
     pub show_feet: bool,
     triangles: Vec<Tri>,
     world_key: usize,
+    ground: Vec<Tri>,
+    ground_key: Option<(i32, i32, usize)>,
     scratch: Vec<(f32, usize)>,
     /// Where the pointer hits the ground plane at the character's height (world cm), when
     /// over the view; used to aim in strafe mode.
@@ -63,6 +65,8 @@ impl Default for ViewportState {
             show_feet: true,
             triangles: Vec::new(),
             world_key: usize::MAX,
+            ground: Vec::new(),
+            ground_key: None,
             scratch: Vec::new(),
             pointer_ground: None,
         }
@@ -406,34 +410,43 @@ pub fn show(ui: &mut Ui, state: &mut ViewportState, scene: &Scene<'_>) -> egui::
     }
     let light = Vec3::new(0.35, -0.5, 1.0).normalize();
     let mut mesh = Mesh::default();
-    let mut ground_tris = Vec::new();
-    for shape in &scene.world.desc().shapes {
-        if let ShapeDesc::Ground { height } = *shape {
-            let cx = (state.target.x / TILE).floor() as i32;
-            let cy = (state.target.y / TILE).floor() as i32;
-            for j in -TILES..TILES {
-                for i in -TILES..TILES {
-                    let (x0, y0) = ((cx + i) as f32 * TILE, (cy + j) as f32 * TILE);
-                    let c = if (cx + i + cy + j).rem_euclid(2) == 0 {
-                        [0.52, 0.52, 0.5]
-                    } else {
-                        [0.47, 0.47, 0.45]
-                    };
-                    let p = |x: f32, y: f32| Vec3::new(x, y, height);
-                    push_quad(
-                        &mut ground_tris,
-                        p(x0, y0),
-                        p(x0 + TILE, y0),
-                        p(x0 + TILE, y0 + TILE),
-                        p(x0, y0 + TILE),
-                        c,
-                    );
+    // Ground tiles around the camera target, rebuilt when the target crosses a tile.
+    let (cx, cy) = (
+        (state.target.x / TILE).floor() as i32,
+        (state.target.y / TILE).floor() as i32,
+    );
+    if state.ground_key != Some((cx, cy, key)) {
+        state.ground_key = Some((cx, cy, key));
+        state.ground.clear();
+        for shape in &scene.world.desc().shapes {
+            if let ShapeDesc::Ground { height } = *shape {
+                for j in -TILES..TILES {
+                    for i in -TILES..TILES {
+                        let (x0, y0) = ((cx + i) as f32 * TILE, (cy + j) as f32 * TILE);
+                        let c = if (cx + i + cy + j).rem_euclid(2) == 0 {
+                            [0.52, 0.52, 0.5]
+                        } else {
+                            [0.47, 0.47, 0.45]
+                        };
+                        let p = |x: f32, y: f32| Vec3::new(x, y, height);
+                        push_quad(
+                            &mut state.ground,
+                            p(x0, y0),
+                            p(x0 + TILE, y0),
+                            p(x0 + TILE, y0 + TILE),
+                            p(x0, y0 + TILE),
+                            c,
+                        );
+                    }
                 }
             }
         }
     }
+    let count = state.ground.len() + state.triangles.len();
+    mesh.reserve_vertices(3 * count);
+    mesh.reserve_triangles(count);
     // Ground first (it is below everything), then the shapes sorted back to front.
-    add_tris(&mut mesh, &cam, &ground_tris, light, None);
+    add_tris(&mut mesh, &cam, &state.ground, light, None);
     state.scratch.clear();
     for (i, t) in state.triangles.iter().enumerate() {
         let centroid = (t.p[0] + t.p[1] + t.p[2]) / 3.0;

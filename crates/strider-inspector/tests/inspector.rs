@@ -125,7 +125,8 @@ fn snapshot_of_the_window() {
         assert!(app.graph.select("offset"));
         let id = app.session.program().variable_id("Time").expect("declared");
         let info = app.session.program().variable(id).clone();
-        app.plots.add("Time", info.ty, info.slot, app.session.generation());
+        app.plots
+            .add("Time", info.ty, info.slot, app.session.generation());
     }
     harness.run_steps(3);
     // 15 frames of 1/60 s (the app runs one when it opens): `Set("Time", "t")` comes
@@ -490,4 +491,19 @@ fn the_recording_keeps_a_bounded_number_of_frames() {
         frame.debug.len(),
         recorder.bytes() as f64 / 1.0e6
     );
+}
+
+#[cfg(feature = "profile")]
+#[test]
+fn time_per_node_prints_microseconds_on_the_nodes() {
+    let mut harness = harness(options(Path::new("tests/data/bob.ron")));
+    // Times are averaged over half a second of frames.
+    harness.state_mut().advance(60);
+    assert!(harness.state().session.profile_us().is_some());
+    harness.state_mut().graph.show_profile = true;
+    harness.run_steps(3);
+    // Every declared node of the top level runs each frame: each prints its time.
+    let declared = 9;
+    let timed = harness.get_all_by_label_contains(" µs").count();
+    assert!(timed >= declared, "{timed} nodes print a time");
 }
