@@ -152,7 +152,9 @@ impl Overrides {
     }
 
     /// Sets every value on `instance` (which must run the program the overrides were
-    /// checked against).
+    /// checked against). `construction` has already run when an instance exists: call
+    /// `Instance::rebind` afterwards (it keeps tunables) when what it derives from
+    /// tunables must follow.
     pub fn apply(&self, instance: &mut Instance) {
         for e in &self.entries {
             // Checked against the program's types when read: cannot fail.

@@ -158,6 +158,10 @@ impl Session {
             Overrides::load(path, &program)
                 .map_err(|d| fail(diagnostics_text(&d)))?
                 .apply(&mut instance);
+            // `construction` runs again with the new tunables (rebind keeps them).
+            instance
+                .rebind(Arc::clone(&skeleton.skeleton), &world)
+                .map_err(|e| fail(vec![e.to_string()]))?;
         }
         let mut mover = Mover::new(Default::default(), Vec3::ZERO, 0.0);
         mover.settle(&world);
@@ -274,10 +278,11 @@ impl Session {
         }
     }
 
-    /// Reloads every file now. On success the new program replaces the old one (the
-    /// instance is re-created; every variable whose name and type are unchanged keeps its
-    /// value, tunables and state alike); on failure the problems are listed and the last
-    /// good program keeps running. Returns true on success.
+    /// Reloads every file now. On success the new program replaces the old one: the
+    /// instance is re-created, tunables whose name and type are unchanged keep their values,
+    /// `construction` runs with them, and state variables keep theirs (see
+    /// `carry_variables`); on failure the problems are listed and the last good program
+    /// keeps running. Returns true on success.
     pub fn reload(&mut self) -> bool {
         let mut problems = Vec::new();
         let skeleton = match strider_graph::load_skeleton(&self.options.skeleton) {
@@ -308,7 +313,7 @@ impl Session {
             }
         };
         self.reload_drive(&mut problems);
-        carry_variables(&self.instance, &mut instance);
+        carry_variables(&self.instance, &mut instance, &skeleton, &self.world);
         let same_program = program.code() == self.program.code()
             && program.operands() == self.program.operands()
             && program.variables() == self.program.variables();
@@ -554,7 +559,8 @@ impl Session {
             .map_err(|e| format!("cannot write {}: {e}", path.display()))
     }
 
-    /// Reads an overrides file and applies it to the live instance.
+    /// Reads an overrides file, applies it to the live instance and re-runs `construction`
+    /// (the other variables restart from their defaults).
     ///
     /// # Errors
     /// Every problem, `path:line:col: error: ...`, one per line.
@@ -562,6 +568,12 @@ impl Session {
         let o =
             Overrides::load(path, &self.program).map_err(|d| diagnostics_text(&d).join("\n"))?;
         o.apply(&mut self.instance);
+        // `construction` runs again so that what it derives from tunables is current; the
+        // other variables start again from their defaults (as after `Instance::rebind`).
+        self.instance
+            .rebind(Arc::clone(&self.skeleton.skeleton), &self.world)
+            .map_err(|e| e.to_string())?;
+        self.start_profiling();
         Ok(o.entries.len())
     }
 
@@ -658,15 +670,51 @@ impl Session {
     }
 }
 
-/// Copies every variable of `from` whose name and type `to`'s program also declares.
-fn carry_variables(from: &Instance, to: &mut Instance) {
+/// Carries what survives a reload from `from` (the running instance) to `to` (a fresh
+/// instance of the new program): every tunable whose name and type are unchanged; then
+/// `construction` runs again with them; then every other variable whose name and type are
+/// unchanged keeps its live value, unless the edit changed what `construction` gives it
+/// (compared with the old program's `construction` run on the same tunables), in which
+/// case the new value stands.
+fn carry_variables(from: &Instance, to: &mut Instance, skeleton: &SkeletonFile, world: &World) {
     let old = Arc::clone(from.program());
     let new = Arc::clone(to.program());
+    let matching = |v: &strider_vm::VariableInfo| {
+        old.variable_id(&v.name)
+            .filter(|&j| old.variable(j).ty == v.ty)
+    };
     for (i, v) in new.variables().iter().enumerate() {
-        if let Some(j) = old.variable_id(&v.name)
-            && old.variable(j).ty == v.ty
+        if v.tunable.is_some()
+            && let Some(j) = matching(v)
         {
             let _ = to.set_variable(VariableId(i as u32), &from.variable(j));
+        }
+    }
+    let _ = to.rebind(Arc::clone(&skeleton.skeleton), world);
+    // What the old program's `construction` gave, with the same tunables.
+    let old_constructed = Instance::new(Arc::clone(&old), Arc::clone(from.pose().skeleton()))
+        .ok()
+        .map(|mut fresh| {
+            for (j, v) in old.variables().iter().enumerate() {
+                if v.tunable.is_some() {
+                    let id = VariableId(j as u32);
+                    let _ = fresh.set_variable(id, &from.variable(id));
+                }
+            }
+            let _ = fresh.rebind(Arc::clone(from.pose().skeleton()), world);
+            fresh
+        });
+    for (i, v) in new.variables().iter().enumerate() {
+        let id = VariableId(i as u32);
+        if v.tunable.is_some() {
+            continue;
+        }
+        let Some(j) = matching(v) else { continue };
+        let unchanged = old_constructed
+            .as_ref()
+            .is_none_or(|fresh| fresh.variable(j) == to.variable(id));
+        if unchanged {
+            let _ = to.set_variable(id, &from.variable(j));
         }
     }
 }

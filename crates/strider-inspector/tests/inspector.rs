@@ -507,3 +507,87 @@ fn time_per_node_prints_microseconds_on_the_nodes() {
     let timed = harness.get_all_by_label_contains(" µs").count();
     assert!(timed >= declared, "{timed} nodes print a time");
 }
+
+#[test]
+fn a_reload_keeps_the_state_the_frames_built() {
+    let dir = scratch_dir("state");
+    let graph = dir.join("locomotion.ron");
+    let text = std::fs::read_to_string(PathBuf::from(GRAPHS).join("locomotion.ron")).expect("read");
+    std::fs::write(&graph, &text).expect("copy");
+    let mut harness = harness(options(&graph));
+    walk(&mut harness, Vec2::Y, 150.0, 90);
+    let before: Vec<Value> = {
+        let app = harness.state();
+        let program = app.session.program();
+        (0..program.variables().len())
+            .map(|i| {
+                app.session
+                    .instance()
+                    .variable(strider_vm::VariableId(i as u32))
+            })
+            .collect()
+    };
+    // Only a comment changes: the program is the same, and so must be every variable —
+    // the state the 90 frames built (feet, velocity, cycle) and what `construction` set.
+    std::fs::write(&graph, format!("{text}\n// edited\n")).expect("edit");
+    assert!(
+        wait_until(&mut harness, Duration::from_secs(10), |app| app
+            .session
+            .status()
+            .starts_with("reloaded")),
+        "the edit reloads"
+    );
+    let app = harness.state();
+    assert!(app.session.problems().is_empty());
+    let program = app.session.program();
+    for (i, v) in program.variables().iter().enumerate() {
+        let now = app
+            .session
+            .instance()
+            .variable(strider_vm::VariableId(i as u32));
+        assert_eq!(now, before[i], "{}", v.name);
+    }
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
+#[test]
+fn a_reload_takes_what_the_edited_construction_gives() {
+    let graph_text = |base: f32| {
+        format!(
+            r#"Graph(
+    version: 1,
+    name: "counter",
+    variables: {{ "Count": (type: Float), "Base": (type: Float) }},
+    nodes: {{ "next": Add(a: var("Count"), b: 1.0) }},
+    events: {{
+        construction: [ Set("Base", {base:.1}) ],
+        forward: [ Set("Count", "next") ],
+    }},
+)
+"#
+        )
+    };
+    let dir = scratch_dir("construction");
+    let graph = dir.join("counter.ron");
+    std::fs::write(&graph, graph_text(10.0)).expect("write");
+    let mut harness = harness(options(&graph));
+    harness.state_mut().advance(29);
+    let get = |app: &InspectorApp, name: &str| {
+        let id = app.session.program().variable_id(name).expect("declared");
+        app.session.instance().variable(id)
+    };
+    // One frame when the app opens, 29 more: Count counted 30 frames.
+    assert_eq!(get(harness.state(), "Count"), Value::Float(30.0));
+    assert_eq!(get(harness.state(), "Base"), Value::Float(10.0));
+    std::fs::write(&graph, graph_text(20.0)).expect("edit");
+    assert!(
+        wait_until(&mut harness, Duration::from_secs(10), |app| get(
+            app, "Base"
+        )
+            == Value::Float(20.0)),
+        "the edited construction's value is taken"
+    );
+    // The frames' state is kept (the app is paused: no frame ran since).
+    assert_eq!(get(harness.state(), "Count"), Value::Float(30.0));
+    let _ = std::fs::remove_dir_all(&dir);
+}
