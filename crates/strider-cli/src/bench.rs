@@ -3,7 +3,7 @@
 
 use crate::alloc_count;
 use crate::output;
-use crate::setup::{Assignment, apply_assignments, instantiate, load, parse_assignments};
+use crate::setup::{Assignment, apply_assignments, instantiate, load, resolve_assignments};
 use anyhow::{Context as _, anyhow, bail};
 use indicatif::{ProgressBar, ProgressDrawTarget, ProgressStyle};
 use rayon::prelude::*;
@@ -90,6 +90,11 @@ pub(crate) struct BenchArgs {
     /// Set a graph variable before the first frame; repeatable (as in `strider run`).
     #[arg(long, value_name = "NAME=VALUE")]
     pub set: Vec<String>,
+
+    /// Set tunable variables from an overrides file (a RON map `{ "Name": value, ... }`, as
+    /// the inspector exports) before the first frame; `--set` wins for a variable both give.
+    #[arg(long, value_name = "FILE")]
+    pub overrides: Option<PathBuf>,
 }
 
 /// Time per character-frame over the repetitions of one configuration, ns.
@@ -180,7 +185,7 @@ pub(crate) fn run(args: &BenchArgs) -> anyhow::Result<ExitCode> {
     let (program, skeleton) = load(&args.graph, &args.skeleton)?;
     let compile_ms = compile_ms(args)?;
     let program = Arc::new(program);
-    let assignments = parse_assignments(&program, &args.set)?;
+    let assignments = resolve_assignments(&program, args.overrides.as_deref(), &args.set)?;
     let scenario = Scenario::load(&args.scenario).map_err(|e| anyhow!("{e}"))?;
     if args.profile && !cfg!(feature = "profile") {
         bail!(

@@ -7,7 +7,10 @@
 //! strider bench GRAPH --skeleton SKEL --scenario SCEN   cost per character-frame, crowds
 //! strider nodes [--markdown]                  list the built-in nodes
 //! strider native GRAPH [--out FILE]           a graph's forward event as Rust source
-//! strider                                     the demo: the locomotion report on walk_flat
+//! strider inspect [GRAPH] [--scenario SCEN]    the inspector window
+//! strider                                     the demo: the inspector on the locomotion
+//!                                             graph; without a display, the locomotion
+//!                                             report on walk_flat
 //! ```
 //!
 //! The binary itself lives in the root `strider` package (`src/main.rs`), which only calls
@@ -17,6 +20,7 @@
 mod alloc_count;
 mod bench;
 mod check;
+mod inspect;
 mod jsonl;
 mod native;
 mod nodes;
@@ -34,9 +38,9 @@ use std::path::PathBuf;
 use std::process::ExitCode;
 
 /// The graph `strider` runs without a subcommand, relative to the current directory.
-const DEMO_GRAPH: &str = "graphs/locomotion.ron";
+pub(crate) const DEMO_GRAPH: &str = "graphs/locomotion.ron";
 /// The skeleton the demo runs on.
-const DEMO_SKELETON: &str = "graphs/skeletons/mannequin.ron";
+pub(crate) const DEMO_SKELETON: &str = "graphs/skeletons/mannequin.ron";
 /// The scenario the demo walks through.
 const DEMO_SCENARIO: &str = "graphs/scenarios/walk_flat.ron";
 
@@ -50,9 +54,11 @@ const DEMO_SCENARIO: &str = "graphs/scenarios/walk_flat.ron";
         Skeletons are RON files (`Skeleton( ... )`) listing bones with rest transforms. \
         Rig space is +Z up, +Y forward, +X the character's left; lengths are centimetres, \
         angles degrees, time seconds.\n\n\
-        Without a subcommand, runs the demo: `strider report graphs/locomotion.ron \
-        --skeleton graphs/skeletons/mannequin.ron --scenario graphs/scenarios/walk_flat.ron \
-        --compare-hz 30,60,144,240`, with paths relative to the current directory.",
+        Without a subcommand, opens the inspector on graphs/locomotion.ron and the mannequin \
+        in a demo world (`strider inspect`); without a display it says so and runs the \
+        headless demo instead: `strider report graphs/locomotion.ron --skeleton \
+        graphs/skeletons/mannequin.ron --scenario graphs/scenarios/walk_flat.ron \
+        --compare-hz 30,60,144,240`. Paths are relative to the current directory.",
     after_help = "Exit codes: 0 success, 1 failure (invalid files, I/O), 2 bad arguments."
 )]
 struct Cli {
@@ -68,6 +74,7 @@ enum Command {
     Nodes(nodes::NodesArgs),
     Native(native::NativeArgs),
     Bench(bench::BenchArgs),
+    Inspect(inspect::InspectArgs),
 }
 
 /// Parses the command line, runs the command and returns the process exit code.
@@ -95,6 +102,7 @@ fn run_cli() -> ExitCode {
         Some(Command::Nodes(args)) => nodes::run(&args),
         Some(Command::Native(args)) => native::run(&args),
         Some(Command::Bench(args)) => bench::run(&args),
+        Some(Command::Inspect(args)) => inspect::run(&args),
         None => demo(),
     };
     match result {
@@ -107,9 +115,10 @@ fn run_cli() -> ExitCode {
     }
 }
 
-/// `strider` with no subcommand: the headless demo — the locomotion graph walking the
-/// `walk_flat` scenario, measured by the quality report — then a hint about the
-/// subcommands.
+/// `strider` with no subcommand: the inspector on the locomotion graph in the demo world;
+/// without a display (or in a build without the inspector), the headless demo — the
+/// locomotion graph walking the `walk_flat` scenario, measured by the quality report —
+/// then a hint about the subcommands.
 fn demo() -> anyhow::Result<ExitCode> {
     for file in [DEMO_GRAPH, DEMO_SKELETON, DEMO_SCENARIO] {
         if !std::path::Path::new(file).is_file() {
@@ -118,6 +127,19 @@ fn demo() -> anyhow::Result<ExitCode> {
                  repository root, or see `strider --help`"
             );
         }
+    }
+    let inspect = inspect::InspectArgs {
+        graph: PathBuf::from(DEMO_GRAPH),
+        skeleton: PathBuf::from(DEMO_SKELETON),
+        scenario: None,
+        world: None,
+        overrides: None,
+    };
+    match inspect::open(&inspect) {
+        Ok(()) => return Ok(ExitCode::SUCCESS),
+        Err(e) => output::error_line(&format!(
+            "note: {e}\nnote: running the headless demo instead\n"
+        )),
     }
     let args = report::ReportArgs {
         graph: PathBuf::from(DEMO_GRAPH),
@@ -128,6 +150,7 @@ fn demo() -> anyhow::Result<ExitCode> {
         compare_hz: vec![30, 60, 144, 240],
         plots: None,
         set: Vec::new(),
+        overrides: None,
         check: false,
     };
     let code = report::run(&args)?;

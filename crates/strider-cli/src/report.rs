@@ -4,7 +4,7 @@
 //! deviation across several rates), as a table or one JSON object, with optional plots.
 
 use crate::output;
-use crate::setup::{Assignment, apply_assignments, instantiate, load, parse_assignments};
+use crate::setup::{Assignment, apply_assignments, instantiate, load, resolve_assignments};
 use anyhow::{Context as _, anyhow, bail};
 use indicatif::{ProgressBar, ProgressStyle};
 use std::path::PathBuf;
@@ -68,6 +68,11 @@ pub(crate) struct ReportArgs {
     #[arg(long, value_name = "NAME=VALUE")]
     pub set: Vec<String>,
 
+    /// Set tunable variables from an overrides file (a RON map `{ "Name": value, ... }`, as
+    /// the inspector exports) before the first frame; `--set` wins for a variable both give.
+    #[arg(long, value_name = "FILE")]
+    pub overrides: Option<PathBuf>,
+
     /// Exit with code 1 when any target is missed.
     #[arg(long)]
     pub check: bool,
@@ -77,7 +82,7 @@ pub(crate) struct ReportArgs {
 pub(crate) fn run(args: &ReportArgs) -> anyhow::Result<ExitCode> {
     let (program, skeleton) = load(&args.graph, &args.skeleton)?;
     let program = Arc::new(program);
-    let assignments = parse_assignments(&program, &args.set)?;
+    let assignments = resolve_assignments(&program, args.overrides.as_deref(), &args.set)?;
     let scenario = Scenario::load(&args.scenario).map_err(|e| anyhow!("{e}"))?;
     let rig = ReportRig::from_skeleton(&skeleton).map_err(|e| {
         anyhow!(

@@ -1,7 +1,7 @@
 //! `strider run GRAPH --skeleton SKEL`: compile a graph, run it headless for a number of
 //! frames, optionally write every frame's pose as JSON lines, and print a summary.
 
-use crate::setup::{apply_assignments, instantiate, load, parse_assignments, skeleton_label};
+use crate::setup::{apply_assignments, instantiate, load, resolve_assignments, skeleton_label};
 use crate::{jsonl, output};
 use anyhow::{Context as _, anyhow, bail};
 use std::fmt::Write as _;
@@ -77,6 +77,11 @@ pub(crate) struct RunArgs {
     #[arg(long, value_name = "NAME=VALUE")]
     pub set: Vec<String>,
 
+    /// Set tunable variables from an overrides file (a RON map `{ "Name": value, ... }`, as
+    /// the inspector exports) before the first frame; `--set` wins for a variable both give.
+    #[arg(long, value_name = "FILE")]
+    pub overrides: Option<PathBuf>,
+
     /// Write every frame's rig-space bone transforms to this file, one JSON object per line
     /// (translations in cm, rotations as quaternions x,y,z,w).
     #[arg(long, short = 'o', value_name = "FILE.jsonl")]
@@ -100,7 +105,7 @@ fn positive_hz(text: &str) -> Result<f64, String> {
 pub(crate) fn run(args: &RunArgs) -> anyhow::Result<ExitCode> {
     let (program, skeleton) = load(&args.graph, &args.skeleton)?;
     let program = Arc::new(program);
-    let assignments = parse_assignments(&program, &args.set)?;
+    let assignments = resolve_assignments(&program, args.overrides.as_deref(), &args.set)?;
 
     let mut sim = match &args.scenario {
         Some(path) => {

@@ -94,6 +94,40 @@ pub(crate) struct Assignment {
     tunable: bool,
 }
 
+/// The values of an overrides file (`--overrides FILE`, see
+/// [`strider_host::overrides`]) followed by every `--set`, resolved before anything runs:
+/// `--set` wins over the file for a variable both give.
+///
+/// # Errors
+/// Every problem of the overrides file is printed (`path:line:col: error: ...`) before the
+/// error; as [`parse_assignments`] for `--set`.
+pub(crate) fn resolve_assignments(
+    program: &Program,
+    overrides: Option<&Path>,
+    sets: &[String],
+) -> anyhow::Result<Vec<Assignment>> {
+    let mut out = Vec::new();
+    if let Some(path) = overrides {
+        match strider_host::overrides::Overrides::load(path, program) {
+            Ok(file) => out.extend(file.entries.into_iter().map(|e| Assignment {
+                id: e.variable,
+                value: e.value,
+                tunable: true,
+            })),
+            Err(d) => {
+                output::print_diagnostics(&d);
+                bail!(
+                    "{} in the overrides file {}",
+                    output::problems(d.len().max(1)),
+                    path.display()
+                );
+            }
+        }
+    }
+    out.extend(parse_assignments(program, sets)?);
+    Ok(out)
+}
+
 /// Resolves and parses every `--set` before anything runs.
 pub(crate) fn parse_assignments(
     program: &Program,
