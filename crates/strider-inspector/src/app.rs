@@ -55,6 +55,8 @@ pub struct InspectorApp {
     /// CPU time of the previous UI frame (simulation steps, panels, tessellation), ms, as
     /// eframe measures it; `None` headless.
     ui_ms: Option<f32>,
+    /// Time of the previous [`InspectorApp::frame_ui`] (simulation steps and panels), ms.
+    panels_ms: f32,
 }
 
 impl InspectorApp {
@@ -101,6 +103,7 @@ impl InspectorApp {
             },
             feet,
             ui_ms: None,
+            panels_ms: 0.0,
         };
         // One frame so that every panel has something to show.
         app.session.step();
@@ -317,8 +320,17 @@ impl InspectorApp {
                 self.session.time()
             ));
             if let Some(ms) = self.ui_ms {
-                ui.label(RichText::new(format!("UI {ms:.1} ms")).weak())
-                    .on_hover_text("CPU time of the last UI frame");
+                ui.label(
+                    RichText::new(format!(
+                        "UI {ms:.1} ms (sim + panels {:.1} ms)",
+                        self.panels_ms
+                    ))
+                    .weak(),
+                )
+                .on_hover_text(
+                    "CPU time of the last UI frame, and of its simulation steps and panel \
+                     layout (the rest is tessellation and painting)",
+                );
             }
             ui.separator();
             let keyboard = matches!(self.session.drive(), Drive::Keyboard);
@@ -373,7 +385,9 @@ impl InspectorApp {
 impl eframe::App for InspectorApp {
     fn ui(&mut self, ui: &mut Ui, frame: &mut eframe::Frame) {
         self.ui_ms = frame.info().cpu_usage.map(|s| s * 1000.0);
+        let start = std::time::Instant::now();
         self.frame_ui(ui);
+        self.panels_ms = start.elapsed().as_secs_f32() * 1000.0;
         ui.ctx().request_repaint();
     }
 }

@@ -83,7 +83,7 @@ pub struct Session {
     skeleton: SkeletonFile,
     rig: Result<ReportRig, String>,
     instance: Instance,
-    world: World,
+    world: Arc<World>,
     world_path: Option<PathBuf>,
     mover: Mover,
     drive: Drive,
@@ -99,6 +99,8 @@ pub struct Session {
     dirty_since: Option<Instant>,
     quality: Quality,
     quality_frame: u64,
+    /// The report being computed on another thread, if any.
+    quality_job: Option<Receiver<Quality>>,
     /// Per node location (`file:line:col`), mean µs per frame over the last half second
     /// (profiling builds only).
     profile_us: Option<std::collections::HashMap<String, f64>>,
@@ -174,7 +176,7 @@ impl Session {
             skeleton,
             rig,
             instance,
-            world,
+            world: Arc::new(world),
             world_path,
             mover,
             drive,
@@ -189,6 +191,7 @@ impl Session {
             dirty_since: None,
             quality: Quality::default(),
             quality_frame: 0,
+            quality_job: None,
             profile_us: None,
         };
         session.start_profiling();
@@ -355,7 +358,7 @@ impl Session {
             }
         } else if let Some(path) = &self.world_path {
             match World::load(path) {
-                Ok(w) => self.world = w,
+                Ok(w) => self.world = Arc::new(w),
                 Err(e) => problems.push(e.to_string()),
             }
         }
@@ -375,7 +378,7 @@ impl Session {
 
     fn play_loaded_scenario(&mut self, path: PathBuf, scenario: Scenario) {
         let sim = Simulation::new(&scenario, SIM_HZ);
-        self.world = sim.world().clone();
+        self.world = Arc::new(sim.world().clone());
         self.world_path = None;
         self.drive = Drive::Scenario {
             path,
@@ -440,7 +443,7 @@ impl Session {
             component_to_world: to_world,
             pose: InputPose::Rest,
         };
-        self.instance.run_forward(&input, &self.world, true);
+        self.instance.run_forward(&input, &*self.world, true);
         self.time += f64::from(dt);
         self.recorder.push(
             crate::recording::FrameMeta {
@@ -493,13 +496,26 @@ impl Session {
         self.profile_us = Some(map);
     }
 
-    /// Recomputes the live quality report from the recorded frames of the current program.
+    /// Takes the quality report computed on another thread, if it is ready, and starts the
+    /// next one from the recorded frames of the current program (twice a second while the
+    /// simulation runs): the report costs milliseconds over 32 s of frames, too much for
+    /// one UI frame.
     pub fn update_quality(&mut self) {
         #[cfg(feature = "profile")]
         self.update_profile(self.frame - self.quality_frame);
         self.quality_frame = self.frame;
+        if let Some(job) = &self.quality_job {
+            match job.try_recv() {
+                Ok(q) => {
+                    self.quality = q;
+                    self.quality_job = None;
+                }
+                Err(std::sync::mpsc::TryRecvError::Empty) => return,
+                Err(std::sync::mpsc::TryRecvError::Disconnected) => self.quality_job = None,
+            }
+        }
         let rig = match &self.rig {
-            Ok(rig) => rig,
+            Ok(rig) => rig.clone(),
             Err(e) => {
                 self.quality = Quality {
                     unavailable: Some(e.clone()),
@@ -512,14 +528,29 @@ impl Session {
         if records.len() < 2 {
             return;
         }
-        let report = strider_host::report::analyse(rig, &records, &self.world);
-        let plants = strider_host::report::plant_spans(rig, &records, &self.world);
-        self.quality = Quality {
-            report: Some(report),
-            frames: records.len(),
-            plants,
-            unavailable: None,
-        };
+        let world = Arc::clone(&self.world);
+        let (tx, rx) = channel();
+        std::thread::spawn(move || {
+            let report = strider_host::report::analyse(&rig, &records, &*world);
+            let plants = strider_host::report::plant_spans(&rig, &records, &*world);
+            let _ = tx.send(Quality {
+                report: Some(report),
+                frames: records.len(),
+                plants,
+                unavailable: None,
+            });
+        });
+        self.quality_job = Some(rx);
+    }
+
+    /// Waits until the quality report being computed is in (for tests and tools that
+    /// step the session themselves).
+    pub fn finish_quality(&mut self) {
+        if let Some(job) = self.quality_job.take()
+            && let Ok(q) = job.recv()
+        {
+            self.quality = q;
+        }
     }
 
     /// Sets a variable by id on the live instance (slider edits).
@@ -571,7 +602,7 @@ impl Session {
         // `construction` runs again so that what it derives from tunables is current; the
         // other variables start again from their defaults (as after `Instance::rebind`).
         self.instance
-            .rebind(Arc::clone(&self.skeleton.skeleton), &self.world)
+            .rebind(Arc::clone(&self.skeleton.skeleton), &*self.world)
             .map_err(|e| e.to_string())?;
         self.start_profiling();
         Ok(o.entries.len())

@@ -591,3 +591,30 @@ fn a_reload_takes_what_the_edited_construction_gives() {
     assert_eq!(get(harness.state(), "Count"), Value::Float(30.0));
     let _ = std::fs::remove_dir_all(&dir);
 }
+
+#[test]
+fn the_quality_panel_measures_the_recorded_frames_of_the_run() {
+    let mut harness = harness(options(&PathBuf::from(GRAPHS).join("locomotion.ron")));
+    // One frame when the app opens, 299 more: 5 s walking at 150 cm/s.
+    walk(&mut harness, Vec2::Y, 150.0, 299);
+    {
+        let session = &mut harness.state_mut().session;
+        session.finish_quality();
+        session.update_quality();
+        session.finish_quality();
+        let q = session.quality();
+        let report = q.report.as_ref().expect("a report");
+        assert_eq!((q.frames, report.frames), (300, 300));
+        assert!(
+            report.steps >= 4,
+            "5 s of walking takes steps: {}",
+            report.steps
+        );
+    }
+    harness.run_steps(2);
+    harness.get_by_label_contains("(300 frames) of the current program");
+    assert!(
+        harness.query_all_by_label("pass").count() + harness.query_all_by_label("FAIL").count()
+            >= 7
+    );
+}
