@@ -359,11 +359,14 @@ impl InspectorApp {
             ui.checkbox(&mut self.viewport.show_feet, "feet");
             let problems = self.session.problems().len();
             if problems > 0 {
+                let running = if self.session.graph_loaded() {
+                    "running the last good program"
+                } else {
+                    "nothing runs until the graph loads"
+                };
                 ui.label(
-                    RichText::new(format!(
-                        "⚠ {problems} problem(s): running the last good program"
-                    ))
-                    .color(Color32::from_rgb(255, 140, 110)),
+                    RichText::new(format!("⚠ {problems} problem(s): {running}"))
+                        .color(Color32::from_rgb(255, 140, 110)),
                 );
             }
         });

@@ -10,9 +10,14 @@ pub fn show(ui: &mut Ui, session: &Session) {
     if problems.is_empty() {
         ui.label(RichText::new("✔ no problems").color(Color32::from_rgb(120, 220, 120)));
     } else {
+        let running = if session.graph_loaded() {
+            "the last good program keeps running"
+        } else {
+            "nothing runs until the graph loads"
+        };
         ui.label(
             RichText::new(format!(
-                "{} problem{} — the last good program keeps running",
+                "{} problem{} — {running}",
                 problems.len(),
                 if problems.len() == 1 { "" } else { "s" }
             ))

@@ -62,8 +62,9 @@ pub enum InspectError {
          GRAPH --skeleton SKEL --scenario SCEN` to measure it."
     )]
     NoDisplay(String),
-    /// The files could not be loaded: every problem, one per line
-    /// (`path:line:col: error: ...`).
+    /// The skeleton, scenario, world or overrides file could not be loaded: every problem,
+    /// one per line (`path:line:col: error: ...`). A graph with problems still opens (see
+    /// [`Session::open`]).
     #[error("{0}")]
     Load(String),
 }
@@ -72,7 +73,8 @@ pub enum InspectError {
 ///
 /// # Errors
 /// [`InspectError::NoDisplay`] without a display (the message names the headless
-/// commands), [`InspectError::Load`] when the files do not load.
+/// commands), [`InspectError::Load`] when the skeleton, scenario, world or overrides file
+/// does not load.
 pub fn run(options: InspectOptions) -> Result<(), InspectError> {
     let has_display = ["DISPLAY", "WAYLAND_DISPLAY"]
         .iter()

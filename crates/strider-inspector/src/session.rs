@@ -34,6 +34,9 @@ pub const RECORD_FRAMES: usize = 32 * SIM_HZ as usize;
 /// several writes reload once.
 pub const RELOAD_QUIET: Duration = Duration::from_millis(150);
 
+/// What runs while the graph given has never loaded: nothing (the rest pose).
+const EMPTY_GRAPH: &str = "Graph(version: 1, name: \"(not loaded)\", events: { forward: [] })";
+
 /// The world used when neither a scenario nor a world file is given: ground, a box, a
 /// ramp, stairs, a platform and a patch of uneven ground around the start.
 pub const DEMO_WORLD: &str = include_str!("../assets/demo_world.ron");
@@ -95,6 +98,8 @@ pub struct Session {
     recorder: Recorder,
     problems: Vec<String>,
     status: String,
+    /// Whether the graph given ever loaded (else an empty graph runs in its place).
+    graph_loaded: bool,
     watch: Option<Watch>,
     dirty_since: Option<Instant>,
     quality: Quality,
@@ -118,14 +123,29 @@ impl Session {
     /// Loads the graph, skeleton, world or scenario and overrides of `options`, creates the
     /// instance and starts watching the files.
     ///
+    /// A graph with problems still opens: an empty graph runs in its place (the character
+    /// stands in its rest pose), the problems are listed, and the graph loads as soon as
+    /// its file is fixed.
+    ///
     /// # Errors
     /// [`InspectError::Load`] with every problem (`path:line:col: error: ...`) when the
-    /// first load fails: there is no last good program to run yet.
+    /// skeleton, the scenario or world, or the overrides file does not load.
     pub fn open(options: InspectOptions) -> Result<Session, InspectError> {
         let fail = |lines: Vec<String>| InspectError::Load(lines.join("\n"));
-        let loaded =
-            strider_graph::load_graph(&options.graph).map_err(|d| fail(diagnostics_text(&d)))?;
-        let program = strider_compiler::compile(&loaded).map_err(|d| fail(diagnostics_text(&d)))?;
+        let compiled = strider_graph::load_graph(&options.graph).and_then(|loaded| {
+            let program = strider_compiler::compile(&loaded)?;
+            Ok((loaded, program))
+        });
+        let (loaded, program, graph_problems) = match compiled {
+            Ok((loaded, program)) => (loaded, program, Vec::new()),
+            Err(d) => {
+                let loaded = strider_graph::load_graph_str(&options.graph, EMPTY_GRAPH.to_string())
+                    .map_err(|e| fail(diagnostics_text(&e)))?;
+                let program =
+                    strider_compiler::compile(&loaded).map_err(|e| fail(diagnostics_text(&e)))?;
+                (loaded, program, diagnostics_text(&d))
+            }
+        };
         let skeleton = strider_graph::load_skeleton(&options.skeleton)
             .map_err(|d| fail(diagnostics_text(&d)))?;
         let program = Arc::new(program);
@@ -185,6 +205,7 @@ impl Session {
             time: 0.0,
             generation: 0,
             recorder,
+            graph_loaded: graph_problems.is_empty(),
             problems: Vec::new(),
             status: String::new(),
             watch: None,
@@ -195,7 +216,15 @@ impl Session {
             profile_us: None,
         };
         session.start_profiling();
-        session.status = format!("loaded {}", session.options.graph.display());
+        session.status = if graph_problems.is_empty() {
+            format!("loaded {}", session.options.graph.display())
+        } else {
+            format!(
+                "{} has problems: nothing runs until it is fixed",
+                session.options.graph.display()
+            )
+        };
+        session.problems = graph_problems;
         session.watch = session.start_watch();
         Ok(session)
     }
@@ -329,6 +358,7 @@ impl Session {
         if !same_program {
             self.generation += 1;
         }
+        self.graph_loaded = true;
         self.status = format!(
             "reloaded {} at frame {}",
             self.options.graph.display(),
@@ -340,10 +370,17 @@ impl Session {
     }
 
     fn reload_failed(&mut self, problems: Vec<String>) -> bool {
-        self.status = format!(
-            "reload failed at frame {}: running the last good program",
-            self.frame
-        );
+        self.status = if self.graph_loaded {
+            format!(
+                "reload failed at frame {}: running the last good program",
+                self.frame
+            )
+        } else {
+            format!(
+                "{} has problems: nothing runs until it is fixed",
+                self.options.graph.display()
+            )
+        };
         self.problems = problems;
         false
     }
@@ -672,6 +709,12 @@ impl Session {
     #[must_use]
     pub fn generation(&self) -> u32 {
         self.generation
+    }
+
+    /// Whether the graph given ever loaded; until it does, an empty graph runs in its place.
+    #[must_use]
+    pub fn graph_loaded(&self) -> bool {
+        self.graph_loaded
     }
 
     /// Problems of the last reload (empty when it succeeded).

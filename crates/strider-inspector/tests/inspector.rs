@@ -618,3 +618,42 @@ fn the_quality_panel_measures_the_recorded_frames_of_the_run() {
             >= 7
     );
 }
+
+#[test]
+fn a_graph_broken_at_launch_opens_with_its_problems_and_loads_once_fixed() {
+    let dir = scratch_dir("launch");
+    let graph = dir.join("bob.ron");
+    let text = std::fs::read_to_string("tests/data/bob.ron").expect("read");
+    // `Sin` misspelled on line 18 (`"sine":   Sin(value: "phase"),`).
+    let broken = text.replacen("Sin(value", "Sinn(value", 1);
+    let line = text[..text.find("Sin(value").expect("the sine node")]
+        .lines()
+        .count();
+    std::fs::write(&graph, &broken).expect("write broken");
+    let mut harness = harness(options(&graph));
+    {
+        let session = &harness.state().session;
+        assert!(!session.graph_loaded());
+        let problems = session.problems().join("\n");
+        assert!(problems.contains(&format!("bob.ron:{line}:")), "{problems}");
+    }
+    harness.run_steps(2);
+    // Said in the top bar and in the diagnostics panel.
+    assert_eq!(
+        harness
+            .query_all_by_label_contains("nothing runs until the graph loads")
+            .count(),
+        2
+    );
+    std::fs::write(&graph, &text).expect("fix");
+    assert!(
+        wait_until(&mut harness, Duration::from_secs(10), |app| app
+            .session
+            .graph_loaded()),
+        "the fixed graph loads"
+    );
+    let app = harness.state();
+    assert!(app.session.problems().is_empty());
+    assert_eq!(app.session.program().name(), "bob");
+    let _ = std::fs::remove_dir_all(&dir);
+}
