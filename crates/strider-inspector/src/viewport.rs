@@ -51,6 +51,8 @@ pub struct ViewportState {
     /// Where the pointer hits the ground plane at the character's height (world cm), when
     /// over the view; used to aim in strafe mode.
     pub pointer_ground: Option<Vec3>,
+    /// Where the view was drawn last (screen points).
+    pub rect: Rect,
 }
 
 impl Default for ViewportState {
@@ -69,6 +71,7 @@ impl Default for ViewportState {
             ground_key: None,
             scratch: Vec::new(),
             pointer_ground: None,
+            rect: Rect::NOTHING,
         }
     }
 }
@@ -370,6 +373,7 @@ fn world_triangles(world: &World, out: &mut Vec<Tri>) {
 /// (drag: orbit, right or middle drag: pan, scroll: zoom). Returns the view's response.
 pub fn show(ui: &mut Ui, state: &mut ViewportState, scene: &Scene<'_>) -> egui::Response {
     let (rect, response) = ui.allocate_exact_size(ui.available_size(), Sense::click_and_drag());
+    state.rect = rect;
     let to_world = scene.frame.meta.to_world;
     if state.follow {
         let at = to_world.translation + Vec3::Z * 90.0;

@@ -657,3 +657,33 @@ fn a_graph_broken_at_launch_opens_with_its_problems_and_loads_once_fixed() {
     assert_eq!(app.session.program().name(), "bob");
     let _ = std::fs::remove_dir_all(&dir);
 }
+
+#[test]
+fn strafing_faces_the_point_under_the_mouse() {
+    let mut harness = harness(options(&PathBuf::from(GRAPHS).join("locomotion.ron")));
+    harness.state_mut().playback.playing = true;
+    harness.key_press(Key::F);
+    harness.run_steps(2);
+    assert!(harness.state().controls.strafe, "F switches to strafing");
+    // Aim at the ground on the left of the view: seen from behind (the camera looks along
+    // +Y), that is the character's left, +X.
+    let rect = harness.state().viewport.rect;
+    harness.hover_at(rect.center() + egui::vec2(-rect.width() * 0.4, rect.height() * 0.1));
+    harness.key_down(Key::W);
+    harness.run_steps(90);
+    harness.key_up(Key::W);
+    let app = harness.state();
+    let yaw = app.controls.look_yaw;
+    // Yaw 0 faces +Y and positive yaw turns counter-clockwise, towards −X: +X is −90°;
+    // the point is left of the view and in front of the character, so between −90° and 0°.
+    assert!((-90.0..0.0).contains(&yaw), "look yaw {yaw}");
+    let facing = app.session.component_to_world().rotation * glam::Vec3::Y;
+    let facing_yaw = strider_host::world::direction_yaw(facing.x, facing.y);
+    assert!(
+        (facing_yaw - yaw).abs() < 5.0,
+        "faces {facing_yaw}, aims {yaw}"
+    );
+    // W still walks along the camera's forward (+Y) while facing the aim.
+    let p = app.session.component_to_world().translation;
+    assert!(p.y > 50.0, "{p:?}");
+}
