@@ -112,6 +112,35 @@ fn selecting_a_node_shows_its_live_pin_values() {
     // Its output is (0, 0, SplineStartClearance) with the file's 3 cm.
     harness.get_by_label("out result");
     harness.get_by_label("(0.0, 0.0, 3.0)");
+
+    // Hovering the node's output pin shows the same value in a tooltip.
+    let to_screen = |harness: &Harness<'_, InspectorApp>, p: egui::Pos2| {
+        harness
+            .ctx
+            .layer_transform_to_global(layer)
+            .map_or(p, |t| t * p)
+    };
+    let pin = harness
+        .get_all_by_label("result")
+        .map(|n| n.rect())
+        // In the node: below its title, within a node's width to its right.
+        .filter(|r| {
+            r.center().y > title.y && r.center().x > title.x && r.center().x < title.x + 250.0
+        })
+        .min_by(|a, b| (a.center().y - title.y).total_cmp(&(b.center().y - title.y)))
+        .expect("the output pin's label");
+    let at = to_screen(&harness, pin.center());
+    // Moved onto the pin, then resting there.
+    harness.hover_at(at - egui::vec2(1.0, 0.0));
+    harness.run_steps(1);
+    harness.hover_at(at);
+    // Tooltips wait until the pointer has rested a moment (egui's tooltip delay).
+    harness.run_steps(60);
+    assert_eq!(
+        harness.query_all_by_label("(0.0, 0.0, 3.0)").count(),
+        2,
+        "the node panel and the pin's tooltip"
+    );
 }
 
 /// The whole window on a small frozen graph (tests/data/bob.ron), after 0.25 s: a node
