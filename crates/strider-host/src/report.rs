@@ -346,6 +346,10 @@ pub struct Report {
     pub skate_cm_per_stance_max: f32,
     /// Mean skate over stances, cm.
     pub skate_cm_per_stance_mean: f32,
+    /// The foot of the stance with the largest skate (`None` without stances).
+    pub skate_foot: Option<String>,
+    /// When that stance starts, s (`None` without stances).
+    pub skate_time_s: Option<f64>,
     /// Deepest contact below the ground, cm.
     pub penetration_cm_max: f32,
     /// Highest lowest-contact above the ground after standing still > 1 s, cm.
@@ -513,6 +517,14 @@ impl Report {
             Some((TARGET_SKATE_CM, "cm")),
             f64::from(self.skate_cm_per_stance_max),
         );
+        if let (Some(foot), Some(time)) = (&self.skate_foot, self.skate_time_s) {
+            push(
+                "  largest at",
+                format!("{foot}, stance from {time:.2} s"),
+                None,
+                0.0,
+            );
+        }
         push(
             "skate per stance, mean",
             cm(self.skate_cm_per_stance_mean),
@@ -830,6 +842,13 @@ pub fn analyse(rig: &ReportRig, frames: &[FrameRecord], ground: &dyn Ground) -> 
     };
 
     let skate_max = spans.iter().map(|s| s.skate_cm).fold(0.0f32, f32::max);
+    // The first stance with the largest skate.
+    let worst = spans
+        .iter()
+        .fold(None::<&PlantSpan>, |w, s| match w {
+            Some(w) if w.skate_cm >= s.skate_cm => Some(w),
+            _ => Some(s),
+        });
     let skate_mean = if spans.is_empty() {
         0.0
     } else {
@@ -1011,6 +1030,8 @@ pub fn analyse(rig: &ReportRig, frames: &[FrameRecord], ground: &dyn Ground) -> 
         hz,
         skate_cm_per_stance_max: skate_max,
         skate_cm_per_stance_mean: skate_mean,
+        skate_foot: worst.and_then(|w| rig.legs.get(w.leg).map(|l| l.name.clone())),
+        skate_time_s: worst.and_then(|w| frames.get(w.start).map(|f| f.time)),
         penetration_cm_max: penetration,
         idle_float_cm_max: idle_float,
         crossing_frames: crossing,

@@ -228,6 +228,9 @@ fn sliding_stance_skates_by_the_slide() {
         near(rep.skate_cm_per_stance_mean, 2.0 / 3.0, 1e-4),
         "{rep:?}"
     );
+    // The sliding stance is the left foot's first, from frame 0.
+    assert_eq!(rep.skate_foot.as_deref(), Some("foot_l"));
+    assert_eq!(rep.skate_time_s, Some(frames[0].time));
     assert_eq!(rep.steps, 1);
 }
 
@@ -561,6 +564,8 @@ fn json_has_exactly_the_documented_keys_and_the_table_marks_failures() {
         "hz",
         "skate_cm_per_stance_max",
         "skate_cm_per_stance_mean",
+        "skate_foot",
+        "skate_time_s",
         "penetration_cm_max",
         "idle_float_cm_max",
         "crossing_frames",
