@@ -11,10 +11,12 @@ echo "== cargo doc"
 RUSTDOCFLAGS="-D warnings" cargo doc --workspace --no-deps --locked --quiet
 echo "== cargo test"
 cargo test --workspace --locked
-# The executor's `profile` feature is off in the builds above; lint and test it on its own
-# (docs/performance.md). Benches are compiled (not run) by clippy --all-targets.
+# The executor's `profile` feature (and the inspector's per-node times built on it) is off
+# in the builds above; lint and test it on its own (docs/performance.md). Benches are
+# compiled (not run) by clippy --all-targets.
 echo "== profile feature: clippy -D warnings, tests"
-cargo clippy -p strider-vm -p strider --all-targets --no-deps --locked \
-    --features strider-vm/profile,strider/profile -- -D warnings
-cargo test -p strider-vm --features profile --locked
+cargo clippy -p strider-vm -p strider -p strider-inspector --all-targets --no-deps --locked \
+    --features strider-vm/profile,strider/profile,strider-inspector/profile -- -D warnings
+cargo test -p strider-vm -p strider-inspector --locked \
+    --features strider-vm/profile,strider-inspector/profile
 cargo test -p strider --features profile --locked --test profile --test allocations

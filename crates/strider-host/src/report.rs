@@ -843,12 +843,10 @@ pub fn analyse(rig: &ReportRig, frames: &[FrameRecord], ground: &dyn Ground) -> 
 
     let skate_max = spans.iter().map(|s| s.skate_cm).fold(0.0f32, f32::max);
     // The first stance with the largest skate.
-    let worst = spans
-        .iter()
-        .fold(None::<&PlantSpan>, |w, s| match w {
-            Some(w) if w.skate_cm >= s.skate_cm => Some(w),
-            _ => Some(s),
-        });
+    let worst = spans.iter().fold(None::<&PlantSpan>, |w, s| match w {
+        Some(w) if w.skate_cm >= s.skate_cm => Some(w),
+        _ => Some(s),
+    });
     let skate_mean = if spans.is_empty() {
         0.0
     } else {
