@@ -2,81 +2,26 @@
 //! "Once arrays and the debug buffer have reached their working size (after the first
 //! frames), run_forward performs no heap allocation").
 //!
-//! A counting global allocator wraps the system allocator. It counts only while the
-//! current thread has switched counting on, so allocations the test harness makes on other
+//! The `strider` binary's counting global allocator is installed here too; it counts only
+//! the allocations of the thread that asked, so allocations the test harness makes on other
 //! threads (output capture, other tests) are not counted.
 
-// The counting allocator below is the only unsafe code in this file: implementing
-// `GlobalAlloc` is an `unsafe impl`, and forwarding to `System` calls its unsafe methods
-// with the caller's own (already validated) layout and pointer.
-#![allow(unsafe_code)]
-
-use std::alloc::{GlobalAlloc, Layout, System};
-use std::cell::Cell;
 use std::path::Path;
-use std::sync::atomic::{AtomicUsize, Ordering};
 use std::sync::{Arc, Mutex};
 use strider_core::{EmptyWorld, Transform, Vec3};
 use strider_nodes::Value;
 use strider_vm::{FrameInput, InputPose, Instance, Program};
 
-struct CountingAllocator;
-
-static ALLOCATIONS: AtomicUsize = AtomicUsize::new(0);
-
-thread_local! {
-    // `const` initialisation and no destructor: reading it never allocates.
-    static COUNTING: Cell<bool> = const { Cell::new(false) };
-}
-
-fn counting() -> bool {
-    COUNTING.try_with(Cell::get).unwrap_or(false)
-}
-
-unsafe impl GlobalAlloc for CountingAllocator {
-    unsafe fn alloc(&self, layout: Layout) -> *mut u8 {
-        if counting() {
-            ALLOCATIONS.fetch_add(1, Ordering::Relaxed);
-        }
-        // SAFETY: forwarded unchanged from the caller, who upholds `alloc`'s contract.
-        unsafe { System.alloc(layout) }
-    }
-
-    unsafe fn alloc_zeroed(&self, layout: Layout) -> *mut u8 {
-        if counting() {
-            ALLOCATIONS.fetch_add(1, Ordering::Relaxed);
-        }
-        // SAFETY: as above.
-        unsafe { System.alloc_zeroed(layout) }
-    }
-
-    unsafe fn realloc(&self, ptr: *mut u8, layout: Layout, new_size: usize) -> *mut u8 {
-        if counting() {
-            ALLOCATIONS.fetch_add(1, Ordering::Relaxed);
-        }
-        // SAFETY: as above; `ptr` was allocated by this allocator, i.e. by `System`.
-        unsafe { System.realloc(ptr, layout, new_size) }
-    }
-
-    unsafe fn dealloc(&self, ptr: *mut u8, layout: Layout) {
-        // SAFETY: as above.
-        unsafe { System.dealloc(ptr, layout) }
-    }
-}
-
 #[global_allocator]
-static GLOBAL: CountingAllocator = CountingAllocator;
+static GLOBAL: strider_cli::CountingAllocator = strider_cli::CountingAllocator;
 
 /// Tests in this file measure one at a time.
 static SERIAL: Mutex<()> = Mutex::new(());
 
 /// Heap allocations made by the current thread while running `f`.
-fn allocations_in(f: impl FnOnce()) -> usize {
-    let before = ALLOCATIONS.load(Ordering::SeqCst);
-    COUNTING.with(|c| c.set(true));
-    f();
-    COUNTING.with(|c| c.set(false));
-    ALLOCATIONS.load(Ordering::SeqCst) - before
+fn allocations_in(f: impl FnOnce()) -> u64 {
+    let ((), counted) = strider_cli::allocations_on_this_thread(f);
+    counted.expect("the counting allocator is installed")
 }
 
 fn compile_file(path: &str) -> Arc<Program> {
@@ -100,7 +45,7 @@ fn instance(path: &str) -> Instance {
 }
 
 /// Runs 10 warm-up frames, then counts the allocations of 100 more.
-fn steady_state_allocations(inst: &mut Instance, debug: bool) -> usize {
+fn steady_state_allocations(inst: &mut Instance, debug: bool) -> u64 {
     let input = FrameInput {
         dt: 1.0 / 60.0,
         ..Default::default()

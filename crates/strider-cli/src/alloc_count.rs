@@ -1,9 +1,13 @@
-//! A counting global allocator, so `strider bench` can report heap allocations per frame.
+//! A counting global allocator, so `strider bench` can report heap allocations per frame
+//! and tests can check that a frame allocates nothing.
 //!
 //! The `strider` binary installs [`CountingAllocator`] as its global allocator
-//! (`src/main.rs`). Counting is off except while `count` runs its closure; it then counts
-//! every allocation and reallocation on every thread (the benchmark's worker threads
-//! included). Off, the cost is one relaxed atomic load per allocation.
+//! (`src/main.rs`), as does the allocation test (`tests/allocations.rs`). Counting is off
+//! except while a counting function runs its closure: `count` counts every allocation and
+//! reallocation on every thread (the benchmark's worker threads included);
+//! [`allocations_on_this_thread`] only the calling thread's, so a test harness running
+//! other tests meanwhile does not disturb it. Off, the cost is two relaxed atomic loads per
+//! allocation.
 
 // Implementing `GlobalAlloc` is an `unsafe impl`; each method only forwards the caller's
 // arguments, unchanged, to the system allocator, whose contract the caller upholds. No
@@ -12,7 +16,8 @@
 #![allow(unsafe_code)]
 
 use std::alloc::{GlobalAlloc, Layout, System};
-use std::sync::atomic::{AtomicBool, AtomicU64, Ordering};
+use std::cell::Cell;
+use std::sync::atomic::{AtomicBool, AtomicU64, AtomicUsize, Ordering};
 
 /// The system allocator, counting allocations while `strider bench` times frames. Install
 /// it as the binary's `#[global_allocator]`.
@@ -22,12 +27,24 @@ static COUNTING: AtomicBool = AtomicBool::new(false);
 static ALLOCATIONS: AtomicU64 = AtomicU64::new(0);
 /// Set by any allocation that went through [`CountingAllocator`]: whether it is installed.
 static SEEN: AtomicBool = AtomicBool::new(false);
+/// How many threads are inside [`allocations_on_this_thread`].
+static THREADS_COUNTING: AtomicUsize = AtomicUsize::new(0);
+
+thread_local! {
+    // This thread's count while it counts its own allocations. `const` initialisation and no
+    // destructor: touching it never allocates.
+    static THREAD_ALLOCATIONS: Cell<Option<u64>> = const { Cell::new(None) };
+}
 
 #[inline]
 fn note() {
     SEEN.store(true, Ordering::Relaxed);
     if COUNTING.load(Ordering::Relaxed) {
         ALLOCATIONS.fetch_add(1, Ordering::Relaxed);
+    }
+    if THREADS_COUNTING.load(Ordering::Relaxed) > 0 {
+        // Fails only while the thread is being torn down: nothing to count then.
+        let _ = THREAD_ALLOCATIONS.try_with(|c| c.set(c.get().map(|n| n + 1)));
     }
 }
 
@@ -67,5 +84,18 @@ pub(crate) fn count<T>(f: impl FnOnce() -> T) -> (T, Option<u64>) {
     let out = f();
     COUNTING.store(false, Ordering::SeqCst);
     let counted = ALLOCATIONS.load(Ordering::SeqCst) - before;
+    (out, SEEN.load(Ordering::SeqCst).then_some(counted))
+}
+
+/// Runs `f` and returns its result with the number of heap allocations (and reallocations)
+/// the calling thread made meanwhile (allocations on other threads are not counted), or
+/// `None` for the count when [`CountingAllocator`] is not the global allocator.
+pub fn allocations_on_this_thread<T>(f: impl FnOnce() -> T) -> (T, Option<u64>) {
+    drop(std::hint::black_box(Box::new(0u8)));
+    THREAD_ALLOCATIONS.with(|c| c.set(Some(0)));
+    THREADS_COUNTING.fetch_add(1, Ordering::SeqCst);
+    let out = f();
+    THREADS_COUNTING.fetch_sub(1, Ordering::SeqCst);
+    let counted = THREAD_ALLOCATIONS.with(|c| c.replace(None)).unwrap_or(0);
     (out, SEEN.load(Ordering::SeqCst).then_some(counted))
 }

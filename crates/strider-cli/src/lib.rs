@@ -30,7 +30,7 @@ mod run;
 mod setup;
 mod value;
 
-pub use alloc_count::CountingAllocator;
+pub use alloc_count::{CountingAllocator, allocations_on_this_thread};
 pub use native::generate as native_source;
 
 use clap::{Parser, Subcommand};

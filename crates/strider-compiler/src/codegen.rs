@@ -16,7 +16,7 @@
 //! [`strider_vm::InstrOrigin`]) in the program's side table, for profiling and tools.
 
 use crate::check::{Arg, Body, CStep, Checked, LoopPart, NodeKind, Src, VarRef};
-use crate::reads::{ReadsTable, Writes, pulled_by, writes_pose};
+use crate::reads::{ReadsTable, Writes, pulled_by};
 use std::collections::{HashMap, HashSet};
 use strider_graph::{EventKind, FunctionDecl, LoadedGraph, NodeDecl, Step};
 use strider_nodes::{Elem, Op, Value, ValueType, registry};
@@ -554,68 +554,25 @@ impl Gen<'_> {
                 self.pure_closure(frame, n);
             }
         }
-        let kept: Vec<usize> = self.avail[frame].iter().copied().collect();
-        for n in kept {
-            let r = self.reads.node(checked, function, n);
-            if writes.touch(&r) {
-                self.avail[frame].remove(&n);
-            }
-        }
+        self.forget(frame, &writes);
         self.avail[frame].clone()
     }
 
-    /// Forgets the kept values of `frame` that read the outputs of exec node `n`, which
-    /// just ran.
-    fn invalidate_readers_of(&mut self, frame: usize, n: usize) {
-        let body = self.frames[frame].body;
-        let kept: Vec<usize> = self.avail[frame].iter().copied().collect();
-        for m in kept {
-            if self
-                .reads
-                .node(self.checked, body, m)
-                .execs
-                .binary_search(&n)
-                .is_ok()
-            {
-                self.avail[frame].remove(&m);
-            }
-        }
+    /// Forgets the kept values of `frame` that `writes` may change.
+    fn forget(&mut self, frame: usize, writes: &Writes) {
+        let (checked, body) = (self.checked, self.frames[frame].body);
+        let reads = &mut self.reads;
+        self.avail[frame].retain(|&n| !writes.touch(&reads.node(checked, body, n)));
     }
 
-    /// Forgets the kept values of `frame` that depend on what a step just wrote: graph
-    /// variable or local `var`, and/or the pose.
-    fn invalidate(&mut self, frame: usize, var: Option<VarRef>, pose: bool) {
-        let body = self.frames[frame].body;
-        let kept: Vec<usize> = self.avail[frame].iter().copied().collect();
-        for n in kept {
-            let r = self.reads.node(self.checked, body, n);
-            let stale = (pose && r.pose)
-                || match var {
-                    Some(VarRef::Global(g)) => r.globals.binary_search(&g).is_ok(),
-                    Some(VarRef::Local(l)) => r.locals.binary_search(&l).is_ok(),
-                    None => false,
-                };
-            if stale {
-                self.avail[frame].remove(&n);
-            }
-        }
-    }
-
-    /// Forgets the kept values of `frame` that a mutating node's run may have changed:
-    /// arrays it edits in place (variables, or a pure node's output: then everything), and
-    /// the pose if it may move bones.
-    fn invalidate_after(&mut self, frame: usize, op: Op, inputs: &[Arg]) {
-        for a in inputs {
-            match a.src {
-                Src::Global(g) => self.invalidate(frame, Some(VarRef::Global(g)), false),
-                Src::Local(l) => self.invalidate(frame, Some(VarRef::Local(l)), false),
-                Src::Node { .. } if a.ty.elem().is_some() => self.avail[frame].clear(),
-                _ => {}
-            }
-        }
-        if writes_pose(op) {
-            self.invalidate(frame, None, true);
-        }
+    /// Forgets the kept values of `frame` that `step`, just emitted, may have changed: the
+    /// variable a `Set` wrote; for an exec node its outputs, the variables and arrays it
+    /// edits in place, the pose if it may move bones, and after an impure call any graph
+    /// variable and the pose.
+    fn forget_written_by(&mut self, frame: usize, step: &CStep) {
+        let mut writes = Writes::default();
+        writes.collect(self.body(frame), std::slice::from_ref(step));
+        self.forget(frame, &writes);
     }
 
     /// Emits node `n` of `frame` itself; the pure nodes it reads must already be emitted
@@ -665,17 +622,6 @@ impl Gen<'_> {
                 for r in rets {
                     self.pb.patch(r, 0, end);
                 }
-                if !node.pure {
-                    // It may have set any graph variable and moved any bone.
-                    let kept: Vec<usize> = self.avail[frame].iter().copied().collect();
-                    let body = self.frames[frame].body;
-                    for m in kept {
-                        let r = self.reads.node(self.checked, body, m);
-                        if r.pose || !r.globals.is_empty() {
-                            self.avail[frame].remove(&m);
-                        }
-                    }
-                }
             }
         }
     }
@@ -708,16 +654,11 @@ impl Gen<'_> {
                     VarRef::Local(i) => self.frames[frame].locals[*i],
                 };
                 self.pb.emit(Op::Copy(*ty), &[from, to]);
-                self.invalidate(frame, Some(*target), false);
+                self.forget_written_by(frame, step);
             }
             CStep::Exec(n) => {
                 self.node(frame, *n);
-                self.invalidate_readers_of(frame, *n);
-                let node = &self.body(frame).nodes[*n];
-                if let NodeKind::Builtin(op) = node.kind {
-                    let inputs = node.inputs.clone();
-                    self.invalidate_after(frame, op, &inputs);
-                }
+                self.forget_written_by(frame, step);
             }
             CStep::Branch {
                 condition,

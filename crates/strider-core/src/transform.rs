@@ -77,12 +77,14 @@ impl Transform {
 
     /// Applies the transform to a point: `t + r · (s ⊙ p)`.
     #[must_use]
+    #[inline]
     pub fn transform_point(&self, point: Vec3) -> Vec3 {
         self.translation + self.rotation * (self.scale * point)
     }
 
     /// Applies rotation and scale to a direction (no translation): `r · (s ⊙ v)`.
     #[must_use]
+    #[inline]
     pub fn transform_vector(&self, vector: Vec3) -> Vec3 {
         self.rotation * (self.scale * vector)
     }

@@ -452,6 +452,10 @@ pub(crate) struct SweepHit {
 pub struct World {
     desc: WorldDesc,
     shapes: Vec<(Pose, SharedShape)>,
+    /// For each of `shapes`, its plane (a point on it and the unit outward normal, world
+    /// space) when it is a half-space: sweeps of a ball against it take the closed form
+    /// without asking the shape what it is.
+    planes: Vec<Option<(Vec3, Vec3)>>,
 }
 
 impl fmt::Debug for World {
@@ -466,10 +470,7 @@ impl fmt::Debug for World {
 impl Default for World {
     /// An empty world: every trace misses.
     fn default() -> Self {
-        Self {
-            desc: WorldDesc::default(),
-            shapes: Vec::new(),
-        }
+        Self::with_shapes(WorldDesc::default(), Vec::new())
     }
 }
 
@@ -513,10 +514,24 @@ impl World {
                 message,
             })?;
         }
-        Ok(World {
-            desc: desc.clone(),
+        Ok(World::with_shapes(desc.clone(), shapes))
+    }
+
+    /// A world of built shapes and the description they came from.
+    fn with_shapes(desc: WorldDesc, shapes: Vec<(Pose, SharedShape)>) -> World {
+        let planes = shapes
+            .iter()
+            .map(|(pose, shape)| {
+                let half_space = shape.as_halfspace()?;
+                let normal = (pose.rotation * half_space.normal).normalize_or_zero();
+                (normal != Vec3::ZERO).then_some((pose.translation, normal))
+            })
+            .collect();
+        World {
+            desc,
             shapes,
-        })
+            planes,
+        }
     }
 
     /// Builds a world, leaving out any shape that [`ShapeDesc::validate`] rejects or that
@@ -537,10 +552,7 @@ impl World {
                 }
             }
         }
-        World {
-            desc: WorldDesc { shapes: kept },
-            shapes,
-        }
+        World::with_shapes(WorldDesc { shapes: kept }, shapes)
     }
 
     /// Reads a world description file (RON, see the module docs) and builds it.
@@ -615,28 +627,27 @@ impl World {
             stop_at_penetration,
             compute_impact_geometry_on_penetration: true,
         };
+        let ball_radius = if skin == 0.0 {
+            shape.as_ball().map(|ball| ball.radius)
+        } else {
+            None
+        };
         let mut best: Option<SweepHit> = None;
-        for (pose2, shape2) in &self.shapes {
-            if skin == 0.0
-                && let (Some(ball), Some(half_space)) = (shape.as_ball(), shape2.as_halfspace())
-            {
-                let plane_normal = pose2.rotation * half_space.normal;
+        for ((pose2, shape2), plane) in self.shapes.iter().zip(&self.planes) {
+            if let (Some(radius), Some((point, normal))) = (ball_radius, *plane) {
                 let hit = ball_half_space_sweep(
                     start,
                     dir,
                     length,
-                    ball.radius,
-                    pose2.translation,
-                    plane_normal,
+                    radius,
+                    point,
+                    normal,
                     stop_at_penetration,
                 );
                 if let Some(distance) = hit
                     && best.is_none_or(|b| distance < b.distance)
                 {
-                    best = Some(SweepHit {
-                        distance,
-                        normal: plane_normal.normalize_or(-dir),
-                    });
+                    best = Some(SweepHit { distance, normal });
                 }
                 continue;
             }

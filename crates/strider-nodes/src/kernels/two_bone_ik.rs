@@ -421,8 +421,20 @@ fn bone_rotation(
     let Some(want) = normal.cross(dir).try_normalize() else {
         return swung;
     };
-    let angle = have.cross(want).dot(dir).atan2(have.dot(want));
-    unit_q(Quat::from_axis_angle(dir, angle) * swung)
+    unit_q(twist_between(have, want, dir) * swung)
+}
+
+/// The rotation about the unit `axis` that turns the unit `from` onto the unit `to` (both
+/// perpendicular to `axis`), without trigonometry. With `c = from·to` and
+/// `s = (from × to)·axis` (cosine and sine of the angle θ), the half-angle quaternion
+/// `(axis·sin θ/2, cos θ/2)` is proportional to `(axis·s, 1 + c)` and to `(axis·(1 − c), s)`;
+/// the first is used up to 90° and the second beyond, where `1 + c` would lose its digits
+/// to cancellation (and vanish at 180°).
+fn twist_between(from: Vec3, to: Vec3, axis: Vec3) -> Quat {
+    let c = from.dot(to);
+    let s = from.cross(to).dot(axis);
+    let (v, w) = if c >= 0.0 { (s, 1.0 + c) } else { (1.0 - c, s) };
+    unit_q(Quat::from_xyzw(axis.x * v, axis.y * v, axis.z * v, w))
 }
 
 #[cfg(test)]
@@ -561,6 +573,25 @@ mod tests {
     // ---------------------------------------------------------------------------------------
     // Validity (ozz: JobValidity).
     // ---------------------------------------------------------------------------------------
+
+    #[test]
+    fn twist_between_matches_the_axis_angle_rotation() {
+        // Rotations about Z by hand: from +X to the unit vector at θ is a rotation by θ.
+        for deg in [
+            -179.0f32, -120.0, -90.0, -30.0, -1.0, 0.0, 0.5, 45.0, 90.0, 135.0, 179.9,
+        ] {
+            let t = deg.to_radians();
+            let to = Vec3::new(t.cos(), t.sin(), 0.0);
+            let q = twist_between(Vec3::X, to, Vec3::Z);
+            let want = Quat::from_axis_angle(Vec3::Z, t);
+            assert!(q.dot(want).abs() > 1.0 - 1e-6, "{deg}: {q:?} vs {want:?}");
+            assert!((q * Vec3::X).distance(to) < 1e-5, "{deg}");
+        }
+        // A half turn about the given axis, not an arbitrary one.
+        let q = twist_between(Vec3::X, -Vec3::X, Vec3::Z);
+        assert!((q * Vec3::Y).distance(-Vec3::Y) < 1e-6);
+        assert!((q * Vec3::Z).distance(Vec3::Z) < 1e-6);
+    }
 
     #[test]
     fn invalid_input_leaves_the_pose_unchanged() {
