@@ -6,6 +6,10 @@
 //! checked against the current graph and compiler by the test `tests/native.rs` at the
 //! repository root (regenerated text equal, outputs bit-identical to the interpreter).
 
+// Generated code calls the executor's unchecked `step` (see `strider_vm::native::step`):
+// its only unsafe code, each call an instruction of the program the code was generated from.
+#![allow(unsafe_code)]
+
 /// Generated code, one module per shipped graph. Not formatted by rustfmt: the generator's
 /// layout (one instruction per line) is kept so a diff after regenerating reads as a diff of
 /// the program.

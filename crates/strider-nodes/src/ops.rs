@@ -12,6 +12,50 @@ use crate::types::{Elem, ValueType};
 /// handlers' operand reads need no bounds checks of their own.
 pub const MAX_OPERANDS: usize = 16;
 
+/// What one operand of an instruction is (see [`Op::operands`]).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Operand {
+    /// The index of a slot of this type.
+    Slot(ValueType),
+    /// An instruction index to continue at.
+    Target,
+}
+
+impl Op {
+    /// This op's operands, in order: for node ops the overload's inputs, outputs and state
+    /// (from the node table), for control ops the layout documented on the variant. `None`
+    /// for an op that no node compiles to and the compiler never emits.
+    ///
+    /// The executor reads slot operands without bounds checks: a program is only built once
+    /// every slot operand, read by this layout, names an existing slot of its type.
+    #[must_use]
+    pub fn operands(self) -> Option<Vec<Operand>> {
+        use Operand::{Slot, Target};
+        use ValueType as T;
+        Some(match self {
+            Op::End => Vec::new(),
+            Op::Jump => vec![Target],
+            Op::JumpIfFalse => vec![Slot(T::Bool), Target],
+            Op::ForEachNext(e) => vec![
+                Slot(T::Array(e)),
+                Slot(T::Int),
+                Slot(e.scalar()),
+                Slot(T::Int),
+                Slot(T::Int),
+                Target,
+            ],
+            Op::ForNext => vec![Slot(T::Int), Slot(T::Int), Slot(T::Int), Target],
+            Op::Copy(ty) => vec![Slot(ty), Slot(ty)],
+            Op::IntToFloat => vec![Slot(T::Int), Slot(T::Float)],
+            op => crate::registry()
+                .layout(op)?
+                .iter()
+                .map(|&ty| Slot(ty))
+                .collect(),
+        })
+    }
+}
+
 /// One instruction kind. Variants that carry a type are a family of ops whose handler is
 /// the same but for the slot array it touches.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]

@@ -74,6 +74,8 @@ pub struct NodeSpec {
 pub struct Registry {
     nodes: Vec<NodeSpec>,
     index: HashMap<&'static str, usize>,
+    /// Each node op's operand types: inputs, outputs, state (see [`Op::operands`]).
+    layouts: HashMap<Op, Vec<ValueType>>,
 }
 
 /// The built-in node table, built once.
@@ -82,7 +84,18 @@ pub fn registry() -> &'static Registry {
     REGISTRY.get_or_init(|| {
         let nodes = build();
         let index = nodes.iter().enumerate().map(|(i, n)| (n.name, i)).collect();
-        Registry { nodes, index }
+        let mut layouts = HashMap::new();
+        for o in nodes.iter().flat_map(|n| &n.overloads) {
+            let types = o.inputs.iter().chain(&o.outputs).map(|p| p.ty);
+            layouts
+                .entry(o.op)
+                .or_insert_with(|| types.chain(o.state.iter().copied()).collect());
+        }
+        Registry {
+            nodes,
+            index,
+            layouts,
+        }
     })
 }
 
@@ -91,6 +104,12 @@ impl Registry {
     #[must_use]
     pub fn get(&self, name: &str) -> Option<&NodeSpec> {
         self.index.get(name).map(|&i| &self.nodes[i])
+    }
+
+    /// The operand types of node op `op` (inputs, outputs, state), if a node compiles to it.
+    #[must_use]
+    pub(crate) fn layout(&self, op: Op) -> Option<&[ValueType]> {
+        self.layouts.get(&op).map(Vec::as_slice)
     }
 
     /// Every node, in reference order.
@@ -1978,6 +1997,47 @@ mod tests {
                 );
             }
         }
+    }
+
+    #[test]
+    fn overloads_sharing_an_op_share_its_operand_layout() {
+        // The executor reads an op's operands by one layout (`Op::operands`).
+        for n in registry().nodes() {
+            for o in &n.overloads {
+                let mine: Vec<crate::Operand> = o
+                    .inputs
+                    .iter()
+                    .chain(&o.outputs)
+                    .map(|p| crate::Operand::Slot(p.ty))
+                    .chain(o.state.iter().map(|&t| crate::Operand::Slot(t)))
+                    .collect();
+                assert_eq!(
+                    o.op.operands().as_deref(),
+                    Some(mine.as_slice()),
+                    "{} ({:?})",
+                    n.name,
+                    o.op
+                );
+            }
+        }
+        // Control ops: jump targets are not slots.
+        use crate::Operand::{Slot, Target};
+        assert_eq!(Op::Jump.operands(), Some(vec![Target]));
+        assert_eq!(
+            Op::JumpIfFalse.operands(),
+            Some(vec![Slot(ValueType::Bool), Target])
+        );
+        assert_eq!(
+            Op::ForEachNext(Elem::Vec3).operands(),
+            Some(vec![
+                Slot(ValueType::Array(Elem::Vec3)),
+                Slot(ValueType::Int),
+                Slot(ValueType::Vec3),
+                Slot(ValueType::Int),
+                Slot(ValueType::Int),
+                Target
+            ])
+        );
     }
 
     #[test]

@@ -1,7 +1,23 @@
 //! The executor: a `match` loop over a program's instructions.
 //!
-//! Handlers trust the compiler: operand counts and slot types match each op (checked by
-//! the compiler's tests and debug assertions, not at run time).
+//! Handlers trust the program: operand counts and slot types match each op's layout
+//! ([`Op::operands`]). Scalar slots (bools, ints, floats, vectors, rotations, transforms)
+//! are read and written without bounds checks, which is sound because:
+//! - [`ProgramBuilder::finish`](crate::ProgramBuilder::finish) gives every scalar slot
+//!   array of the program's initial memory a slot for every operand that the op's layout
+//!   types as a slot of that type, so an instruction's slot operands are in bounds of the
+//!   initial image;
+//! - every run of an event first checks that the instance's arrays are still at least that
+//!   long (growing them if not: `Instance::run_event`), and nothing shrinks them during a
+//!   run;
+//! - each handler reads operand `k` only through the accessor of the type the op's layout
+//!   gives position `k` (every access asserts its bound in debug builds, where the test
+//!   suite runs every op).
+//!
+//! Array slots, bones, names and the elements of arrays keep their bounds checks.
+
+// Unchecked slot access (see above) is this module's only unsafe code.
+#![allow(unsafe_code)]
 
 use crate::program::{Instr, Program};
 use crate::slots::Slots;
@@ -86,35 +102,70 @@ macro_rules! execute {
                 o[$k] as usize
             };
         }
+        // A scalar slot as a place: operand `$k` indexes `$v` without a bounds check.
+        macro_rules! slot {
+            ($v:expr, $k:expr) => {{
+                let index = at!($k);
+                debug_assert!(index < $v.len(), "{op:?} operand {} out of bounds", $k);
+                // SAFETY: in bounds by the module's invariant (the program's layout check
+                // and the per-run length check); the reference lives for one read or write.
+                unsafe { &mut *$v.as_mut_ptr().add(index) }
+            }};
+        }
         macro_rules! f {
             ($k:expr) => {
-                s.floats[at!($k)]
+                *slot!(s.floats, $k)
             };
         }
         macro_rules! i {
             ($k:expr) => {
-                s.ints[at!($k)]
+                *slot!(s.ints, $k)
             };
         }
         macro_rules! b {
             ($k:expr) => {
-                s.bools[at!($k)]
+                *slot!(s.bools, $k)
             };
         }
         macro_rules! v {
             ($k:expr) => {
-                s.vec3s[at!($k)]
+                *slot!(s.vec3s, $k)
             };
         }
         macro_rules! q {
             ($k:expr) => {
-                s.quats[at!($k)]
+                *slot!(s.quats, $k)
             };
         }
         macro_rules! t {
             ($k:expr) => {
-                s.transforms[at!($k)]
+                *slot!(s.transforms, $k)
             };
+        }
+        // Copies the slot of operand `$from` into the slot of operand `$to` (type `$ty`).
+        macro_rules! copy_slot {
+            ($ty:expr, $from:expr, $to:expr) => {{
+                let (from_k, to_k): (usize, usize) = ($from, $to);
+                match $ty {
+                    ValueType::Bool => b!(to_k) = b!(from_k),
+                    ValueType::Int => i!(to_k) = i!(from_k),
+                    ValueType::Float => f!(to_k) = f!(from_k),
+                    ValueType::Vec3 => v!(to_k) = v!(from_k),
+                    ValueType::Quat => q!(to_k) = q!(from_k),
+                    ValueType::Transform => t!(to_k) = t!(from_k),
+                    ValueType::Bone => s.bones[at!(to_k)] = s.bones[at!(from_k)],
+                    ValueType::Name => s.names[at!(to_k)] = s.names[at!(from_k)],
+                    ValueType::Array(e) => {
+                        let (from, to) = (at!(from_k), at!(to_k));
+                        macro_rules! copy {
+                            ($sc:expr, $ar:expr, $zero:expr) => {
+                                copy_vec(&mut $ar, from, to)
+                            };
+                        }
+                        by_elem!(e, s, copy);
+                    }
+                }
+            }};
         }
         match op {
             Op::End => $end!(),
@@ -150,27 +201,7 @@ macro_rules! execute {
                     i!(0) = counter + 1;
                 }
             }
-            Op::Copy(ty) => {
-                let (from, to) = (at!(0), at!(1));
-                match ty {
-                    ValueType::Bool => s.bools[to] = s.bools[from],
-                    ValueType::Int => s.ints[to] = s.ints[from],
-                    ValueType::Float => s.floats[to] = s.floats[from],
-                    ValueType::Vec3 => s.vec3s[to] = s.vec3s[from],
-                    ValueType::Quat => s.quats[to] = s.quats[from],
-                    ValueType::Transform => s.transforms[to] = s.transforms[from],
-                    ValueType::Bone => s.bones[to] = s.bones[from],
-                    ValueType::Name => s.names[to] = s.names[from],
-                    ValueType::Array(e) => {
-                        macro_rules! copy {
-                            ($sc:expr, $ar:expr, $zero:expr) => {
-                                copy_vec(&mut $ar, from, to)
-                            };
-                        }
-                        by_elem!(e, s, copy);
-                    }
-                }
-            }
+            Op::Copy(ty) => copy_slot!(ty, 0, 1),
             Op::IntToFloat | Op::ToFloat => f!(1) = i!(0) as f32,
 
             Op::AddF => f!(2) = f!(0) + f!(1),
@@ -232,28 +263,7 @@ macro_rules! execute {
             Op::LessEqualI => b!(2) = i!(0) <= i!(1),
             Op::GreaterI => b!(2) = i!(0) > i!(1),
             Op::GreaterEqualI => b!(2) = i!(0) >= i!(1),
-            Op::Select(ty) => {
-                let from = if b!(0) { at!(1) } else { at!(2) };
-                let to = at!(3);
-                match ty {
-                    ValueType::Bool => s.bools[to] = s.bools[from],
-                    ValueType::Int => s.ints[to] = s.ints[from],
-                    ValueType::Float => s.floats[to] = s.floats[from],
-                    ValueType::Vec3 => s.vec3s[to] = s.vec3s[from],
-                    ValueType::Quat => s.quats[to] = s.quats[from],
-                    ValueType::Transform => s.transforms[to] = s.transforms[from],
-                    ValueType::Bone => s.bones[to] = s.bones[from],
-                    ValueType::Name => s.names[to] = s.names[from],
-                    ValueType::Array(e) => {
-                        macro_rules! copy {
-                            ($sc:expr, $ar:expr, $zero:expr) => {
-                                copy_vec(&mut $ar, from, to)
-                            };
-                        }
-                        by_elem!(e, s, copy);
-                    }
-                }
-            }
+            Op::Select(ty) => copy_slot!(ty, if b!(0) { 1 } else { 2 }, 3),
 
             Op::AddV => v!(2) = v!(0) + v!(1),
             Op::SubV => v!(2) = v!(0) - v!(1),
@@ -758,8 +768,13 @@ fn run_loop<const PROFILE: bool>(
 /// Always inlined: in code generated ahead of time from a program (see [`crate::native`])
 /// `op` and `o` are constants, so each call folds to that op's handler with its slot
 /// indices as immediates.
+///
+/// # Safety
+/// `op` and `o` must be an instruction of a program built by
+/// [`ProgramBuilder::finish`](crate::ProgramBuilder::finish) (with its operand window), and
+/// `cx.slots` must cover that program's scalar slots (see the module docs).
 #[inline(always)]
-pub(crate) fn step(op: Op, o: &[u32], cx: &mut Ctx<'_>, next: usize) -> usize {
+pub(crate) unsafe fn step(op: Op, o: &[u32], cx: &mut Ctx<'_>, next: usize) -> usize {
     macro_rules! jump {
         ($target:expr) => {
             return $target

@@ -359,6 +359,9 @@ impl Instance {
 
     /// Runs an event's code on this instance.
     fn run_event(&mut self, body: Body, world: &dyn WorldQuery, dt: f32) {
+        // The executor indexes scalar slots unchecked (see `exec`): make sure they still
+        // cover the program's.
+        self.slots.cover(&self.program.scalar_lens);
         let mut cx = Ctx {
             slots: &mut self.slots,
             texts: &self.program.texts,

@@ -52,6 +52,38 @@ mod tests {
     }
 
     #[test]
+    fn slot_operands_past_the_end_get_slots() {
+        // Scalar slots are indexed unchecked: `finish` must give every slot operand a slot,
+        // even one a hand-built program names without allocating it.
+        use std::sync::Arc;
+        use strider_core::{Bone, Skeleton, Transform};
+        use strider_nodes::{Op, Value};
+        let mut pb = ProgramBuilder::new("past_the_end");
+        let two = pb.constant(&Value::Float(2.0), "");
+        let three = pb.constant(&Value::Float(3.0), "");
+        pb.set_construction_entry(pb.here());
+        pb.emit(Op::End, &[]);
+        pb.set_forward_entry(pb.here());
+        pb.emit(Op::AddF, &[two, three, 40]); // float slot 40 was never allocated
+        pb.emit(Op::MakeVector, &[two, three, 40, 9]); // nor vector slot 9
+        pb.emit(Op::End, &[]);
+        let program = pb.finish();
+        assert_eq!(program.initial_slots().floats.len(), 41);
+        assert_eq!(program.initial_slots().vec3s.len(), 10);
+        let skeleton = Skeleton::new(vec![Bone {
+            name: "root".to_string(),
+            parent: None,
+            rest_local: Transform::IDENTITY,
+        }])
+        .expect("valid skeleton");
+        let mut instance =
+            Instance::new(Arc::new(program), Arc::new(skeleton)).expect("instantiates");
+        instance.run_forward(&FrameInput::default(), &EmptyWorld, false);
+        assert_eq!(instance.slots().floats[40], 5.0);
+        assert_eq!(instance.slots().vec3s[9], glam::Vec3::new(2.0, 3.0, 5.0));
+    }
+
+    #[test]
     fn an_instruction_is_eight_bytes() {
         // An op (2 bytes) and a 32-bit operand offset, padded: dense code keeps the
         // dispatch loop in cache.

@@ -34,9 +34,18 @@ pub struct Frame<'a> {
 ///
 /// Always inlined, so with a constant `op` and `operands` it compiles to that op's handler
 /// alone.
+///
+/// # Safety
+/// `op` and `operands` must be an instruction of the program `frame` runs, with its operands
+/// as [`generate`] writes them: slot operands are then in bounds (the executor indexes scalar
+/// slots unchecked; see [`ProgramBuilder::finish`](crate::ProgramBuilder::finish)). Frames
+/// exist only inside [`Instance::run_forward_native`](crate::Instance::run_forward_native),
+/// after it checked that the generated code's fingerprint is the program's.
 #[inline(always)]
-pub fn step(frame: &mut Frame<'_>, op: Op, operands: &[u32], next: usize) -> usize {
-    exec::step(op, operands, &mut frame.cx, next)
+#[allow(unsafe_code)] // the unchecked executor's entry point for generated code
+pub unsafe fn step(frame: &mut Frame<'_>, op: Op, operands: &[u32], next: usize) -> usize {
+    // SAFETY: the caller's contract above is `exec::step`'s.
+    unsafe { exec::step(op, operands, &mut frame.cx, next) }
 }
 
 /// A program's forward event compiled ahead of time (see the [module docs](self)).
@@ -246,10 +255,15 @@ pub fn generate(program: &Program, name: &str, header: &str) -> String {
     let _ = writeln!(out, "fn forward(f: &mut Frame<'_>) {{");
     let _ = writeln!(out, "    let mut pc: usize = {entry};");
     let _ = writeln!(out, "    loop {{");
-    let _ = writeln!(out, "        pc = match pc {{");
+    let _ = writeln!(
+        out,
+        "        // SAFETY: each `step` is an instruction of the program this code was generated\n        \
+         // from, with its own operands; `NATIVE` runs only on that program (fingerprint)."
+    );
+    let _ = writeln!(out, "        pc = unsafe {{ match pc {{");
     out.push_str(&body);
     let _ = writeln!(out, "            _ => return,");
-    let _ = writeln!(out, "        }};");
+    let _ = writeln!(out, "        }} }};");
     let _ = writeln!(out, "    }}");
     let _ = writeln!(out, "}}");
     out

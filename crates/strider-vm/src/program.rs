@@ -1,10 +1,10 @@
 //! [`Program`]: the compiled, immutable form of a graph, and [`ProgramBuilder`], the
 //! compiler's way of making one.
 
-use crate::slots::Slots;
+use crate::slots::{ScalarLens, Slots};
 use std::collections::HashMap;
 use std::fmt;
-use strider_nodes::{Op, Value, ValueType};
+use strider_nodes::{Op, Operand, Value, ValueType};
 
 /// One instruction: an op and where its operands start in [`Program::operands`].
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -219,6 +219,9 @@ pub struct Program {
     pub(crate) instr_origins: Vec<u32>,
     /// Where node outputs, function inputs and locals live, per call path (tools only).
     pub(crate) pin_slots: Vec<PinSlot>,
+    /// The lengths of `initial`'s scalar arrays, which cover every scalar slot operand (see
+    /// [`ProgramBuilder::finish`]).
+    pub(crate) scalar_lens: ScalarLens,
 }
 
 impl Program {
@@ -348,6 +351,7 @@ impl ProgramBuilder {
                 origins: Vec::new(),
                 instr_origins: Vec::new(),
                 pin_slots: Vec::new(),
+                scalar_lens: ScalarLens::default(),
             },
             current_origin: None,
             origin_ids: HashMap::new(),
@@ -468,12 +472,34 @@ impl ProgramBuilder {
     }
 
     /// The finished program.
+    ///
+    /// The executor indexes scalar slots without bounds checks, so this makes sure every
+    /// slot operand (by its op's layout, [`Op::operands`]) names an existing slot of its
+    /// type, adding zeroed slots if an operand names one past the end (the compiler's
+    /// programs never do).
+    ///
+    /// # Panics
+    /// If an instruction's op has no operand layout (an op no node compiles to and the
+    /// compiler does not emit): a program built that way could not be run safely.
     #[must_use]
     pub fn finish(mut self) -> Program {
         // The executor reads every instruction's operands as a window of MAX_OPERANDS.
-        self.program
-            .operands
+        let p = &mut self.program;
+        p.operands
             .extend(std::iter::repeat_n(0, strider_nodes::MAX_OPERANDS));
+        for instr in &p.code {
+            let layout = instr
+                .op
+                .operands()
+                .unwrap_or_else(|| panic!("{:?} has no operand layout", instr.op));
+            for (k, operand) in layout.into_iter().enumerate() {
+                if let Operand::Slot(ty) = operand {
+                    p.initial
+                        .cover_slot(ty, p.operands[instr.args as usize + k]);
+                }
+            }
+        }
+        p.scalar_lens = ScalarLens::of(&p.initial);
         self.program
     }
 }

@@ -41,7 +41,69 @@ pub struct Slots {
     pub bone_arrays: Vec<Vec<i32>>,
 }
 
+/// The lengths the scalar slot arrays (bools, ints, floats, vectors, rotations,
+/// transforms) must have at least: the executor indexes them without bounds checks.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub(crate) struct ScalarLens([usize; 6]);
+
+impl ScalarLens {
+    /// The lengths of `slots`' scalar arrays.
+    pub(crate) fn of(slots: &Slots) -> Self {
+        Self([
+            slots.bools.len(),
+            slots.ints.len(),
+            slots.floats.len(),
+            slots.vec3s.len(),
+            slots.quats.len(),
+            slots.transforms.len(),
+        ])
+    }
+}
+
 impl Slots {
+    /// Grows the scalar arrays (with zeroed slots) to at least `lens`. Does nothing, and
+    /// costs six comparisons, when they are long enough.
+    #[inline]
+    pub(crate) fn cover(&mut self, lens: &ScalarLens) {
+        let [b, i, f, v, q, t] = lens.0;
+        if self.bools.len() < b
+            || self.ints.len() < i
+            || self.floats.len() < f
+            || self.vec3s.len() < v
+            || self.quats.len() < q
+            || self.transforms.len() < t
+        {
+            let grow = |n: usize, len: usize| n.max(len);
+            self.bools.resize(grow(self.bools.len(), b), false);
+            self.ints.resize(grow(self.ints.len(), i), 0);
+            self.floats.resize(grow(self.floats.len(), f), 0.0);
+            self.vec3s.resize(grow(self.vec3s.len(), v), Vec3::ZERO);
+            self.quats.resize(grow(self.quats.len(), q), Quat::IDENTITY);
+            self.transforms
+                .resize(grow(self.transforms.len(), t), Transform::IDENTITY);
+        }
+    }
+
+    /// Grows the array of scalar type `ty` so that slot `index` exists (other types: no
+    /// effect; their accesses are bounds-checked).
+    pub(crate) fn cover_slot(&mut self, ty: ValueType, index: u32) {
+        fn at_least<T: Clone>(v: &mut Vec<T>, index: u32, zero: T) {
+            let len = index as usize + 1;
+            if v.len() < len {
+                v.resize(len, zero);
+            }
+        }
+        match ty {
+            ValueType::Bool => at_least(&mut self.bools, index, false),
+            ValueType::Int => at_least(&mut self.ints, index, 0),
+            ValueType::Float => at_least(&mut self.floats, index, 0.0),
+            ValueType::Vec3 => at_least(&mut self.vec3s, index, Vec3::ZERO),
+            ValueType::Quat => at_least(&mut self.quats, index, Quat::IDENTITY),
+            ValueType::Transform => at_least(&mut self.transforms, index, Transform::IDENTITY),
+            ValueType::Bone | ValueType::Name | ValueType::Array(_) => {}
+        }
+    }
+
     /// Adds a zeroed slot of type `ty` and returns its index.
     pub fn alloc(&mut self, ty: ValueType) -> u32 {
         fn push<T>(v: &mut Vec<T>, x: T) -> u32 {

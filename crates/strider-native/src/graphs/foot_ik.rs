@@ -21,7 +21,9 @@ pub static NATIVE: NativeProgram = NativeProgram {
 fn forward(f: &mut Frame<'_>) {
     let mut pc: usize = 1;
     loop {
-        pc = match pc {
+        // SAFETY: each `step` is an instruction of the program this code was generated
+        // from, with its own operands; `NATIVE` runs only on that program (fingerprint).
+        pc = unsafe { match pc {
             1 => {
                 step(f, Op::Copy(ValueType::Bone), &[8, 0], 2);
                 step(f, Op::Copy(ValueType::Vec3), &[69, 21], 3);
@@ -217,6 +219,6 @@ fn forward(f: &mut Frame<'_>) {
                 step(f, Op::End, &[], 185)
             }
             _ => return,
-        };
+        } };
     }
 }

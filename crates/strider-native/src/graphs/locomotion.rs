@@ -21,7 +21,9 @@ pub static NATIVE: NativeProgram = NativeProgram {
 fn forward(f: &mut Frame<'_>) {
     let mut pc: usize = 375;
     loop {
-        pc = match pc {
+        // SAFETY: each `step` is an instruction of the program this code was generated
+        // from, with its own operands; `NATIVE` runs only on that program (fingerprint).
+        pc = unsafe { match pc {
             375 => {
                 step(f, Op::WorldTransform, &[12], 376);
                 step(f, Op::BreakTransform, &[12, 30, 7, 31], 377);
@@ -1193,6 +1195,6 @@ fn forward(f: &mut Frame<'_>) {
                 step(f, Op::End, &[], 1386)
             }
             _ => return,
-        };
+        } };
     }
 }
