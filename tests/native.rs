@@ -5,7 +5,7 @@ use std::path::Path;
 use std::sync::Arc;
 use strider::host::scenario::{Scenario, Simulation};
 use strider::vm::native::NativeProgram;
-use strider::{FrameInput, InputPose, Instance, Program, Transform};
+use strider::{FrameInput, InputPose, Instance, Program};
 
 /// The shipped graphs with a native baseline: graph file, generated file, its code.
 fn baselines() -> [(&'static str, &'static str, &'static NativeProgram); 2] {
@@ -74,11 +74,6 @@ fn native_code_of_another_program_is_refused() {
     assert_eq!(instance.slots(), &before, "nothing ran");
 }
 
-fn bits(t: &Transform) -> [u32; 10] {
-    let (p, r, s) = (t.translation, t.rotation, t.scale);
-    [p.x, p.y, p.z, r.x, r.y, r.z, r.w, s.x, s.y, s.z].map(f32::to_bits)
-}
-
 /// Runs an interpreted and a native instance side by side through a scenario and asserts
 /// that every frame's pose and every slot are bit-identical.
 fn same_through(graph: &str, native: &NativeProgram, scenario: &str, hz: u32) {
@@ -105,7 +100,7 @@ fn same_through(graph: &str, native: &NativeProgram, scenario: &str, hz: u32) {
             .expect("generated from this program");
         let (a, b) = (interpreted.pose().locals(), compiled.pose().locals());
         assert!(
-            a.iter().map(bits).eq(b.iter().map(bits)),
+            a.len() == b.len() && a.iter().zip(b).all(|(x, y)| x.bit_eq(y)),
             "{graph} in {}: poses differ at frame {frames}",
             scenario.name
         );
@@ -115,20 +110,10 @@ fn same_through(graph: &str, native: &NativeProgram, scenario: &str, hz: u32) {
         );
         frames += 1;
     }
-    let (a, b) = (interpreted.slots(), compiled.slots());
-    let floats = |x: &[f32], y: &[f32]| {
-        x.iter()
-            .map(|v| v.to_bits())
-            .eq(y.iter().map(|v| v.to_bits()))
-    };
-    assert!(floats(&a.floats, &b.floats), "float slots differ");
-    assert_eq!(a.ints, b.ints);
-    assert_eq!(a.bools, b.bools);
     assert!(
-        a.transforms
-            .iter()
-            .map(bits)
-            .eq(b.transforms.iter().map(bits))
+        interpreted.slots().bit_eq(compiled.slots()),
+        "{graph} in {}: slots differ",
+        scenario.name
     );
     assert!(frames > 100, "{frames} frames");
 }

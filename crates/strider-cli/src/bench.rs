@@ -479,27 +479,10 @@ fn apply(
 
 /// Whether two instances hold bit-identical slots and poses.
 fn same_state(a: &Instance, b: &Instance) -> bool {
-    let bits = |t: &strider_core::Transform| {
-        let (tr, r, s) = (t.translation, t.rotation, t.scale);
-        [tr.x, tr.y, tr.z, r.x, r.y, r.z, r.w, s.x, s.y, s.z].map(f32::to_bits)
-    };
-    let (sa, sb) = (a.slots(), b.slots());
-    let floats = |x: &[f32], y: &[f32]| {
-        x.len() == y.len() && x.iter().zip(y).all(|(p, q)| p.to_bits() == q.to_bits())
-    };
-    a.pose()
-        .locals()
-        .iter()
-        .map(bits)
-        .eq(b.pose().locals().iter().map(bits))
-        && floats(&sa.floats, &sb.floats)
-        && sa.ints == sb.ints
-        && sa.bools == sb.bools
-        && sa
-            .transforms
-            .iter()
-            .map(bits)
-            .eq(sb.transforms.iter().map(bits))
+    let (pa, pb) = (a.pose().locals(), b.pose().locals());
+    pa.len() == pb.len()
+        && pa.iter().zip(pb).all(|(x, y)| x.bit_eq(y))
+        && a.slots().bit_eq(b.slots())
 }
 
 fn progress_bar(args: &BenchArgs, max_threads: u32) -> ProgressBar {

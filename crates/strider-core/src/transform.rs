@@ -116,6 +116,20 @@ impl Transform {
         parent.inverse() * *self
     }
 
+    /// The bit patterns of every component: translation, rotation (x, y, z, w), scale.
+    #[must_use]
+    pub fn to_bits(&self) -> [u32; 10] {
+        let (t, r, s) = (self.translation, self.rotation, self.scale);
+        [t.x, t.y, t.z, r.x, r.y, r.z, r.w, s.x, s.y, s.z].map(f32::to_bits)
+    }
+
+    /// Bit-for-bit equality (unlike `==`, NaN equals an identical NaN and `0.0` differs from
+    /// `-0.0`): what determinism checks compare.
+    #[must_use]
+    pub fn bit_eq(&self, other: &Transform) -> bool {
+        self.to_bits() == other.to_bits()
+    }
+
     /// True when every component is finite (no NaN or infinity).
     #[must_use]
     pub fn is_finite(&self) -> bool {
@@ -202,6 +216,20 @@ mod tests {
         let id = t.inverse() * t;
         assert_vec_near(id.translation, Vec3::ZERO);
         assert_vec_near(id.scale, Vec3::ONE);
+    }
+
+    #[test]
+    fn bit_equality_is_stricter_than_equality() {
+        let a = Transform::from_translation(Vec3::new(0.0, 1.0, 2.0));
+        let mut b = a;
+        b.translation.x = -0.0;
+        assert_eq!(a, b);
+        assert!(!a.bit_eq(&b), "0.0 and -0.0 differ in their bits");
+        let mut nan = a;
+        nan.scale.y = f32::NAN;
+        assert_ne!(nan, nan);
+        assert!(nan.bit_eq(&nan));
+        assert_eq!(a.to_bits()[1], 1.0f32.to_bits());
     }
 
     #[test]

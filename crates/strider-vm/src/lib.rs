@@ -84,6 +84,22 @@ mod tests {
     }
 
     #[test]
+    fn slot_bit_equality_sees_arrays_and_signs() {
+        let a = Slots {
+            floats: vec![0.0, f32::NAN],
+            vec3_arrays: vec![vec![glam::Vec3::ONE]],
+            ..Slots::default()
+        };
+        let mut b = a.clone();
+        assert!(a.bit_eq(&b));
+        b.vec3_arrays[0][0].z = 2.0;
+        assert!(!a.bit_eq(&b));
+        let mut c = a.clone();
+        c.floats[0] = -0.0;
+        assert!(!a.bit_eq(&c));
+    }
+
+    #[test]
     fn an_instruction_is_eight_bytes() {
         // An op (2 bytes) and a 32-bit operand offset, padded: dense code keeps the
         // dispatch loop in cache.

@@ -104,6 +104,41 @@ impl Slots {
         }
     }
 
+    /// Bit-for-bit equality of every slot, arrays included (floats compared by their bits,
+    /// so NaN equals an identical NaN): what determinism checks compare.
+    #[must_use]
+    pub fn bit_eq(&self, other: &Slots) -> bool {
+        fn same<T, B: PartialEq>(a: &[T], b: &[T], bits: impl Fn(&T) -> B) -> bool {
+            a.len() == b.len() && a.iter().zip(b).all(|(x, y)| bits(x) == bits(y))
+        }
+        fn same_arrays<T, B: PartialEq>(
+            a: &[Vec<T>],
+            b: &[Vec<T>],
+            bits: impl Fn(&T) -> B,
+        ) -> bool {
+            a.len() == b.len() && a.iter().zip(b).all(|(x, y)| same(x, y, &bits))
+        }
+        let f = |x: &f32| x.to_bits();
+        let v = |x: &Vec3| x.to_array().map(f32::to_bits);
+        let q = |x: &Quat| x.to_array().map(f32::to_bits);
+        let t = Transform::to_bits;
+        self.bools == other.bools
+            && self.ints == other.ints
+            && self.bones == other.bones
+            && self.names == other.names
+            && same(&self.floats, &other.floats, f)
+            && same(&self.vec3s, &other.vec3s, v)
+            && same(&self.quats, &other.quats, q)
+            && same(&self.transforms, &other.transforms, t)
+            && self.bool_arrays == other.bool_arrays
+            && self.int_arrays == other.int_arrays
+            && self.bone_arrays == other.bone_arrays
+            && same_arrays(&self.float_arrays, &other.float_arrays, f)
+            && same_arrays(&self.vec3_arrays, &other.vec3_arrays, v)
+            && same_arrays(&self.quat_arrays, &other.quat_arrays, q)
+            && same_arrays(&self.transform_arrays, &other.transform_arrays, t)
+    }
+
     /// Adds a zeroed slot of type `ty` and returns its index.
     pub fn alloc(&mut self, ty: ValueType) -> u32 {
         fn push<T>(v: &mut Vec<T>, x: T) -> u32 {
