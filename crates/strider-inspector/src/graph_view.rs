@@ -8,11 +8,13 @@
 //! of the call path it was opened through. Inside a loop the slot holds the last
 //! iteration's value.
 
+use crate::layout::{Layout, TOP_LEVEL};
 use crate::values::{ValueSource, format_value};
 use egui::{Color32, Pos2, Rect, Ui, emath::TSTransform, pos2, vec2};
 use egui_snarl::ui::{BackgroundPattern, PinInfo, SnarlPin, SnarlStyle, SnarlViewer, SnarlWidget};
 use egui_snarl::{InPin, InPinId, NodeId, OutPin, OutPinId, Snarl};
 use std::collections::HashMap;
+use std::path::PathBuf;
 use strider_graph::{
     Editor, ExprKind, FunctionDecl, Graph, Literal, LiteralKind, LoadedGraph, NodeDecl, Step,
 };
@@ -350,6 +352,27 @@ pub fn build_body(loaded: &LoadedGraph, function: Option<&str>) -> Body {
     }
 }
 
+/// Node `i`'s name in a layout file: its id, else `label#n` for the n-th node of the body
+/// with that label and no id.
+fn layout_key(nodes: &[GraphNode], i: usize) -> String {
+    let n = &nodes[i];
+    match &n.id {
+        Some(id) => id.clone(),
+        None => {
+            let k = nodes[..i]
+                .iter()
+                .filter(|m| m.id.is_none() && m.label() == n.label())
+                .count();
+            format!("{}#{k}", n.label())
+        }
+    }
+}
+
+fn path_text(path: &Option<PathBuf>) -> String {
+    path.as_ref()
+        .map_or_else(String::new, |p| p.display().to_string())
+}
+
 /// Rough node height for the layout (header and one row per pin).
 fn node_height(n: &GraphNode) -> f32 {
     40.0 + 22.0 * n.inputs.len().max(n.outputs.len()) as f32
@@ -435,6 +458,14 @@ pub struct GraphViewState {
     fitted_rect: Rect,
     open: Option<Crumb>,
     id: egui::Id,
+    /// Where the user dragged nodes, every body (see [`crate::layout`]).
+    pub layout: Layout,
+    /// The layout file ("Save layout" and leaving the inspector write it).
+    pub layout_path: Option<PathBuf>,
+    /// Whether nodes moved since the layout was loaded or saved.
+    pub layout_dirty: bool,
+    /// The last layout load or save outcome: (ok, message).
+    pub layout_message: Option<(bool, String)>,
 }
 
 impl Default for GraphViewState {
@@ -454,6 +485,10 @@ impl Default for GraphViewState {
             fitted_rect: Rect::NOTHING,
             open: None,
             id: egui::Id::new("strider-graph-view"),
+            layout: Layout::default(),
+            layout_path: None,
+            layout_dirty: false,
+            layout_message: None,
         }
     }
 }
@@ -523,6 +558,62 @@ impl GraphViewState {
         self.selected.is_some()
     }
 
+    /// Reads the layout file of `graph` (`<stem>.layout.ron`, see [`crate::layout`]). On
+    /// error the message says why and nothing will be written over that file (there is
+    /// no "Save layout" until it is fixed and the inspector opened again).
+    pub fn load_layout(&mut self, graph: &std::path::Path) {
+        let path = Layout::path_for(graph);
+        match Layout::load(&path) {
+            Ok(layout) => {
+                self.layout = layout;
+                self.layout_message = None;
+                self.layout_path = Some(path);
+            }
+            Err(e) => {
+                self.layout_message = Some((false, format!("{e}; the layout is not saved")));
+                self.layout_path = None;
+            }
+        }
+        self.layout_dirty = false;
+        self.built = None;
+    }
+
+    /// Writes the layout file when nodes were moved since the last save (and a layout file
+    /// path is set).
+    ///
+    /// # Errors
+    /// When the file cannot be written.
+    pub fn save_layout(&mut self) -> Result<(), String> {
+        let Some(path) = &self.layout_path else {
+            return Ok(());
+        };
+        self.layout.save(path)?;
+        self.layout_dirty = false;
+        Ok(())
+    }
+
+    /// The body shown's name in the layout file.
+    fn layout_body(&self) -> &str {
+        self.path.last().map_or(TOP_LEVEL, |c| c.function.as_str())
+    }
+
+    /// Keeps in the layout the position of every node the user moved on the canvas.
+    fn note_moves(&mut self) {
+        let mut moved = Vec::new();
+        for (id, pos, _) in self.snarl.nodes_pos_ids() {
+            if self.body.positions.get(id.0).is_some_and(|p| *p != pos) {
+                moved.push((id.0, pos));
+            }
+        }
+        for (i, pos) in moved {
+            self.body.positions[i] = pos;
+            let key = layout_key(&self.body.nodes, i);
+            let body = self.layout_body().to_string();
+            self.layout.set(&body, &key, pos);
+            self.layout_dirty = true;
+        }
+    }
+
     /// Asks the view to fit every node on its next frame.
     pub fn request_fit(&mut self) {
         self.fit = true;
@@ -538,6 +629,15 @@ impl GraphViewState {
         self.built = Some(key);
         let function = self.path.last().map(|c| c.function.clone());
         self.body = build_body(loaded, function.as_deref());
+        let body = self.layout_body().to_string();
+        for i in 0..self.body.nodes.len() {
+            if let Some(p) = self
+                .layout
+                .position(&body, &layout_key(&self.body.nodes, i))
+            {
+                self.body.positions[i] = p;
+            }
+        }
         self.snarl = Snarl::new();
         for (n, p) in self.body.nodes.iter().zip(&self.body.positions) {
             self.snarl.insert_node(*p, n.clone());
@@ -668,6 +768,32 @@ impl GraphViewState {
             if ui.button("Fit").clicked() {
                 self.fit = true;
             }
+            if let Some(path) = &self.layout_path {
+                let hover = format!(
+                    "write where the nodes are to {} (the graph file is never rewritten); \
+                     leaving the inspector writes it too",
+                    path.display()
+                );
+                let label = if self.layout_dirty {
+                    "Save layout*"
+                } else {
+                    "Save layout"
+                };
+                if ui.button(label).on_hover_text(hover).clicked() {
+                    self.layout_message = Some(match self.save_layout() {
+                        Ok(()) => (true, format!("wrote {}", path_text(&self.layout_path))),
+                        Err(e) => (false, e),
+                    });
+                }
+            }
+            if let Some((ok, m)) = &self.layout_message {
+                let color = if *ok {
+                    Color32::from_rgb(120, 220, 120)
+                } else {
+                    Color32::from_rgb(255, 140, 110)
+                };
+                ui.label(egui::RichText::new(m).color(color));
+            }
             egui::ComboBox::from_id_salt("open-function")
                 .selected_text("Open function…")
                 .show_ui(ui, |ui| {
@@ -725,6 +851,7 @@ impl GraphViewState {
             .id(self.id)
             .style(style)
             .show(&mut self.snarl, &mut viewer, ui);
+        self.note_moves();
         // Shift-click selects in egui-snarl; a click on a node's title selects too.
         if let Some(first) = egui_snarl::ui::get_selected_nodes(self.id, ui.ctx()).first() {
             self.selected = Some(first.0);
