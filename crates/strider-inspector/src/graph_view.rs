@@ -6,7 +6,8 @@
 //!
 //! A node inside a function has one set of slots per call site: the view shows the values
 //! of the call path it was opened through. Inside a loop the slot holds the last
-//! iteration's value.
+//! iteration's value, and the view says so: "(last iteration)" after the value in a pin's
+//! tooltip, a line in the node panel.
 
 use crate::layout::{Layout, TOP_LEVEL};
 use crate::values::{ValueSource, format_value};
@@ -67,6 +68,9 @@ pub struct GraphNode {
     pub outputs: Vec<String>,
     /// Where it is written, `file:line:col`.
     pub location: String,
+    /// Whether its values are those of a loop's last iteration: it sits in a `ForEach` or
+    /// `For` body, or reads (through its inputs) a loop's element, index or count.
+    pub in_loop: bool,
 }
 
 impl GraphNode {
@@ -192,6 +196,7 @@ fn node_of(loaded: &LoadedGraph, d: &NodeDecl, index: Option<u32>) -> GraphNode 
         inputs,
         outputs,
         location,
+        in_loop: false,
     }
 }
 
@@ -242,41 +247,94 @@ fn step_node(loaded: &LoadedGraph, step: &Step) -> Option<GraphNode> {
         inputs,
         outputs: Vec::new(),
         location: loaded.sources.describe(loc),
+        in_loop: false,
     })
 }
 
+/// What [`walk`] collects besides the nodes.
+struct Walk<'a> {
+    loaded: &'a LoadedGraph,
+    /// Steps that read values, as nodes.
+    step_nodes: Vec<GraphNode>,
+    /// The names loops give their element, index and count.
+    loop_names: Vec<String>,
+}
+
 /// Walks exec lists in the checker's order: inline nodes get the next indices; steps
-/// that read values become step nodes.
-fn walk(
-    loaded: &LoadedGraph,
-    steps: &[Step],
-    nodes: &mut Vec<GraphNode>,
-    step_nodes: &mut Vec<GraphNode>,
-) {
+/// that read values become step nodes; `in_loop` marks what sits in a loop body.
+fn walk(w: &mut Walk<'_>, steps: &[Step], nodes: &mut Vec<GraphNode>, in_loop: bool) {
     for s in steps {
-        if let Some(n) = step_node(loaded, s) {
-            step_nodes.push(n);
+        if let Some(mut n) = step_node(w.loaded, s) {
+            n.in_loop = in_loop;
+            w.step_nodes.push(n);
         }
         match s {
             Step::Node(d) => {
                 let index = nodes.len() as u32;
-                nodes.push(node_of(loaded, d, Some(index)));
+                let mut n = node_of(w.loaded, d, Some(index));
+                n.in_loop = in_loop;
+                nodes.push(n);
             }
-            Step::ForEach { body, .. } | Step::For { body, .. } => {
-                walk(loaded, body, nodes, step_nodes);
+            Step::ForEach {
+                element,
+                index,
+                count,
+                body,
+                ..
+            } => {
+                w.loop_names.extend(
+                    std::iter::once(element)
+                        .chain(index)
+                        .chain(count)
+                        .map(|i| i.name.clone()),
+                );
+                walk(w, body, nodes, true);
+            }
+            Step::For { index, body, .. } => {
+                w.loop_names.push(index.name.clone());
+                walk(w, body, nodes, true);
             }
             Step::Branch {
                 then, otherwise, ..
             } => {
-                walk(loaded, then, nodes, step_nodes);
-                walk(loaded, otherwise, nodes, step_nodes);
+                walk(w, then, nodes, in_loop);
+                walk(w, otherwise, nodes, in_loop);
             }
             Step::Sequence(blocks, _) => {
                 for b in blocks {
-                    walk(loaded, b, nodes, step_nodes);
+                    walk(w, b, nodes, in_loop);
                 }
             }
             Step::Set { .. } | Step::Run(_) | Step::Return { .. } => {}
+        }
+    }
+}
+
+/// Marks every node that reads a loop's name, or a node so marked, through its inputs.
+fn mark_loop_readers(nodes: &mut [GraphNode], loop_names: &[String]) {
+    let ids: Vec<Option<String>> = nodes.iter().map(|n| n.id.clone()).collect();
+    loop {
+        let mut changed = false;
+        for i in 0..nodes.len() {
+            if nodes[i].in_loop {
+                continue;
+            }
+            let reads_loop = nodes[i].inputs.iter().any(|(_, source)| match source {
+                PinSource::Link { node, .. } => {
+                    match ids.iter().position(|id| id.as_ref() == Some(node)) {
+                        Some(from) => nodes[from].in_loop,
+                        None => loop_names.contains(node),
+                    }
+                }
+                _ => false,
+            });
+            if reads_loop {
+                nodes[i].in_loop = true;
+                changed = true;
+            }
+        }
+        if !changed {
+            break;
         }
     }
 }
@@ -305,11 +363,16 @@ pub fn build_body(loaded: &LoadedGraph, function: Option<&str>) -> Body {
         .enumerate()
         .map(|(i, d)| node_of(loaded, d, Some(i as u32)))
         .collect();
-    let mut steps = Vec::new();
+    let mut w = Walk {
+        loaded,
+        step_nodes: Vec::new(),
+        loop_names: Vec::new(),
+    };
     for list in lists {
-        walk(loaded, list, &mut nodes, &mut steps);
+        walk(&mut w, list, &mut nodes, false);
     }
-    nodes.extend(steps);
+    nodes.extend(w.step_nodes);
+    mark_loop_readers(&mut nodes, &w.loop_names);
 
     let mut links = Vec::new();
     for (to, n) in nodes.iter().enumerate() {
@@ -349,6 +412,15 @@ pub fn build_body(loaded: &LoadedGraph, function: Option<&str>) -> Body {
         links,
         positions,
         comments,
+    }
+}
+
+/// `value` followed by "(last iteration)" when `node` is in a loop.
+fn last_iteration(node: &GraphNode, value: String) -> String {
+    if node.in_loop {
+        format!("{value} (last iteration)")
+    } else {
+        value
     }
 }
 
@@ -884,6 +956,9 @@ impl GraphViewState {
         if node.index.is_none() {
             ui.label("exec step");
         }
+        if node.in_loop {
+            ui.label("in a loop: the values of its last iteration");
+        }
         ui.separator();
         egui::Grid::new("selected-pins")
             .striped(true)
@@ -1088,7 +1163,7 @@ impl SnarlViewer<GraphNode> for Viewer<'_> {
             let value = match source {
                 PinSource::Literal(t) => Some(t.clone()),
                 PinSource::Default(t) => Some(format!("{t} (default)")),
-                _ => self.value_text(slot),
+                _ => self.value_text(slot).map(|v| last_iteration(n, v)),
             };
             response.on_hover_text(value.unwrap_or_else(|| "—".to_string()));
         }
@@ -1114,7 +1189,7 @@ impl SnarlViewer<GraphNode> for Viewer<'_> {
             .and_then(|i| self.state_outputs.get(&(i, name.clone())).copied());
         let response = ui.label(name);
         if response.hovered() {
-            let value = self.value_text(slot);
+            let value = self.value_text(slot).map(|v| last_iteration(n, v));
             response.on_hover_text(value.unwrap_or_else(|| "—".to_string()));
         }
         let mut info = PinInfo::circle();

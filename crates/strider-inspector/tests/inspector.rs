@@ -1025,3 +1025,54 @@ fn dragged_nodes_are_saved_to_a_layout_file_beside_the_graph() {
     assert_eq!(app.graph.body().positions[i], moved);
     let _ = std::fs::remove_dir_all(&dir);
 }
+
+#[test]
+fn pins_in_a_loop_say_they_show_the_last_iteration() {
+    let mut harness = harness(options(&PathBuf::from(GRAPHS).join("locomotion.ron")));
+    {
+        let app = harness.state_mut();
+        let program = std::sync::Arc::clone(app.session.program());
+        let loaded = std::sync::Arc::clone(app.session.document());
+        let body = strider_inspector::graph_view::build_body(&loaded, Some("SetupArray"));
+        let in_loop = |label: &str| {
+            body.nodes
+                .iter()
+                .find(|n| n.label() == label)
+                .unwrap_or_else(|| panic!("{label}"))
+                .in_loop
+        };
+        // `rest` and `elbow` read the loops' elements `foot` and `hand`; `feet` and `hands`
+        // are computed once, before the loops.
+        assert!(in_loop("rest") && in_loop("elbow"));
+        assert!(!in_loop("feet") && !in_loop("hands"));
+        // The 12 Appends sit in the loop bodies; the Resets before them do not.
+        let appends: Vec<bool> = body
+            .nodes
+            .iter()
+            .filter(|n| n.node_type == "Append")
+            .map(|n| n.in_loop)
+            .collect();
+        assert_eq!(appends, vec![true; 12]);
+        assert!(
+            body.nodes
+                .iter()
+                .filter(|n| n.node_type == "Reset")
+                .all(|n| !n.in_loop)
+        );
+        assert!(
+            app.graph
+                .open_function_anywhere(&program, &loaded, "SetupArray")
+        );
+    }
+    harness.run_steps(3);
+    assert!(harness.state_mut().graph.select("rest"));
+    harness.run_steps(2);
+    harness.get_by_label("in a loop: the values of its last iteration");
+    assert!(harness.state_mut().graph.select("feet"));
+    harness.run_steps(2);
+    assert!(
+        harness
+            .query_by_label("in a loop: the values of its last iteration")
+            .is_none()
+    );
+}
