@@ -5,6 +5,11 @@
 //! rate: the mover takes [`MOVER_SUBSTEPS`] steps of 1/720 s per frame (the host's mover
 //! rate, as in scenarios), then the graph runs its `forward` event once with `dt = 1/60`.
 //! Slow motion and pause change how many steps run per wall-clock second, never `dt`.
+//!
+//! Every frame is recorded ([`crate::recording`]); full-state keyframes, taken every
+//! [`KEYFRAME_EVERY`] frames and after an overrides file is loaded, and the variable
+//! edits noted with their frame, let the simulation continue from any recorded frame
+//! ([`Session::resume_from`]).
 
 use crate::recording::{FrameMeta, Recorder};
 use crate::{InspectError, InspectOptions};
@@ -35,8 +40,8 @@ pub const RECORD_FRAMES: usize = 32 * SIM_HZ as usize;
 /// most this many frames (more only when resuming before the oldest keyframe kept).
 pub const KEYFRAME_EVERY: u64 = SIM_HZ as u64;
 /// Most keyframes kept: one a second covers the recording (32), the rest are for those
-/// taken after edits (a slider, an overrides file, a reload). Past it the oldest go, and
-/// frames before the oldest kept can be shown but not resumed from.
+/// taken after an overrides file is loaded. Past it the oldest go, and frames before the
+/// oldest kept can be shown but not resumed from.
 pub const MAX_KEYFRAMES: usize = 128;
 /// How long the watched files must stay quiet before a reload, so that an editor's
 /// several writes reload once.
@@ -142,9 +147,12 @@ pub struct Session {
     profile_us: Option<std::collections::HashMap<String, f64>>,
     /// Full-state keyframes, oldest first, all of the current program, world and drive.
     keyframes: VecDeque<Keyframe>,
-    /// Take a keyframe before the next frame (something other than the input changed the
-    /// state: replaying recorded inputs alone would not get there).
+    /// Take a keyframe before the next frame (something other than the input and the
+    /// edits noted in `edits` changed the state: replaying them would not get there).
     keyframe_due: bool,
+    /// Variable edits ([`Session::set_tunables`]) since the oldest keyframe, each with the
+    /// frame that ran after it, oldest first: made again when frames run again.
+    edits: VecDeque<(u64, Vec<(VariableId, Value)>)>,
 }
 
 fn diagnostics_text(d: &[strider_graph::Diagnostic]) -> Vec<String> {
@@ -252,6 +260,7 @@ impl Session {
             profile_us: None,
             keyframes: VecDeque::new(),
             keyframe_due: true,
+            edits: VecDeque::new(),
         };
         session.start_profiling();
         session.status = if graph_problems.is_empty() {
@@ -480,7 +489,8 @@ impl Session {
 
     /// Runs one simulation frame: moves the character (keyboard input or scenario), runs
     /// the graph with `dt` = [`SIM_DT`] and debug drawing on, and records the frame. A
-    /// keyframe is taken first every [`KEYFRAME_EVERY`] frames and after edits.
+    /// keyframe is taken first every [`KEYFRAME_EVERY`] frames, and after an overrides
+    /// file was loaded or the program, world or drive changed.
     pub fn step(&mut self) {
         if self.keyframe_due || self.frame.is_multiple_of(KEYFRAME_EVERY) {
             self.take_keyframe();
@@ -553,9 +563,9 @@ impl Session {
     }
 
     /// Keeps the whole state before the next frame (clones the instance: a few
-    /// allocations, once a second or after an edit). Drops keyframes that can no longer
-    /// serve: those before the oldest recorded frame, and the oldest past
-    /// [`MAX_KEYFRAMES`].
+    /// allocations, about once a second). Drops keyframes that can no longer serve: those
+    /// before the oldest recorded frame, and the oldest past [`MAX_KEYFRAMES`]; and the
+    /// edits before the oldest keyframe kept.
     fn take_keyframe(&mut self) {
         self.keyframe_due = false;
         let oldest = self.recorder.get(0).map_or(self.frame, |f| f.meta.frame);
@@ -568,6 +578,11 @@ impl Session {
             Drive::Keyboard => KeyDrive::Keyboard(self.mover.clone()),
             Drive::Scenario { sim, .. } => KeyDrive::Scenario(sim.checkpoint()),
         };
+        // Edits before the oldest keyframe can no longer be run again.
+        let first = self.keyframes.front().map_or(self.frame, |k| k.frame);
+        while self.edits.front().is_some_and(|(f, _)| *f < first) {
+            self.edits.pop_front();
+        }
         self.keyframes.push_back(Keyframe {
             frame: self.frame,
             time: self.time,
@@ -580,13 +595,15 @@ impl Session {
     /// the next frame.
     fn forget_keyframes(&mut self) {
         self.keyframes.clear();
+        self.edits.clear();
         self.keyframe_due = true;
     }
 
     /// Continues the simulation from recorded frame `index` (counted from the oldest kept):
-    /// restores the nearest keyframe at or before it, runs the recorded inputs again up to
-    /// it (the frames come out bit-identical: the simulation is deterministic), then
-    /// forgets the recorded frames after it. The next [`Session::step`] runs the frame
+    /// restores the nearest keyframe at or before it, runs the recorded inputs and the
+    /// variable edits again up to it (the frames come out bit-identical: the simulation is
+    /// deterministic), then forgets the recorded frames and the edits after it (variables
+    /// are as they were at that frame). The next [`Session::step`] runs the frame
     /// that follows. Nothing changes on error.
     ///
     /// # Errors
@@ -630,7 +647,17 @@ impl Session {
         self.instance.clone_from(&key.instance);
         self.frame = key.frame;
         self.time = key.time;
+        // Edits noted with the keyframe's frame were made before it was taken: it has them.
+        let mut edit = self.edits.partition_point(|(f, _)| *f <= key.frame);
         for i in first..=index {
+            while let Some((f, values)) = self.edits.get(edit)
+                && *f == self.frame
+            {
+                let values = values.clone();
+                // It was applied the first time; it applies the same way again.
+                let _ = self.apply_edit(&values);
+                edit += 1;
+            }
             if let Some(f) = self.recorder.get(i) {
                 self.input = f.meta.input;
             }
@@ -643,6 +670,8 @@ impl Session {
             .is_some_and(|f| f.globals == self.instance.pose_mut().globals());
         self.recorder.truncate(index + 1);
         self.keyframes.retain(|k| k.frame <= target.frame);
+        // Edits made after the frame are undone with the frames after it.
+        self.edits.retain(|(f, _)| *f <= target.frame);
         self.quality_frame = self.frame;
         self.status = if same {
             format!(
@@ -757,7 +786,9 @@ impl Session {
         self.set_tunables(&[(id, value.clone())])
     }
 
-    /// Sets variables on the live instance (slider edits). When any of them is tunable,
+    /// Sets variables on the live instance (slider edits), noting the edit with the frame
+    /// that runs next (so that resuming from a recorded frame makes it again). When any of
+    /// them is tunable,
     /// `construction` runs again on a fresh instance with the new tunables, and every
     /// other variable whose value `construction` now gives differently from what it gave
     /// with the previous tunables takes the new value; the others keep their live values
@@ -769,6 +800,14 @@ impl Session {
     /// The first value that does not fit its variable (wrong type, unknown bone); nothing
     /// changes then.
     pub fn set_tunables(&mut self, values: &[(VariableId, Value)]) -> Result<(), String> {
+        self.apply_edit(values)?;
+        // Kept to make the same edit when running the frames again (resume_from).
+        self.edits.push_back((self.frame, values.to_vec()));
+        Ok(())
+    }
+
+    /// [`Session::set_tunables`] without noting the edit.
+    fn apply_edit(&mut self, values: &[(VariableId, Value)]) -> Result<(), String> {
         let mut next = self.instance.clone();
         for (id, value) in values {
             next.set_variable(*id, value).map_err(|e| e.to_string())?;
@@ -791,7 +830,6 @@ impl Session {
             }
         }
         self.instance = next;
-        self.keyframe_due = true;
         Ok(())
     }
 

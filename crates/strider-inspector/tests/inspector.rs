@@ -852,6 +852,18 @@ fn resuming_from_an_earlier_frame_replays_it_exactly_and_goes_on() {
         assert_eq!(&f.slots, slots, "frame {k}");
     }
 
+    // Between the keyframe before the edit (frame 60) and the next (frame 120): the edit
+    // is made again on the way, and the state is the recorded one.
+    session.resume_from(110).expect("resumes");
+    assert!(
+        !session.status().contains("differs"),
+        "{}",
+        session.status()
+    );
+    slots.copy_from(session.instance().slots());
+    assert_eq!(slots, original[110].2);
+    assert_eq!(session.instance().variable(lift), Value::Float(45.0));
+
     // Back before the edit: the tunable is what it was then, and walking on differs from
     // the first time (the original walk turned at frame 150, this one keeps going).
     session.resume_from(90).expect("resumes");
