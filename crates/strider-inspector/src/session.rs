@@ -622,21 +622,28 @@ impl Session {
                 target.time
             ));
         }
+        // The nearest keyframe at or before the frame whose frames since are all still
+        // recorded (frame numbers are consecutive in the recording).
+        let oldest = self.recorder.get(0).map_or(target.frame, |f| f.meta.frame);
         let key = self
             .keyframes
             .iter()
             .rposition(|k| k.frame <= target.frame)
+            .filter(|&k| self.keyframes[k].frame >= oldest)
             .ok_or_else(|| {
-                let since = self.keyframes.front().map_or(self.time, |k| k.time);
+                let since = self
+                    .keyframes
+                    .iter()
+                    .find(|k| k.frame >= oldest)
+                    .map_or(self.time, |k| k.time);
                 format!(
                     "cannot resume from t {:.2} s: the simulation can be resumed from \
-                     t {since:.2} s on (after the last reload or change of drive)",
+                     t {since:.2} s on (the first keyframe still recorded, after the last \
+                     reload or change of drive)",
                     target.time
                 )
             })?;
         let key = &self.keyframes[key];
-        // Every frame from the keyframe's to the target is recorded: keyframes older than
-        // the oldest recorded frame are dropped, and frame numbers are consecutive.
         let first = index - (target.frame - key.frame) as usize;
         match (&key.drive, &mut self.drive) {
             (KeyDrive::Keyboard(m), Drive::Keyboard) => self.mover = m.clone(),

@@ -545,6 +545,15 @@ fn the_recording_keeps_a_bounded_number_of_frames() {
             .zip(recorder.iter().skip(1))
             .all(|(a, b)| b.meta.frame == a.meta.frame + 1)
     );
+    // The oldest frames came after the first keyframe (frame 0, no longer recorded) and
+    // before the next one: shown, but not resumed from; a later one is.
+    let first_kept = session.recorder().get(0).expect("kept").meta.frame;
+    assert_eq!(first_kept, 30);
+    let err = session.resume_from(0).expect_err("no keyframe since");
+    assert!(err.contains("cannot resume from t 0.52 s"), "{err}");
+    assert!(err.contains("resumed from t 1.00 s on"), "{err}");
+    let recorder = session.recorder();
+    assert_eq!(recorder.len(), capacity);
     // A frame holds the instance's slots (array items included), the pose and the debug
     // drawing.
     let slots = session.instance().slots();
