@@ -1097,3 +1097,30 @@ fn pins_in_a_loop_say_they_show_the_last_iteration() {
             .is_none()
     );
 }
+
+#[test]
+fn resuming_a_scenario_plays_the_same_frames_again() {
+    let mut opts = options(&PathBuf::from(GRAPHS).join("locomotion.ron"));
+    opts.scenario = Some(PathBuf::from(GRAPHS).join("scenarios/teleport.ron"));
+    let mut session = Session::open(opts).expect("loads");
+    for _ in 0..300 {
+        session.step();
+    }
+    let original: Vec<_> = session
+        .recorder()
+        .iter()
+        .map(|f| (f.meta, f.globals.clone()))
+        .collect();
+    session.resume_from(170).expect("resumes");
+    assert!(
+        !session.status().contains("differs"),
+        "{}",
+        session.status()
+    );
+    for k in 171..300 {
+        session.step();
+        let f = session.recorder().latest().expect("recorded");
+        assert_eq!(f.meta, original[k].0, "frame {k}");
+        assert_eq!(f.globals, original[k].1, "frame {k}");
+    }
+}
