@@ -434,3 +434,59 @@ impl Recorder {
         self.frames.iter().map(RecordedFrame::bytes).sum()
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn arrays_over_the_budget_are_not_recorded_and_their_memory_stays_within_it() {
+        let float_array =
+            |image: &SlotImage, slot| image.read(ValueType::Array(Elem::Float), slot, &[]);
+        let mut slots = Slots {
+            // 3,000 floats (12,000 bytes) do not fit in 8 KiB; the arrays after them do.
+            float_arrays: vec![vec![1.0; 3000], vec![2.0, 3.0]],
+            vec3_arrays: vec![vec![Vec3::X; 10]],
+            bone_arrays: vec![vec![1, -1]],
+            ..Slots::default()
+        };
+        let mut image = SlotImage::default();
+        image.copy_from(&slots);
+        assert_eq!(float_array(&image, 0), None);
+        assert_eq!(
+            float_array(&image, 1),
+            Some(Value::Array(
+                Elem::Float,
+                vec![Value::Float(2.0), Value::Float(3.0)]
+            ))
+        );
+        assert!(matches!(
+            image.read(ValueType::Array(Elem::Vec3), 0, &[]),
+            Some(Value::Array(Elem::Vec3, items)) if items == vec![Value::Vec3(Vec3::X); 10]
+        ));
+        let names = ["pelvis".to_string(), "foot_l".to_string()];
+        assert_eq!(
+            image.read(ValueType::Array(Elem::Bone), 0, &names),
+            Some(Value::Array(
+                Elem::Bone,
+                vec![Value::Bone(Some("foot_l".to_string())), Value::Bone(None)]
+            ))
+        );
+        assert!(image.array_capacity_bytes() <= ARRAY_BUDGET);
+        // Shrunk to 1,000 floats (4,000 bytes), the first array fits.
+        slots.float_arrays[0] = vec![1.0; 1000];
+        image.copy_from(&slots);
+        assert!(matches!(
+            float_array(&image, 0),
+            Some(Value::Array(_, items)) if items.len() == 1000
+        ));
+        // Another mix: 170 transforms (8,160 bytes) alone. The floats' memory is given back.
+        slots = Slots {
+            transform_arrays: vec![vec![Transform::IDENTITY; 170]],
+            ..Slots::default()
+        };
+        image.copy_from(&slots);
+        assert!(image.transform_arrays.get(0).is_some());
+        assert!(image.array_capacity_bytes() <= ARRAY_BUDGET);
+    }
+}

@@ -585,13 +585,27 @@ fn the_recording_keeps_a_bounded_number_of_frames() {
     );
     let per_frame = recorder.bytes_per_frame();
     assert!(per_frame >= scalars + items);
+    let total = recorder.bytes();
     eprintln!(
         "recording: {per_frame} bytes in the newest frame ({} of slots, of which {items} of \
          array items; {} debug primitives), {:.1} MB for {capacity} frames",
         frame.slots.bytes(),
         frame.debug.len(),
-        recorder.bytes() as f64 / 1.0e6
+        total as f64 / 1.0e6
     );
+
+    // Resuming inside the full ring keeps the frames before, oldest first, and drops the
+    // rest; the ring then fills again.
+    session
+        .resume_from(100)
+        .expect("frame 130: after the keyframe at 120");
+    let recorder = session.recorder();
+    assert_eq!(recorder.len(), 101);
+    assert_eq!(recorder.get(0).expect("kept").meta.frame, 30);
+    assert_eq!(recorder.latest().expect("kept").meta.frame, 130);
+    session.step();
+    assert_eq!(session.recorder().len(), 102);
+    assert_eq!(session.recorder().latest().expect("kept").meta.frame, 131);
 }
 
 #[cfg(feature = "profile")]
