@@ -93,12 +93,16 @@ pub fn show(ui: &mut Ui, playback: &mut Playback, recorder: &Recorder) {
         } else {
             "▶ Play"
         };
-        if ui.button(label).on_hover_text("Space").clicked() {
+        if ui
+            .button(label)
+            .on_hover_text("Space; from a frame scrubbed back, play on from it")
+            .clicked()
+        {
             toggle(playback, recorder);
         }
         if ui
             .button("⏭ Step")
-            .on_hover_text("run one frame (.)")
+            .on_hover_text("run one frame (.); from a frame scrubbed back, the one after it")
             .clicked()
         {
             step(playback, recorder);
