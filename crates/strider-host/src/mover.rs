@@ -255,6 +255,13 @@ impl MoveInput {
     }
 }
 
+impl Default for MoveInput {
+    /// [`MoveInput::STAND`].
+    fn default() -> Self {
+        Self::STAND
+    }
+}
+
 /// What the floor probe found.
 #[derive(Clone, Copy, Debug)]
 enum Floor {

@@ -541,6 +541,18 @@ enum Slot {
     ZeroDt,
 }
 
+/// The state a [`Simulation`] changes as it runs (the mover and where the timeline is),
+/// without the scenario's fixed parts (world, timeline, schedule): a few dozen bytes, to
+/// go back to with [`Simulation::restore`].
+#[derive(Clone, Debug)]
+pub struct SimCheckpoint {
+    mover: Mover,
+    next: usize,
+    steps_done: u64,
+    next_teleport: usize,
+    last_tick: u64,
+}
+
 /// Runs a scenario at a frame rate, frame by frame (see the module docs for the timing).
 #[derive(Clone, Debug)]
 pub struct Simulation {
@@ -729,6 +741,28 @@ impl Simulation {
             Some(span) => span.source.at((step - span.start).min(span.steps)),
             None => MoveInput::STAND,
         }
+    }
+
+    /// Where the simulation is now (see [`Simulation::restore`]).
+    #[must_use]
+    pub fn checkpoint(&self) -> SimCheckpoint {
+        SimCheckpoint {
+            mover: self.mover.clone(),
+            next: self.next,
+            steps_done: self.steps_done,
+            next_teleport: self.next_teleport,
+            last_tick: self.last_tick,
+        }
+    }
+
+    /// Goes back (or forward) to `checkpoint`, taken from this simulation or another of the
+    /// same scenario and rate: the frames that follow are the ones that followed it.
+    pub fn restore(&mut self, checkpoint: &SimCheckpoint) {
+        self.mover = checkpoint.mover.clone();
+        self.next = checkpoint.next.min(self.schedule.len());
+        self.steps_done = checkpoint.steps_done;
+        self.next_teleport = checkpoint.next_teleport.min(self.teleports.len());
+        self.last_tick = checkpoint.last_tick;
     }
 
     /// Advances to the next frame, or `None` after the last.

@@ -192,7 +192,133 @@ fn default_platform_depth() -> f32 {
     100.0
 }
 
+/// A solid box of a world shape, world space: what the collision shape is and what a
+/// viewer draws.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct SolidBox {
+    /// Centre, world, cm.
+    pub center: Vec3,
+    /// Half sizes along the box's own X, Y, Z, cm.
+    pub half_extents: Vec3,
+    /// The box's rotation (a yaw about +Z).
+    pub rotation: Quat,
+}
+
 impl ShapeDesc {
+    /// The solid boxes of a `Box`, a `Platform` or a `Stairs` shape (one per step, the last
+    /// running on through the landing), as the world collides with them; nothing for the
+    /// other shapes. For a shape that [`ShapeDesc::validate`] accepts.
+    pub fn solid_boxes(&self) -> impl Iterator<Item = SolidBox> + '_ {
+        let (count, start, yaw) = match *self {
+            ShapeDesc::Box { center, yaw, .. } => (1, center, yaw),
+            ShapeDesc::Platform { center, yaw, .. } => (1, (center.0, center.1, 0.0), yaw),
+            ShapeDesc::Stairs {
+                start, yaw, steps, ..
+            } => (steps, start, yaw),
+            _ => (0, (0.0, 0.0, 0.0), 0.0),
+        };
+        let rotation = Quat::from_rotation_z(yaw.to_radians());
+        (0..count).map(move |i| match *self {
+            ShapeDesc::Platform {
+                half_size,
+                top,
+                depth,
+                ..
+            } => SolidBox {
+                center: Vec3::new(start.0, start.1, top - depth * 0.5),
+                half_extents: Vec3::new(half_size.0, half_size.1, depth * 0.5),
+                rotation,
+            },
+            ShapeDesc::Stairs {
+                width,
+                steps,
+                rise,
+                run,
+                landing,
+                ..
+            } => {
+                let top = (i + 1) as f32 * rise;
+                let near = i as f32 * run;
+                // The last step runs on through the landing, so the landing has no seam.
+                let far = if i + 1 == steps {
+                    (i + 1) as f32 * run + landing
+                } else {
+                    (i + 1) as f32 * run
+                };
+                let local = Vec3::new(0.0, (near + far) * 0.5, top * 0.5);
+                SolidBox {
+                    center: v3(start) + rotation * local,
+                    half_extents: Vec3::new(width * 0.5, (far - near) * 0.5, top * 0.5),
+                    rotation,
+                }
+            }
+            ShapeDesc::Box { half_extents, .. } => SolidBox {
+                center: v3(start),
+                half_extents: v3(half_extents),
+                rotation,
+            },
+            _ => SolidBox {
+                center: Vec3::ZERO,
+                half_extents: Vec3::ZERO,
+                rotation,
+            },
+        })
+    }
+
+    /// The six corners of a `Ramp`, in the ramp's frame (X across, Y forward and rising, Z
+    /// up, origin at the centre of its near edge: rotate them by `yaw` about +Z and add
+    /// `start` for world space), cm: near edge left and right, far bottom edge left and
+    /// right, far top edge left and right. `None` for other shapes.
+    #[must_use]
+    pub fn ramp_corners(&self) -> Option<[Vec3; 6]> {
+        let ShapeDesc::Ramp {
+            angle,
+            length,
+            width,
+            ..
+        } = *self
+        else {
+            return None;
+        };
+        let height = length * angle.to_radians().tan();
+        let hw = width * 0.5;
+        Some([
+            Vec3::new(-hw, 0.0, 0.0),
+            Vec3::new(hw, 0.0, 0.0),
+            Vec3::new(-hw, length, 0.0),
+            Vec3::new(hw, length, 0.0),
+            Vec3::new(-hw, length, height),
+            Vec3::new(hw, length, height),
+        ])
+    }
+
+    /// Vertex `(i, j)` of a `Heightfield`'s grid, world, cm: `origin.xy + (i · size.x /
+    /// cells.0, j · size.y / cells.1)` at height `origin.z + heights[j · (cells.0 + 1) + i]
+    /// + Σ waves` (indices past the grid are clamped to its edge). `None` for other shapes.
+    #[must_use]
+    pub fn heightfield_vertex(&self, i: u32, j: u32) -> Option<Vec3> {
+        let ShapeDesc::Heightfield {
+            origin,
+            size,
+            cells,
+            ref heights,
+            ref waves,
+        } = *self
+        else {
+            return None;
+        };
+        let (cx, cy) = (cells.0.max(1), cells.1.max(1));
+        let (i, j) = (i.min(cx), j.min(cy));
+        let x = origin.0 + size.0 * i as f32 / cx as f32;
+        let y = origin.1 + size.1 * j as f32 / cy as f32;
+        let explicit = heights
+            .get(j as usize * (cx as usize + 1) + i as usize)
+            .copied()
+            .unwrap_or(0.0);
+        let z = origin.2 + explicit + wave_height(waves, (origin.0, origin.1), x, y);
+        Some(Vec3::new(x, y, z))
+    }
+
     /// The variant's name as written in RON.
     #[must_use]
     pub fn kind(&self) -> &'static str {
@@ -750,93 +876,27 @@ fn build_shape(desc: &ShapeDesc, out: &mut Vec<(Pose, SharedShape)>) -> Result<(
                 SharedShape::halfspace(Vec3::Z),
             ));
         }
-        ShapeDesc::Box {
-            center,
-            half_extents,
-            yaw,
-        } => {
-            out.push((
-                pose(v3(*center), *yaw),
-                SharedShape::cuboid(half_extents.0, half_extents.1, half_extents.2),
-            ));
+        ShapeDesc::Box { .. } | ShapeDesc::Stairs { .. } | ShapeDesc::Platform { .. } => {
+            for b in desc.solid_boxes() {
+                let h = b.half_extents;
+                out.push((
+                    Pose::from_parts(b.center, b.rotation),
+                    SharedShape::cuboid(h.x, h.y, h.z),
+                ));
+            }
         }
-        ShapeDesc::Ramp {
-            start,
-            yaw,
-            angle,
-            length,
-            width,
-        } => {
-            let height = length * angle.to_radians().tan();
-            let hw = width * 0.5;
-            // Local frame: X across, Y forward (rising), Z up; origin at the near edge centre.
-            let local = [
-                Vec3::new(-hw, 0.0, 0.0),
-                Vec3::new(hw, 0.0, 0.0),
-                Vec3::new(-hw, *length, 0.0),
-                Vec3::new(hw, *length, 0.0),
-                Vec3::new(-hw, *length, height),
-                Vec3::new(hw, *length, height),
-            ];
+        ShapeDesc::Ramp { start, yaw, .. } => {
+            let local = desc.ramp_corners().unwrap_or_default();
             let shape = SharedShape::convex_hull(&local)
                 .ok_or("the ramp is degenerate (check length, width and angle)")?;
             out.push((pose(v3(*start), *yaw), shape));
         }
-        ShapeDesc::Stairs {
-            start,
-            yaw,
-            width,
-            steps,
-            rise,
-            run,
-            landing,
-        } => {
-            let base = pose(v3(*start), *yaw);
-            let hw = width * 0.5;
-            for i in 0..*steps {
-                let top = (i + 1) as f32 * rise;
-                let near = i as f32 * run;
-                // The last step runs on through the landing, so the landing has no seam.
-                let far = if i + 1 == *steps {
-                    (i + 1) as f32 * run + landing
-                } else {
-                    (i + 1) as f32 * run
-                };
-                let center = Vec3::new(0.0, (near + far) * 0.5, top * 0.5);
-                out.push((
-                    Pose::from_parts(base.transform_point(center), base.rotation),
-                    SharedShape::cuboid(hw, (far - near) * 0.5, top * 0.5),
-                ));
-            }
-        }
-        ShapeDesc::Platform {
-            center,
-            half_size,
-            top,
-            yaw,
-            depth,
-        } => {
-            out.push((
-                pose(Vec3::new(center.0, center.1, top - depth * 0.5), *yaw),
-                SharedShape::cuboid(half_size.0, half_size.1, depth * 0.5),
-            ));
-        }
-        ShapeDesc::Heightfield {
-            origin,
-            size,
-            cells,
-            heights,
-            waves,
-        } => {
+        ShapeDesc::Heightfield { cells, .. } => {
             let (nx, ny) = (cells.0 as usize, cells.1 as usize);
             let mut vertices = Vec::with_capacity((nx + 1) * (ny + 1));
-            for j in 0..=ny {
-                for i in 0..=nx {
-                    let x = origin.0 + size.0 * i as f32 / nx as f32;
-                    let y = origin.1 + size.1 * j as f32 / ny as f32;
-                    let explicit = heights.get(j * (nx + 1) + i).copied().unwrap_or(0.0);
-                    let z = origin.2 + explicit + wave_height(waves, (origin.0, origin.1), x, y);
-                    vertices.push(Vec3::new(x, y, z));
+            for j in 0..=cells.1 {
+                for i in 0..=cells.0 {
+                    vertices.extend(desc.heightfield_vertex(i, j));
                 }
             }
             let mut indices = Vec::with_capacity(nx * ny * 2);

@@ -359,3 +359,25 @@ fn mover_overrides_keep_other_defaults() {
     assert_eq!(sim.hz(), 1);
     assert_eq!(sim.frame_count(), 1);
 }
+
+#[test]
+fn a_checkpoint_replays_the_frames_that_followed_it() {
+    // The teleport scenario: restoring must also put back which teleports are done.
+    let scenario = load("teleport");
+    let all = run(&scenario, 60);
+    let mut sim = Simulation::new(&scenario, 60);
+    let at = all.len() / 2;
+    for _ in 0..at {
+        sim.next_frame();
+    }
+    let checkpoint = sim.checkpoint();
+    let rest: Vec<SimFrame> = std::iter::from_fn(|| sim.next_frame()).collect();
+    assert_eq!(rest, all[at..]);
+    // Back to the middle, in the same simulation and in a fresh one.
+    sim.restore(&checkpoint);
+    let again: Vec<SimFrame> = std::iter::from_fn(|| sim.next_frame()).collect();
+    assert_eq!(again, all[at..]);
+    let mut fresh = Simulation::new(&scenario, 60);
+    fresh.restore(&checkpoint);
+    assert_eq!(fresh.next_frame(), Some(all[at]));
+}

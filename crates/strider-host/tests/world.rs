@@ -394,3 +394,59 @@ fn sphere_traces_onto_the_ground_agree_with_parry3d() {
         "{hits} hits: the sweeps should mix hits and misses"
     );
 }
+
+#[test]
+fn the_shared_geometry_is_what_the_world_collides_with() {
+    // Stairs turned by 90° (rising along −X): 3 steps of 20 × 40 cm and a 50 cm landing.
+    let stairs = ShapeDesc::Stairs {
+        start: (100.0, 0.0, 5.0),
+        yaw: 90.0,
+        width: 80.0,
+        steps: 3,
+        rise: 20.0,
+        run: 40.0,
+        landing: 50.0,
+    };
+    let boxes: Vec<_> = stairs.solid_boxes().collect();
+    assert_eq!(boxes.len(), 3);
+    // Step 1 (the second) spans 40..80 cm along −X from x = 100, rising to 5 + 40 cm.
+    assert_vec_near(boxes[1].center, Vec3::new(40.0, 0.0, 25.0), 1e-4);
+    assert_vec_near(boxes[1].half_extents, Vec3::new(40.0, 20.0, 20.0), 1e-6);
+    // The last runs on through the landing: 80..170 cm.
+    assert_vec_near(boxes[2].center, Vec3::new(-25.0, 0.0, 35.0), 1e-4);
+    assert_vec_near(boxes[2].half_extents, Vec3::new(40.0, 45.0, 30.0), 1e-6);
+    let field = ShapeDesc::Heightfield {
+        origin: (-200.0, 300.0, 2.0),
+        size: (400.0, 200.0),
+        cells: (4, 2),
+        heights: (0..15).map(|k| k as f32).collect(),
+        waves: vec![field_wave()],
+    };
+    // Vertex (3, 1): x = −200 + 300, y = 300 + 100, z = 2 + heights[1 · 5 + 3] + waves.
+    let v = field.heightfield_vertex(3, 1).expect("a heightfield");
+    let z = 2.0 + 8.0 + wave_height(&[field_wave()], (-200.0, 300.0), 100.0, 400.0);
+    assert_vec_near(v, Vec3::new(100.0, 400.0, z), 1e-4);
+    assert!(stairs.heightfield_vertex(0, 0).is_none());
+    // The world built from them collides with the tops they give.
+    let w = World::from_desc(&WorldDesc {
+        shapes: vec![stairs, field],
+    });
+    for b in &boxes {
+        let top = b.center.z + b.half_extents.z;
+        let (h, _) = w
+            .ground_height(b.center.x, b.center.y, 500.0)
+            .expect("a step");
+        assert!(near(h, top, 1e-3), "{h} {top}");
+    }
+    let (h, _) = w.ground_height(v.x, v.y, 500.0).expect("the field");
+    assert!(near(h, v.z, 1e-3), "{h} {}", v.z);
+}
+
+fn field_wave() -> Wave {
+    Wave {
+        amplitude: 3.0,
+        wavelength: 150.0,
+        heading: 30.0,
+        phase: 10.0,
+    }
+}

@@ -105,6 +105,8 @@ impl InspectorApp {
             ui_ms: None,
             panels_ms: 0.0,
         };
+        let graph = app.session.options().graph.clone();
+        app.graph.load_layout(&graph);
         // One frame so that every panel has something to show.
         app.session.step();
         app
@@ -115,6 +117,15 @@ impl InspectorApp {
         self.playback.cursor = None;
         for _ in 0..frames {
             self.session.step();
+        }
+    }
+
+    /// Continues the simulation from the recorded frame the playback asks for, if any;
+    /// when it cannot, says why in the top bar and goes on from the newest frame.
+    fn resume(&mut self) {
+        if let Some(i) = self.playback.resume.take() {
+            self.controls.message = self.session.resume_from(i).err();
+            self.playback.cursor = None;
         }
     }
 
@@ -182,12 +193,10 @@ impl InspectorApp {
             )
         });
         if space {
-            crate::timeline::toggle(&mut self.playback);
+            crate::timeline::toggle(&mut self.playback, self.session.recorder());
         }
         if period {
-            self.playback.playing = false;
-            self.playback.cursor = None;
-            self.playback.step_once = true;
+            crate::timeline::step(&mut self.playback, self.session.recorder());
         }
         if comma {
             let recorder = self.session.recorder();
@@ -220,6 +229,7 @@ impl InspectorApp {
                 self.session.input = MoveInput::STAND;
             }
         }
+        self.resume();
         let wall_dt = f64::from(ctx.input(|i| i.stable_dt));
         let steps = self.playback.steps_due(wall_dt, f64::from(SIM_DT));
         if steps > 0 {
@@ -392,5 +402,14 @@ impl eframe::App for InspectorApp {
         self.frame_ui(ui);
         self.panels_ms = start.elapsed().as_secs_f32() * 1000.0;
         ui.ctx().request_repaint();
+    }
+
+    /// Writes the graph view's layout file if nodes were moved since it was last saved.
+    fn on_exit(&mut self, _gl: Option<&eframe::glow::Context>) {
+        if self.graph.layout_dirty
+            && let Err(e) = self.graph.save_layout()
+        {
+            eprintln!("strider inspector: the layout was not saved: {e}");
+        }
     }
 }

@@ -6,13 +6,16 @@
 //!
 //! A node inside a function has one set of slots per call site: the view shows the values
 //! of the call path it was opened through. Inside a loop the slot holds the last
-//! iteration's value.
+//! iteration's value, and the view says so: "(last iteration)" after the value in a pin's
+//! tooltip, a line in the node panel.
 
+use crate::layout::{Layout, TOP_LEVEL};
 use crate::values::{ValueSource, format_value};
 use egui::{Color32, Pos2, Rect, Ui, emath::TSTransform, pos2, vec2};
 use egui_snarl::ui::{BackgroundPattern, PinInfo, SnarlPin, SnarlStyle, SnarlViewer, SnarlWidget};
 use egui_snarl::{InPin, InPinId, NodeId, OutPin, OutPinId, Snarl};
 use std::collections::HashMap;
+use std::path::PathBuf;
 use strider_graph::{
     Editor, ExprKind, FunctionDecl, Graph, Literal, LiteralKind, LoadedGraph, NodeDecl, Step,
 };
@@ -65,6 +68,9 @@ pub struct GraphNode {
     pub outputs: Vec<String>,
     /// Where it is written, `file:line:col`.
     pub location: String,
+    /// Whether its values are those of a loop's last iteration: it sits in a `ForEach` or
+    /// `For` body, or reads (through its inputs) a loop's element, index or count.
+    pub in_loop: bool,
 }
 
 impl GraphNode {
@@ -190,6 +196,7 @@ fn node_of(loaded: &LoadedGraph, d: &NodeDecl, index: Option<u32>) -> GraphNode 
         inputs,
         outputs,
         location,
+        in_loop: false,
     }
 }
 
@@ -240,41 +247,94 @@ fn step_node(loaded: &LoadedGraph, step: &Step) -> Option<GraphNode> {
         inputs,
         outputs: Vec::new(),
         location: loaded.sources.describe(loc),
+        in_loop: false,
     })
 }
 
+/// What [`walk`] collects besides the nodes.
+struct Walk<'a> {
+    loaded: &'a LoadedGraph,
+    /// Steps that read values, as nodes.
+    step_nodes: Vec<GraphNode>,
+    /// The names loops give their element, index and count.
+    loop_names: Vec<String>,
+}
+
 /// Walks exec lists in the checker's order: inline nodes get the next indices; steps
-/// that read values become step nodes.
-fn walk(
-    loaded: &LoadedGraph,
-    steps: &[Step],
-    nodes: &mut Vec<GraphNode>,
-    step_nodes: &mut Vec<GraphNode>,
-) {
+/// that read values become step nodes; `in_loop` marks what sits in a loop body.
+fn walk(w: &mut Walk<'_>, steps: &[Step], nodes: &mut Vec<GraphNode>, in_loop: bool) {
     for s in steps {
-        if let Some(n) = step_node(loaded, s) {
-            step_nodes.push(n);
+        if let Some(mut n) = step_node(w.loaded, s) {
+            n.in_loop = in_loop;
+            w.step_nodes.push(n);
         }
         match s {
             Step::Node(d) => {
                 let index = nodes.len() as u32;
-                nodes.push(node_of(loaded, d, Some(index)));
+                let mut n = node_of(w.loaded, d, Some(index));
+                n.in_loop = in_loop;
+                nodes.push(n);
             }
-            Step::ForEach { body, .. } | Step::For { body, .. } => {
-                walk(loaded, body, nodes, step_nodes);
+            Step::ForEach {
+                element,
+                index,
+                count,
+                body,
+                ..
+            } => {
+                w.loop_names.extend(
+                    std::iter::once(element)
+                        .chain(index)
+                        .chain(count)
+                        .map(|i| i.name.clone()),
+                );
+                walk(w, body, nodes, true);
+            }
+            Step::For { index, body, .. } => {
+                w.loop_names.push(index.name.clone());
+                walk(w, body, nodes, true);
             }
             Step::Branch {
                 then, otherwise, ..
             } => {
-                walk(loaded, then, nodes, step_nodes);
-                walk(loaded, otherwise, nodes, step_nodes);
+                walk(w, then, nodes, in_loop);
+                walk(w, otherwise, nodes, in_loop);
             }
             Step::Sequence(blocks, _) => {
                 for b in blocks {
-                    walk(loaded, b, nodes, step_nodes);
+                    walk(w, b, nodes, in_loop);
                 }
             }
             Step::Set { .. } | Step::Run(_) | Step::Return { .. } => {}
+        }
+    }
+}
+
+/// Marks every node that reads a loop's name, or a node so marked, through its inputs.
+fn mark_loop_readers(nodes: &mut [GraphNode], loop_names: &[String]) {
+    let ids: Vec<Option<String>> = nodes.iter().map(|n| n.id.clone()).collect();
+    loop {
+        let mut changed = false;
+        for i in 0..nodes.len() {
+            if nodes[i].in_loop {
+                continue;
+            }
+            let reads_loop = nodes[i].inputs.iter().any(|(_, source)| match source {
+                PinSource::Link { node, .. } => {
+                    match ids.iter().position(|id| id.as_ref() == Some(node)) {
+                        Some(from) => nodes[from].in_loop,
+                        None => loop_names.contains(node),
+                    }
+                }
+                _ => false,
+            });
+            if reads_loop {
+                nodes[i].in_loop = true;
+                changed = true;
+            }
+        }
+        if !changed {
+            break;
         }
     }
 }
@@ -303,11 +363,16 @@ pub fn build_body(loaded: &LoadedGraph, function: Option<&str>) -> Body {
         .enumerate()
         .map(|(i, d)| node_of(loaded, d, Some(i as u32)))
         .collect();
-    let mut steps = Vec::new();
+    let mut w = Walk {
+        loaded,
+        step_nodes: Vec::new(),
+        loop_names: Vec::new(),
+    };
     for list in lists {
-        walk(loaded, list, &mut nodes, &mut steps);
+        walk(&mut w, list, &mut nodes, false);
     }
-    nodes.extend(steps);
+    nodes.extend(w.step_nodes);
+    mark_loop_readers(&mut nodes, &w.loop_names);
 
     let mut links = Vec::new();
     for (to, n) in nodes.iter().enumerate() {
@@ -348,6 +413,36 @@ pub fn build_body(loaded: &LoadedGraph, function: Option<&str>) -> Body {
         positions,
         comments,
     }
+}
+
+/// `value` followed by "(last iteration)" when `node` is in a loop.
+fn last_iteration(node: &GraphNode, value: String) -> String {
+    if node.in_loop {
+        format!("{value} (last iteration)")
+    } else {
+        value
+    }
+}
+
+/// Node `i`'s name in a layout file: its id, else `label#n` for the n-th node of the body
+/// with that label and no id.
+fn layout_key(nodes: &[GraphNode], i: usize) -> String {
+    let n = &nodes[i];
+    match &n.id {
+        Some(id) => id.clone(),
+        None => {
+            let k = nodes[..i]
+                .iter()
+                .filter(|m| m.id.is_none() && m.label() == n.label())
+                .count();
+            format!("{}#{k}", n.label())
+        }
+    }
+}
+
+fn path_text(path: &Option<PathBuf>) -> String {
+    path.as_ref()
+        .map_or_else(String::new, |p| p.display().to_string())
 }
 
 /// Rough node height for the layout (header and one row per pin).
@@ -435,6 +530,14 @@ pub struct GraphViewState {
     fitted_rect: Rect,
     open: Option<Crumb>,
     id: egui::Id,
+    /// Where the user dragged nodes, every body (see [`crate::layout`]).
+    pub layout: Layout,
+    /// The layout file ("Save layout" and leaving the inspector write it).
+    pub layout_path: Option<PathBuf>,
+    /// Whether nodes moved since the layout was loaded or saved.
+    pub layout_dirty: bool,
+    /// The last layout load or save outcome: (ok, message).
+    pub layout_message: Option<(bool, String)>,
 }
 
 impl Default for GraphViewState {
@@ -454,6 +557,10 @@ impl Default for GraphViewState {
             fitted_rect: Rect::NOTHING,
             open: None,
             id: egui::Id::new("strider-graph-view"),
+            layout: Layout::default(),
+            layout_path: None,
+            layout_dirty: false,
+            layout_message: None,
         }
     }
 }
@@ -523,6 +630,62 @@ impl GraphViewState {
         self.selected.is_some()
     }
 
+    /// Reads the layout file of `graph` (`<stem>.layout.ron`, see [`crate::layout`]). On
+    /// error the message says why and nothing will be written over that file (there is
+    /// no "Save layout" until it is fixed and the inspector opened again).
+    pub fn load_layout(&mut self, graph: &std::path::Path) {
+        let path = Layout::path_for(graph);
+        match Layout::load(&path) {
+            Ok(layout) => {
+                self.layout = layout;
+                self.layout_message = None;
+                self.layout_path = Some(path);
+            }
+            Err(e) => {
+                self.layout_message = Some((false, format!("{e}; the layout is not saved")));
+                self.layout_path = None;
+            }
+        }
+        self.layout_dirty = false;
+        self.built = None;
+    }
+
+    /// Writes the layout file when nodes were moved since the last save (and a layout file
+    /// path is set).
+    ///
+    /// # Errors
+    /// When the file cannot be written.
+    pub fn save_layout(&mut self) -> Result<(), String> {
+        let Some(path) = &self.layout_path else {
+            return Ok(());
+        };
+        self.layout.save(path)?;
+        self.layout_dirty = false;
+        Ok(())
+    }
+
+    /// The body shown's name in the layout file.
+    fn layout_body(&self) -> &str {
+        self.path.last().map_or(TOP_LEVEL, |c| c.function.as_str())
+    }
+
+    /// Keeps in the layout the position of every node the user moved on the canvas.
+    fn note_moves(&mut self) {
+        let mut moved = Vec::new();
+        for (id, pos, _) in self.snarl.nodes_pos_ids() {
+            if self.body.positions.get(id.0).is_some_and(|p| *p != pos) {
+                moved.push((id.0, pos));
+            }
+        }
+        for (i, pos) in moved {
+            self.body.positions[i] = pos;
+            let key = layout_key(&self.body.nodes, i);
+            let body = self.layout_body().to_string();
+            self.layout.set(&body, &key, pos);
+            self.layout_dirty = true;
+        }
+    }
+
     /// Asks the view to fit every node on its next frame.
     pub fn request_fit(&mut self) {
         self.fit = true;
@@ -538,6 +701,15 @@ impl GraphViewState {
         self.built = Some(key);
         let function = self.path.last().map(|c| c.function.clone());
         self.body = build_body(loaded, function.as_deref());
+        let body = self.layout_body().to_string();
+        for i in 0..self.body.nodes.len() {
+            if let Some(p) = self
+                .layout
+                .position(&body, &layout_key(&self.body.nodes, i))
+            {
+                self.body.positions[i] = p;
+            }
+        }
         self.snarl = Snarl::new();
         for (n, p) in self.body.nodes.iter().zip(&self.body.positions) {
             self.snarl.insert_node(*p, n.clone());
@@ -668,6 +840,32 @@ impl GraphViewState {
             if ui.button("Fit").clicked() {
                 self.fit = true;
             }
+            if let Some(path) = &self.layout_path {
+                let hover = format!(
+                    "write where the nodes are to {} (the graph file is never rewritten); \
+                     leaving the inspector writes it too",
+                    path.display()
+                );
+                let label = if self.layout_dirty {
+                    "Save layout*"
+                } else {
+                    "Save layout"
+                };
+                if ui.button(label).on_hover_text(hover).clicked() {
+                    self.layout_message = Some(match self.save_layout() {
+                        Ok(()) => (true, format!("wrote {}", path_text(&self.layout_path))),
+                        Err(e) => (false, e),
+                    });
+                }
+            }
+            if let Some((ok, m)) = &self.layout_message {
+                let color = if *ok {
+                    Color32::from_rgb(120, 220, 120)
+                } else {
+                    Color32::from_rgb(255, 140, 110)
+                };
+                ui.label(egui::RichText::new(m).color(color));
+            }
             egui::ComboBox::from_id_salt("open-function")
                 .selected_text("Open function…")
                 .show_ui(ui, |ui| {
@@ -725,6 +923,7 @@ impl GraphViewState {
             .id(self.id)
             .style(style)
             .show(&mut self.snarl, &mut viewer, ui);
+        self.note_moves();
         // Shift-click selects in egui-snarl; a click on a node's title selects too.
         if let Some(first) = egui_snarl::ui::get_selected_nodes(self.id, ui.ctx()).first() {
             self.selected = Some(first.0);
@@ -756,6 +955,9 @@ impl GraphViewState {
         ui.label(format!("{} — {}", node.node_type, node.location));
         if node.index.is_none() {
             ui.label("exec step");
+        }
+        if node.in_loop {
+            ui.label("in a loop: the values of its last iteration");
         }
         ui.separator();
         egui::Grid::new("selected-pins")
@@ -961,7 +1163,7 @@ impl SnarlViewer<GraphNode> for Viewer<'_> {
             let value = match source {
                 PinSource::Literal(t) => Some(t.clone()),
                 PinSource::Default(t) => Some(format!("{t} (default)")),
-                _ => self.value_text(slot),
+                _ => self.value_text(slot).map(|v| last_iteration(n, v)),
             };
             response.on_hover_text(value.unwrap_or_else(|| "—".to_string()));
         }
@@ -987,7 +1189,7 @@ impl SnarlViewer<GraphNode> for Viewer<'_> {
             .and_then(|i| self.state_outputs.get(&(i, name.clone())).copied());
         let response = ui.label(name);
         if response.hovered() {
-            let value = self.value_text(slot);
+            let value = self.value_text(slot).map(|v| last_iteration(n, v));
             response.on_hover_text(value.unwrap_or_else(|| "—".to_string()));
         }
         let mut info = PinInfo::circle();

@@ -13,13 +13,14 @@
 //! - [`recording`]: the ring buffer of the last frames behind time travel;
 //! - [`viewport`]: the 3D view (world, skeleton, debug drawing, foot plants);
 //! - [`graph_view`]: the graph and its functions as node views (egui-snarl) with live
-//!   pin values and per-node times;
+//!   pin values and per-node times; [`layout`]: where the user dragged its nodes;
 //! - [`timeline`], [`variables`], [`plots`], [`quality`], [`diagnostics`]: the other panels;
 //! - [`app`]: the eframe app that lays them out and steps the session.
 
 pub mod app;
 pub mod diagnostics;
 pub mod graph_view;
+pub mod layout;
 pub mod plots;
 pub mod quality;
 pub mod recording;

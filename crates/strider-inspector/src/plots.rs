@@ -25,7 +25,7 @@ impl Series {
     /// The series' value in a recorded slot image, as a number (bools 0 or 1).
     #[must_use]
     pub fn value(&self, slots: &crate::recording::SlotImage) -> Option<f64> {
-        Some(match slots.read(self.ty, self.slot)? {
+        Some(match slots.read(self.ty, self.slot, &[])? {
             Value::Float(x) => f64::from(x),
             Value::Int(i) => f64::from(i),
             Value::Bool(b) => f64::from(u8::from(b)),

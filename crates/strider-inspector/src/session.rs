@@ -5,9 +5,15 @@
 //! rate: the mover takes [`MOVER_SUBSTEPS`] steps of 1/720 s per frame (the host's mover
 //! rate, as in scenarios), then the graph runs its `forward` event once with `dt = 1/60`.
 //! Slow motion and pause change how many steps run per wall-clock second, never `dt`.
+//!
+//! Every frame is recorded ([`crate::recording`]); full-state keyframes, taken every
+//! [`KEYFRAME_EVERY`] frames and after an overrides file is loaded, and the variable
+//! edits noted with their frame, let the simulation continue from any recorded frame
+//! ([`Session::resume_from`]).
 
-use crate::recording::Recorder;
+use crate::recording::{FrameMeta, Recorder};
 use crate::{InspectError, InspectOptions};
+use std::collections::VecDeque;
 use std::path::{Path, PathBuf};
 use std::sync::Arc;
 use std::sync::mpsc::{Receiver, channel};
@@ -17,7 +23,7 @@ use strider_graph::{LoadedGraph, SkeletonFile};
 use strider_host::mover::{MoveInput, Mover};
 use strider_host::overrides::Overrides;
 use strider_host::report::{PlantSpan, Report, ReportRig};
-use strider_host::scenario::{Scenario, Simulation};
+use strider_host::scenario::{Scenario, SimCheckpoint, Simulation};
 use strider_host::world::World;
 use strider_nodes::Value;
 use strider_vm::{FrameInput, InputPose, Instance, Program, VariableId};
@@ -30,6 +36,13 @@ pub const SIM_DT: f32 = 1.0 / SIM_HZ as f32;
 pub const MOVER_SUBSTEPS: u32 = 12;
 /// How many frames the recording keeps: 32 s at 60 Hz.
 pub const RECORD_FRAMES: usize = 32 * SIM_HZ as usize;
+/// Frames between two regular keyframes (1 s): resuming from a recorded frame re-runs at
+/// most this many frames (more only when resuming before the oldest keyframe kept).
+pub const KEYFRAME_EVERY: u64 = SIM_HZ as u64;
+/// Most keyframes kept: one a second covers the recording (32), the rest are for those
+/// taken after an overrides file is loaded. Past it the oldest go, and frames before the
+/// oldest kept can be shown but not resumed from.
+pub const MAX_KEYFRAMES: usize = 128;
 /// How long the watched files must stay quiet before a reload, so that an editor's
 /// several writes reload once.
 pub const RELOAD_QUIET: Duration = Duration::from_millis(150);
@@ -71,6 +84,29 @@ pub struct Quality {
     pub unavailable: Option<String>,
 }
 
+/// Where the character's motion stood before a keyframe's frame.
+#[derive(Clone, Debug)]
+enum KeyDrive {
+    /// The keyboard's mover.
+    Keyboard(Mover),
+    /// The scenario's simulation.
+    Scenario(SimCheckpoint),
+}
+
+/// The whole state before frame `frame` ran: what resuming from a recorded frame starts
+/// from, before running the recorded inputs again up to that frame.
+#[derive(Clone, Debug)]
+struct Keyframe {
+    /// The frame about to run.
+    frame: u64,
+    /// Simulated seconds before it.
+    time: f64,
+    /// The instance (variables, pin values, pose, program).
+    instance: Instance,
+    /// The mover or the scenario's place.
+    drive: KeyDrive,
+}
+
 /// A file watcher: events from notify, and which files matter.
 struct Watch {
     _watcher: notify::RecommendedWatcher,
@@ -109,6 +145,14 @@ pub struct Session {
     /// Per node location (`file:line:col`), mean µs per frame over the last half second
     /// (profiling builds only).
     profile_us: Option<std::collections::HashMap<String, f64>>,
+    /// Full-state keyframes, oldest first, all of the current program, world and drive.
+    keyframes: VecDeque<Keyframe>,
+    /// Take a keyframe before the next frame (something other than the input and the
+    /// edits noted in `edits` changed the state: replaying them would not get there).
+    keyframe_due: bool,
+    /// Variable edits ([`Session::set_tunables`]) since the oldest keyframe, each with the
+    /// frame that ran after it, oldest first: made again when frames run again.
+    edits: VecDeque<(u64, Vec<(VariableId, Value)>)>,
 }
 
 fn diagnostics_text(d: &[strider_graph::Diagnostic]) -> Vec<String> {
@@ -214,6 +258,9 @@ impl Session {
             quality_frame: 0,
             quality_job: None,
             profile_us: None,
+            keyframes: VecDeque::new(),
+            keyframe_due: true,
+            edits: VecDeque::new(),
         };
         session.start_profiling();
         session.status = if graph_problems.is_empty() {
@@ -358,6 +405,9 @@ impl Session {
         if !same_program {
             self.generation += 1;
         }
+        // The program, the world or the scenario may have changed: the keyframes could not
+        // replay the frames before.
+        self.forget_keyframes();
         self.graph_loaded = true;
         self.status = format!(
             "reloaded {} at frame {}",
@@ -422,6 +472,7 @@ impl Session {
             scenario: Box::new(scenario),
             sim: Box::new(sim),
         };
+        self.forget_keyframes();
     }
 
     /// Drives the character with [`Session::input`] from where it stands now (in the
@@ -433,12 +484,29 @@ impl Session {
             self.mover.settle(&self.world);
         }
         self.drive = Drive::Keyboard;
+        self.forget_keyframes();
     }
 
     /// Runs one simulation frame: moves the character (keyboard input or scenario), runs
-    /// the graph with `dt` = [`SIM_DT`] and debug drawing on, and records the frame.
+    /// the graph with `dt` = [`SIM_DT`] and debug drawing on, and records the frame. A
+    /// keyframe is taken first every [`KEYFRAME_EVERY`] frames, and after an overrides
+    /// file was loaded or the program, world or drive changed.
     pub fn step(&mut self) {
-        let (dt, to_world, velocity, standing, teleported) = match &mut self.drive {
+        if self.keyframe_due || self.frame.is_multiple_of(KEYFRAME_EVERY) {
+            self.take_keyframe();
+        }
+        let Some(meta) = self.simulate() else { return };
+        self.recorder.push(meta, &mut self.instance);
+        self.frame += 1;
+        if self.frame >= self.quality_frame + u64::from(SIM_HZ) / 2 {
+            self.update_quality();
+        }
+    }
+
+    /// Runs frame [`Session::frame`] without recording it: the mover or scenario, then the
+    /// graph. `None` when a scenario has no frame at all.
+    fn simulate(&mut self) -> Option<FrameMeta> {
+        let (dt, to_world, velocity, standing, teleported, move_input) = match &mut self.drive {
             Drive::Keyboard => {
                 for _ in 0..MOVER_SUBSTEPS {
                     self.mover.step(
@@ -453,6 +521,7 @@ impl Session {
                     self.mover.velocity(),
                     self.input.is_standing_still(),
                     false,
+                    self.input,
                 )
             }
             Drive::Scenario { scenario, sim, .. } => {
@@ -460,10 +529,7 @@ impl Session {
                     Some(f) => f,
                     None => {
                         **sim = Simulation::new(scenario, SIM_HZ);
-                        match sim.next_frame() {
-                            Some(f) => f,
-                            None => return,
-                        }
+                        sim.next_frame()?
                     }
                 };
                 (
@@ -472,6 +538,7 @@ impl Session {
                     frame.velocity,
                     frame.standing_still,
                     frame.teleported,
+                    MoveInput::STAND,
                 )
             }
         };
@@ -482,23 +549,150 @@ impl Session {
         };
         self.instance.run_forward(&input, &*self.world, true);
         self.time += f64::from(dt);
-        self.recorder.push(
-            crate::recording::FrameMeta {
-                frame: self.frame,
-                time: self.time,
-                dt,
-                generation: self.generation,
-                to_world,
-                velocity,
-                standing_still: standing,
-                teleported,
-            },
-            &mut self.instance,
-        );
-        self.frame += 1;
-        if self.frame >= self.quality_frame + u64::from(SIM_HZ) / 2 {
-            self.update_quality();
+        Some(FrameMeta {
+            frame: self.frame,
+            time: self.time,
+            dt,
+            generation: self.generation,
+            to_world,
+            velocity,
+            standing_still: standing,
+            teleported,
+            input: move_input,
+        })
+    }
+
+    /// Keeps the whole state before the next frame (clones the instance: a few
+    /// allocations, about once a second). Drops keyframes that can no longer serve: those
+    /// before the oldest recorded frame, and the oldest past [`MAX_KEYFRAMES`]; and the
+    /// edits before the oldest keyframe kept.
+    fn take_keyframe(&mut self) {
+        self.keyframe_due = false;
+        let oldest = self.recorder.get(0).map_or(self.frame, |f| f.meta.frame);
+        while self.keyframes.len() >= MAX_KEYFRAMES
+            || self.keyframes.front().is_some_and(|k| k.frame < oldest)
+        {
+            self.keyframes.pop_front();
         }
+        let drive = match &self.drive {
+            Drive::Keyboard => KeyDrive::Keyboard(self.mover.clone()),
+            Drive::Scenario { sim, .. } => KeyDrive::Scenario(sim.checkpoint()),
+        };
+        // Edits before the oldest keyframe can no longer be run again.
+        let first = self.keyframes.front().map_or(self.frame, |k| k.frame);
+        while self.edits.front().is_some_and(|(f, _)| *f < first) {
+            self.edits.pop_front();
+        }
+        self.keyframes.push_back(Keyframe {
+            frame: self.frame,
+            time: self.time,
+            instance: self.instance.clone(),
+            drive,
+        });
+    }
+
+    /// Forgets every keyframe (the program, world or drive changed) and takes one before
+    /// the next frame.
+    fn forget_keyframes(&mut self) {
+        self.keyframes.clear();
+        self.edits.clear();
+        self.keyframe_due = true;
+    }
+
+    /// Continues the simulation from recorded frame `index` (counted from the oldest kept):
+    /// restores the nearest keyframe at or before it, runs the recorded inputs and the
+    /// variable edits again up to it (the frames come out bit-identical: the simulation is
+    /// deterministic), then forgets the recorded frames and the edits after it (variables
+    /// are as they were at that frame). The next [`Session::step`] runs the frame
+    /// that follows. Nothing changes on error.
+    ///
+    /// # Errors
+    /// When `index` is not recorded, was recorded by an earlier program, or lies before
+    /// the oldest keyframe kept (before a reload, a change of drive or scenario, or past
+    /// [`MAX_KEYFRAMES`]).
+    pub fn resume_from(&mut self, index: usize) -> Result<(), String> {
+        let target = self
+            .recorder
+            .get(index)
+            .map(|f| f.meta)
+            .ok_or_else(|| format!("frame {index} is not recorded"))?;
+        if target.generation != self.generation {
+            return Err(format!(
+                "cannot resume from t {:.2} s: it was recorded before the graph changed",
+                target.time
+            ));
+        }
+        // The nearest keyframe at or before the frame whose frames since are all still
+        // recorded (frame numbers are consecutive in the recording).
+        let oldest = self.recorder.get(0).map_or(target.frame, |f| f.meta.frame);
+        let key = self
+            .keyframes
+            .iter()
+            .rposition(|k| k.frame <= target.frame)
+            .filter(|&k| self.keyframes[k].frame >= oldest)
+            .ok_or_else(|| {
+                let since = self
+                    .keyframes
+                    .iter()
+                    .find(|k| k.frame >= oldest)
+                    .map_or(self.time, |k| k.time);
+                format!(
+                    "cannot resume from t {:.2} s: the simulation can be resumed from \
+                     t {since:.2} s on (the first keyframe still recorded, after the last \
+                     reload or change of drive)",
+                    target.time
+                )
+            })?;
+        let key = &self.keyframes[key];
+        let first = index - (target.frame - key.frame) as usize;
+        match (&key.drive, &mut self.drive) {
+            (KeyDrive::Keyboard(m), Drive::Keyboard) => self.mover = m.clone(),
+            (KeyDrive::Scenario(c), Drive::Scenario { sim, .. }) => sim.restore(c),
+            // Keyframes are forgotten when the drive changes.
+            _ => return Err("the keyframe's drive is not the current one".to_string()),
+        }
+        self.instance.clone_from(&key.instance);
+        self.frame = key.frame;
+        self.time = key.time;
+        // Edits noted with the keyframe's frame were made before it was taken: it has them.
+        let mut edit = self.edits.partition_point(|(f, _)| *f <= key.frame);
+        for i in first..=index {
+            while let Some((f, values)) = self.edits.get(edit)
+                && *f == self.frame
+            {
+                let values = values.clone();
+                // It was applied the first time; it applies the same way again.
+                let _ = self.apply_edit(&values);
+                edit += 1;
+            }
+            if let Some(f) = self.recorder.get(i) {
+                self.input = f.meta.input;
+            }
+            self.simulate();
+            self.frame += 1;
+        }
+        let same = self
+            .recorder
+            .get(index)
+            .is_some_and(|f| f.globals == self.instance.pose_mut().globals());
+        self.recorder.truncate(index + 1);
+        self.keyframes.retain(|k| k.frame <= target.frame);
+        // Edits made after the frame are undone with the frames after it.
+        self.edits.retain(|(f, _)| *f <= target.frame);
+        self.quality_frame = self.frame;
+        self.status = if same {
+            format!(
+                "resumed from frame {} (t {:.2} s)",
+                target.frame, target.time
+            )
+        } else {
+            format!(
+                "resumed from frame {} (t {:.2} s), but the replayed pose differs from the \
+                 recorded one: the simulation is not deterministic",
+                target.frame, target.time
+            )
+        };
+        Ok(())
     }
 
     fn start_profiling(&mut self) {
@@ -590,24 +784,75 @@ impl Session {
         }
     }
 
-    /// Sets a variable by id on the live instance (slider edits).
+    /// Sets a variable by id on the live instance (slider edits). Setting a tunable runs
+    /// `construction` again with the new value (see [`Session::set_tunables`]).
     ///
     /// # Errors
-    /// As [`Instance::set_variable`].
+    /// As [`Instance::set_variable`]; nothing changes then.
     pub fn set_variable(&mut self, id: VariableId, value: &Value) -> Result<(), String> {
-        self.instance
-            .set_variable(id, value)
-            .map_err(|e| e.to_string())
+        self.set_tunables(&[(id, value.clone())])
     }
 
-    /// Sets every tunable variable back to its default from the graph file.
-    pub fn reset_tunables(&mut self) {
+    /// Sets variables on the live instance (slider edits), noting the edit with the frame
+    /// that runs next (so that resuming from a recorded frame makes it again). When any of
+    /// them is tunable,
+    /// `construction` runs again on a fresh instance with the new tunables, and every
+    /// other variable whose value `construction` now gives differently from what it gave
+    /// with the previous tunables takes the new value; the others keep their live values
+    /// (the state the frames built). The program does not say which variables
+    /// `construction` reads, so this happens on any tunable change; it costs two runs of
+    /// `construction`.
+    ///
+    /// # Errors
+    /// The first value that does not fit its variable (wrong type, unknown bone); nothing
+    /// changes then.
+    pub fn set_tunables(&mut self, values: &[(VariableId, Value)]) -> Result<(), String> {
+        self.apply_edit(values)?;
+        // Kept to make the same edit when running the frames again (resume_from).
+        self.edits.push_back((self.frame, values.to_vec()));
+        Ok(())
+    }
+
+    /// [`Session::set_tunables`] without noting the edit.
+    fn apply_edit(&mut self, values: &[(VariableId, Value)]) -> Result<(), String> {
+        let mut next = self.instance.clone();
+        for (id, value) in values {
+            next.set_variable(*id, value).map_err(|e| e.to_string())?;
+        }
         let program = Arc::clone(&self.program);
-        for (i, v) in program.variables().iter().enumerate() {
-            if v.tunable.is_some() {
-                let _ = self.instance.set_variable(VariableId(i as u32), &v.default);
+        let tunable = values
+            .iter()
+            .any(|(id, _)| program.variable(*id).tunable.is_some());
+        if tunable {
+            let skeleton = &self.skeleton.skeleton;
+            let before = constructed(&program, &self.instance, skeleton, &self.world);
+            let after = constructed(&program, &next, skeleton, &self.world);
+            if let (Some(before), Some(after)) = (before, after) {
+                for (i, v) in program.variables().iter().enumerate() {
+                    let id = VariableId(i as u32);
+                    if v.tunable.is_none() && after.variable(id) != before.variable(id) {
+                        let _ = next.set_variable(id, &after.variable(id));
+                    }
+                }
             }
         }
+        self.instance = next;
+        Ok(())
+    }
+
+    /// Sets every tunable variable back to its default from the graph file (and runs
+    /// `construction` again, as [`Session::set_tunables`]).
+    pub fn reset_tunables(&mut self) {
+        let defaults: Vec<(VariableId, Value)> = self
+            .program
+            .variables()
+            .iter()
+            .enumerate()
+            .filter(|(_, v)| v.tunable.is_some())
+            .map(|(i, v)| (VariableId(i as u32), v.default.clone()))
+            .collect();
+        // The defaults are the variables' own: they fit.
+        let _ = self.set_tunables(&defaults);
     }
 
     /// Writes the current tunable values as an overrides file at `path`. Refuses to write
@@ -642,6 +887,7 @@ impl Session {
             .rebind(Arc::clone(&self.skeleton.skeleton), &*self.world)
             .map_err(|e| e.to_string())?;
         self.start_profiling();
+        self.keyframe_due = true;
         Ok(o.entries.len())
     }
 
@@ -766,18 +1012,7 @@ fn carry_variables(from: &Instance, to: &mut Instance, skeleton: &SkeletonFile, 
     }
     let _ = to.rebind(Arc::clone(&skeleton.skeleton), world);
     // What the old program's `construction` gave, with the same tunables.
-    let old_constructed = Instance::new(Arc::clone(&old), Arc::clone(from.pose().skeleton()))
-        .ok()
-        .map(|mut fresh| {
-            for (j, v) in old.variables().iter().enumerate() {
-                if v.tunable.is_some() {
-                    let id = VariableId(j as u32);
-                    let _ = fresh.set_variable(id, &from.variable(id));
-                }
-            }
-            let _ = fresh.rebind(Arc::clone(from.pose().skeleton()), world);
-            fresh
-        });
+    let old_constructed = constructed(&old, from, from.pose().skeleton(), world);
     for (i, v) in new.variables().iter().enumerate() {
         let id = VariableId(i as u32);
         if v.tunable.is_some() {
@@ -791,4 +1026,24 @@ fn carry_variables(from: &Instance, to: &mut Instance, skeleton: &SkeletonFile, 
             let _ = to.set_variable(id, &from.variable(j));
         }
     }
+}
+
+/// A fresh instance of `program` on `skeleton` whose tunables are those of `tunables` (an
+/// instance of the same program), after `construction` ran in `world`; `None` when the
+/// skeleton lacks bones the program names.
+fn constructed(
+    program: &Arc<Program>,
+    tunables: &Instance,
+    skeleton: &Arc<strider_core::Skeleton>,
+    world: &World,
+) -> Option<Instance> {
+    let mut fresh = Instance::new(Arc::clone(program), Arc::clone(skeleton)).ok()?;
+    for (j, v) in program.variables().iter().enumerate() {
+        if v.tunable.is_some() {
+            let id = VariableId(j as u32);
+            let _ = fresh.set_variable(id, &tunables.variable(id));
+        }
+    }
+    fresh.rebind(Arc::clone(skeleton), world).ok()?;
+    Some(fresh)
 }

@@ -1,7 +1,8 @@
 //! Playback and time travel: play, pause, single step, slow motion, and a timeline over
 //! the recorded frames. Scrubbing pauses the simulation and shows the chosen frame in
-//! every panel; playing again returns to the live frame (the simulation continues from
-//! where it was paused, it is not rewound).
+//! every panel; playing (or stepping) from there continues the simulation from that frame
+//! (the recorded frames after it are dropped, see [`crate::Session::resume_from`]); "Live"
+//! goes back to the newest frame without rewinding.
 
 use crate::recording::Recorder;
 use egui::Ui;
@@ -24,6 +25,9 @@ pub struct Playback {
     pub accumulator: f64,
     /// Run exactly one frame at the next update.
     pub step_once: bool,
+    /// Continue the simulation from this recorded frame (index from the oldest kept) at
+    /// the next update, before any frame runs.
+    pub resume: Option<usize>,
 }
 
 impl Default for Playback {
@@ -34,6 +38,7 @@ impl Default for Playback {
             cursor: None,
             accumulator: 0.0,
             step_once: false,
+            resume: None,
         }
     }
 }
@@ -88,17 +93,19 @@ pub fn show(ui: &mut Ui, playback: &mut Playback, recorder: &Recorder) {
         } else {
             "▶ Play"
         };
-        if ui.button(label).on_hover_text("Space").clicked() {
-            toggle(playback);
+        if ui
+            .button(label)
+            .on_hover_text("Space; from a frame scrubbed back, play on from it")
+            .clicked()
+        {
+            toggle(playback, recorder);
         }
         if ui
             .button("⏭ Step")
-            .on_hover_text("run one frame (.)")
+            .on_hover_text("run one frame (.); from a frame scrubbed back, the one after it")
             .clicked()
         {
-            playback.playing = false;
-            playback.cursor = None;
-            playback.step_once = true;
+            step(playback, recorder);
         }
         ui.add(
             egui::Slider::new(&mut playback.speed, SPEED_RANGE.0..=SPEED_RANGE.1)
@@ -106,7 +113,11 @@ pub fn show(ui: &mut Ui, playback: &mut Playback, recorder: &Recorder) {
                 .text("speed")
                 .suffix("×"),
         );
-        if ui.button("Live").clicked() {
+        if ui
+            .button("Live")
+            .on_hover_text("show the newest frame (the simulation is not rewound)")
+            .clicked()
+        {
             playback.cursor = None;
         }
         let Some(newest) = recorder.len().checked_sub(1) else {
@@ -134,12 +145,27 @@ pub fn show(ui: &mut Ui, playback: &mut Playback, recorder: &Recorder) {
     });
 }
 
-/// Play ↔ pause; playing returns to the live frame.
-pub fn toggle(playback: &mut Playback) {
+/// Play ↔ pause; playing from a recorded frame before the newest continues the
+/// simulation from it ([`Playback::resume`]).
+pub fn toggle(playback: &mut Playback, recorder: &Recorder) {
     playback.playing = !playback.playing;
     if playback.playing {
-        playback.cursor = None;
+        playback.resume = scrubbed(playback, recorder);
     }
+}
+
+/// Runs one frame and pauses; from a recorded frame before the newest, the frame after it.
+pub fn step(playback: &mut Playback, recorder: &Recorder) {
+    playback.playing = false;
+    playback.resume = scrubbed(playback, recorder);
+    playback.cursor = None;
+    playback.step_once = true;
+}
+
+/// The frame shown when it is not the newest.
+fn scrubbed(playback: &Playback, recorder: &Recorder) -> Option<usize> {
+    let shown = playback.cursor?;
+    (shown + 1 < recorder.len()).then_some(shown)
 }
 
 #[cfg(test)]

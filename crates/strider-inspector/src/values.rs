@@ -4,7 +4,7 @@
 use crate::recording::RecordedFrame;
 use std::fmt::Write as _;
 use strider_core::Skeleton;
-use strider_nodes::{Value, ValueType};
+use strider_nodes::{Elem, Value, ValueType};
 use strider_vm::Instance;
 
 /// Where the panels read values: the live instance, or a recorded frame (time travel).
@@ -19,12 +19,15 @@ pub enum ValueSource<'a> {
         frame: &'a RecordedFrame,
         /// Whether the frame was run by the current program.
         same_program: bool,
+        /// The skeleton's bone names (storage order), to name recorded bones.
+        bone_names: &'a [String],
     },
 }
 
 impl ValueSource<'_> {
-    /// The value of slot `slot` of type `ty`, or `None` when not available (arrays and
-    /// names of recorded frames, frames of an earlier program).
+    /// The value of slot `slot` of type `ty`, or `None` when not available (names and
+    /// arrays over the recording's budget in recorded frames, frames of an earlier
+    /// program).
     #[must_use]
     pub fn read(&self, ty: ValueType, slot: u32) -> Option<Value> {
         match self {
@@ -36,16 +39,25 @@ impl ValueSource<'_> {
                         .get(slot as usize)
                         .map(|&b| bone_value(instance, b));
                 }
+                if ty == ValueType::Array(Elem::Bone) {
+                    return slots.bone_arrays.get(slot as usize).map(|a| {
+                        Value::Array(
+                            Elem::Bone,
+                            a.iter().map(|&b| bone_value(instance, b)).collect(),
+                        )
+                    });
+                }
                 Some(slots.read(ty, slot))
             }
             ValueSource::Recorded {
                 frame,
                 same_program,
+                bone_names,
             } => {
                 if !same_program {
                     return None;
                 }
-                frame.slots.read(ty, slot)
+                frame.slots.read(ty, slot, bone_names)
             }
         }
     }
@@ -58,6 +70,7 @@ impl ValueSource<'_> {
             ValueSource::Recorded {
                 frame,
                 same_program: true,
+                ..
             } => frame.slots.floats.get(slot as usize).copied(),
             ValueSource::Recorded { .. } => None,
         }
@@ -75,6 +88,7 @@ impl<'a> ValueSource<'a> {
                 Some(frame) => ValueSource::Recorded {
                     frame,
                     same_program: frame.meta.generation == session.generation(),
+                    bone_names: session.skeleton().skeleton.names(),
                 },
                 None => ValueSource::Live(session.instance()),
             },

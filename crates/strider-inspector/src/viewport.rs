@@ -12,7 +12,7 @@ use glam::{Quat, Vec2, Vec3};
 use strider_core::{DebugColor, DebugPrimitive, Transform};
 use strider_graph::SkeletonFile;
 use strider_host::report::PlantSpan;
-use strider_host::world::{ShapeDesc, World, wave_height};
+use strider_host::world::{ShapeDesc, World};
 
 /// Vertical field of view, degrees.
 const FOV_DEG: f32 = 50.0;
@@ -237,45 +237,20 @@ fn world_triangles(world: &World, out: &mut Vec<Tri>) {
     for shape in &world.desc().shapes {
         match *shape {
             ShapeDesc::Ground { .. } => {}
-            ShapeDesc::Box {
-                center,
-                half_extents,
-                yaw,
-            } => push_box(
-                out,
-                Vec3::from(center),
-                Vec3::from(half_extents),
-                Quat::from_rotation_z(yaw.to_radians()),
-                SOLID,
-            ),
-            ShapeDesc::Platform {
-                center,
-                half_size,
-                top,
-                yaw,
-                depth,
-            } => push_box(
-                out,
-                Vec3::new(center.0, center.1, top - depth * 0.5),
-                Vec3::new(half_size.0, half_size.1, depth * 0.5),
-                Quat::from_rotation_z(yaw.to_radians()),
-                SOLID,
-            ),
-            ShapeDesc::Ramp {
-                start,
-                yaw,
-                angle,
-                length,
-                width,
-            } => {
+            ShapeDesc::Box { .. } | ShapeDesc::Platform { .. } | ShapeDesc::Stairs { .. } => {
+                // The boxes the world collides with; steps alternate in shade.
+                let stairs = matches!(shape, ShapeDesc::Stairs { .. });
+                for (i, b) in shape.solid_boxes().enumerate() {
+                    let color = if stairs && i % 2 == 0 { STEP } else { SOLID };
+                    push_box(out, b.center, b.half_extents, b.rotation, color);
+                }
+            }
+            ShapeDesc::Ramp { start, yaw, .. } => {
+                let Some(corners) = shape.ramp_corners() else {
+                    continue;
+                };
                 let r = Quat::from_rotation_z(yaw.to_radians());
-                let o = Vec3::from(start);
-                let h = length * angle.to_radians().tan();
-                let p = |x: f32, y: f32, z: f32| o + r * Vec3::new(x, y, z);
-                let w = width * 0.5;
-                let (nl, nr) = (p(-w, 0.0, 0.0), p(w, 0.0, 0.0));
-                let (fl, fr) = (p(-w, length, 0.0), p(w, length, 0.0));
-                let (tl, tr) = (p(-w, length, h), p(w, length, h));
+                let [nl, nr, fl, fr, tl, tr] = corners.map(|c| Vec3::from(start) + r * c);
                 push_quad(out, nl, nr, tr, tl, SOLID);
                 push_quad(out, fl, fr, tr, tl, SOLID);
                 out.push(Tri {
@@ -287,62 +262,12 @@ fn world_triangles(world: &World, out: &mut Vec<Tri>) {
                     color: SOLID,
                 });
             }
-            ShapeDesc::Stairs {
-                start,
-                yaw,
-                width,
-                steps,
-                rise,
-                run,
-                landing,
-            } => {
-                let r = Quat::from_rotation_z(yaw.to_radians());
-                let o = Vec3::from(start);
-                let steps = steps.min(200);
-                for i in 0..steps {
-                    let top = (i + 1) as f32 * rise;
-                    let mid = r * Vec3::new(0.0, (i as f32 + 0.5) * run, top * 0.5);
-                    push_box(
-                        out,
-                        o + mid,
-                        Vec3::new(width * 0.5, run * 0.5, top * 0.5),
-                        r,
-                        if i % 2 == 0 { STEP } else { SOLID },
-                    );
-                }
-                if landing > 0.0 {
-                    let top = steps as f32 * rise;
-                    let mid = r * Vec3::new(0.0, steps as f32 * run + landing * 0.5, top * 0.5);
-                    push_box(
-                        out,
-                        o + mid,
-                        Vec3::new(width * 0.5, landing * 0.5, top * 0.5),
-                        r,
-                        SOLID,
-                    );
-                }
-            }
-            ShapeDesc::Heightfield {
-                origin,
-                size,
-                cells,
-                ref heights,
-                ref waves,
-            } => {
+            ShapeDesc::Heightfield { cells, .. } => {
                 let (cx, cy) = (cells.0.max(1), cells.1.max(1));
                 let sx = cx.div_ceil(MAX_FIELD_CELLS).max(1);
                 let sy = cy.div_ceil(MAX_FIELD_CELLS).max(1);
-                let vertex = |i: u32, j: u32| {
-                    let (i, j) = (i.min(cx), j.min(cy));
-                    let x = origin.0 + i as f32 * size.0 / cx as f32;
-                    let y = origin.1 + j as f32 * size.1 / cy as f32;
-                    let explicit = heights
-                        .get((j * (cx + 1) + i) as usize)
-                        .copied()
-                        .unwrap_or(0.0);
-                    let z = origin.2 + explicit + wave_height(waves, (origin.0, origin.1), x, y);
-                    Vec3::new(x, y, z)
-                };
+                // The collision mesh's own vertices (every sx-th, sy-th when drawn coarser).
+                let vertex = |i: u32, j: u32| shape.heightfield_vertex(i, j).unwrap_or_default();
                 let mut j = 0;
                 while j < cy {
                     let mut i = 0;

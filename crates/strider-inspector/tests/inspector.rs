@@ -13,7 +13,8 @@ use glam::{Vec2, Vec3};
 use std::path::{Path, PathBuf};
 use std::time::{Duration, Instant};
 use strider_host::mover::{Facing, MoveInput};
-use strider_inspector::values::ValueSource;
+use strider_inspector::recording::ARRAY_BUDGET;
+use strider_inspector::values::{ValueSource, format_value};
 use strider_inspector::{InspectOptions, InspectorApp, Session};
 use strider_nodes::Value;
 
@@ -213,6 +214,48 @@ fn scrubbing_back_shows_older_values() {
     harness.get_by_label("▶ Play").click();
     harness.run_steps(2);
     assert!(harness.state().playback.cursor.is_none());
+}
+
+#[test]
+fn scrubbing_back_shows_older_array_values() {
+    let mut harness = harness(options(&PathBuf::from(GRAPHS).join("locomotion.ron")));
+    let (id, ty, slot) = {
+        let program = harness.state().session.program();
+        let id = program
+            .variable_id("PerFootCyclePercentArray")
+            .expect("declared");
+        (id, program.variable(id).ty, program.variable(id).slot)
+    };
+    // Walk 2 s, noting the array's live value after each frame.
+    let mut live = Vec::new();
+    for _ in 0..120 {
+        walk(&mut harness, Vec2::Y, 150.0, 1);
+        let app = harness.state();
+        live.push((app.session.frame() - 1, app.session.instance().variable(id)));
+    }
+    let newest = live.last().expect("frames").1.clone();
+    // Travel back 1 s: the array as it was then, not as it is now.
+    let expected = {
+        let app = harness.state_mut();
+        app.playback.scrub_back(app.session.recorder(), 1.0);
+        let shown = app.playback.shown(app.session.recorder()).expect("a frame");
+        let frame = app.session.recorder().get(shown).expect("kept").meta.frame;
+        let (_, then) = live
+            .iter()
+            .find(|(f, _)| *f == frame)
+            .expect("a frame of the walk");
+        let value = ValueSource::of(&app.session, Some(shown)).read(ty, slot);
+        assert_eq!(value.as_ref(), Some(then));
+        assert!(matches!(then, Value::Array(_, items) if items.len() == 2));
+        assert_ne!(*then, newest, "the feet's cycles moved on in 1 s");
+        then.clone()
+    };
+    // The variables panel shows it too.
+    harness.state_mut().variables.filter = "PerFootCyclePercentArray".to_string();
+    harness.run_steps(2);
+    harness.get_by_label("All variables (frame shown)").click();
+    harness.run_steps(2);
+    harness.get_by_label(&format_value(&expected));
 }
 
 /// Highest world height of the left ball joint over the recorded frames of the current
@@ -502,24 +545,67 @@ fn the_recording_keeps_a_bounded_number_of_frames() {
             .zip(recorder.iter().skip(1))
             .all(|(a, b)| b.meta.frame == a.meta.frame + 1)
     );
-    // A frame holds the instance's scalar slots, the pose and the debug drawing.
+    // The oldest frames came after the first keyframe (frame 0, no longer recorded) and
+    // before the next one: shown, but not resumed from; a later one is.
+    let first_kept = session.recorder().get(0).expect("kept").meta.frame;
+    assert_eq!(first_kept, 30);
+    let err = session.resume_from(0).expect_err("no keyframe since");
+    assert!(err.contains("cannot resume from t 0.52 s"), "{err}");
+    assert!(err.contains("resumed from t 1.00 s on"), "{err}");
+    let recorder = session.recorder();
+    assert_eq!(recorder.len(), capacity);
+    // A frame holds the instance's slots (array items included), the pose and the debug
+    // drawing.
     let slots = session.instance().slots();
     let scalars = slots.bools.len()
         + 4 * (slots.ints.len() + slots.floats.len() + slots.bones.len())
         + std::mem::size_of::<glam::Vec3>() * slots.vec3s.len()
         + std::mem::size_of::<glam::Quat>() * slots.quats.len()
         + std::mem::size_of::<strider_core::Transform>() * slots.transforms.len();
+    let items = slots.bool_arrays.iter().map(Vec::len).sum::<usize>()
+        + 4 * slots.int_arrays.iter().map(Vec::len).sum::<usize>()
+        + 4 * slots.float_arrays.iter().map(Vec::len).sum::<usize>()
+        + 4 * slots.bone_arrays.iter().map(Vec::len).sum::<usize>()
+        + std::mem::size_of::<glam::Vec3>() * slots.vec3_arrays.iter().map(Vec::len).sum::<usize>()
+        + std::mem::size_of::<glam::Quat>() * slots.quat_arrays.iter().map(Vec::len).sum::<usize>()
+        + std::mem::size_of::<strider_core::Transform>()
+            * slots.transform_arrays.iter().map(Vec::len).sum::<usize>();
+    assert!(items > 0, "the locomotion graph has arrays");
+    assert!(
+        items <= ARRAY_BUDGET,
+        "{items} bytes of arrays fit the budget"
+    );
     let frame = recorder.latest().expect("kept");
-    assert_eq!(frame.slots.bytes(), scalars);
+    assert!(frame.slots.bytes() >= scalars + items);
+    // The array items' memory stays within the budget in every frame.
+    assert!(
+        recorder
+            .iter()
+            .all(|f| f.slots.array_capacity_bytes() <= ARRAY_BUDGET)
+    );
     let per_frame = recorder.bytes_per_frame();
-    assert!(per_frame >= scalars);
+    assert!(per_frame >= scalars + items);
+    let total = recorder.bytes();
     eprintln!(
-        "recording: {per_frame} bytes in the newest frame ({} of slots, {} debug primitives), \
-         {:.1} MB for {capacity} frames",
+        "recording: {per_frame} bytes in the newest frame ({} of slots, of which {items} of \
+         array items; {} debug primitives), {:.1} MB for {capacity} frames",
         frame.slots.bytes(),
         frame.debug.len(),
-        recorder.bytes() as f64 / 1.0e6
+        total as f64 / 1.0e6
     );
+
+    // Resuming inside the full ring keeps the frames before, oldest first, and drops the
+    // rest; the ring then fills again.
+    session
+        .resume_from(100)
+        .expect("frame 130: after the keyframe at 120");
+    let recorder = session.recorder();
+    assert_eq!(recorder.len(), 101);
+    assert_eq!(recorder.get(0).expect("kept").meta.frame, 30);
+    assert_eq!(recorder.latest().expect("kept").meta.frame, 130);
+    session.step();
+    assert_eq!(session.recorder().len(), 102);
+    assert_eq!(session.recorder().latest().expect("kept").meta.frame, 131);
 }
 
 #[cfg(feature = "profile")]
@@ -715,4 +801,340 @@ fn strafing_faces_the_point_under_the_mouse() {
     // W still walks along the camera's forward (+Y) while facing the aim.
     let p = app.session.component_to_world().translation;
     assert!(p.y > 50.0, "{p:?}");
+}
+
+/// The keyboard input of frame `k` of a walk that turns and stops.
+fn turning_walk(k: u64) -> MoveInput {
+    let direction = match k {
+        0..90 => Vec2::Y,
+        90..150 => Vec2::new(1.0, 1.0).normalize(),
+        150..200 => Vec2::X,
+        _ => Vec2::ZERO,
+    };
+    MoveInput {
+        direction,
+        speed: if k < 120 { 150.0 } else { 400.0 },
+        facing: Facing::Velocity,
+    }
+}
+
+#[test]
+fn resuming_from_an_earlier_frame_replays_it_exactly_and_goes_on() {
+    let mut session =
+        Session::open(options(&PathBuf::from(GRAPHS).join("locomotion.ron"))).expect("loads");
+    let lift = session
+        .program()
+        .variable_id("SplineLiftEnd")
+        .expect("declared");
+    // 4 s walking, turning, running and stopping, with a slider edit at frame 100.
+    for k in 0..240 {
+        if k == 100 {
+            session
+                .set_variable(lift, &Value::Float(45.0))
+                .expect("a float");
+        }
+        session.input = turning_walk(k);
+        session.step();
+    }
+    let original: Vec<_> = session
+        .recorder()
+        .iter()
+        .map(|f| (f.meta, f.globals.clone(), f.slots.clone()))
+        .collect();
+    assert_eq!(original.len(), 240);
+
+    // Resume from frame 145 (t 2.43 s): the state after it is the recorded one, bit for bit.
+    session.resume_from(145).expect("resumes");
+    assert!(
+        !session.status().contains("differs"),
+        "{}",
+        session.status()
+    );
+    assert_eq!(session.frame(), 146);
+    assert_eq!(session.time(), original[145].0.time);
+    assert_eq!(
+        session.recorder().len(),
+        146,
+        "the recorded future is dropped"
+    );
+    let mut slots = strider_inspector::recording::SlotImage::default();
+    slots.copy_from(session.instance().slots());
+    assert_eq!(slots, original[145].2, "every pin value and variable");
+    let mut instance = session.instance().clone();
+    assert_eq!(instance.pose_mut().globals(), original[145].1.as_slice());
+    assert_eq!(session.instance().variable(lift), Value::Float(45.0));
+    // The next frames, with the same input, are the ones recorded the first time.
+    for k in 146..240 {
+        session.input = turning_walk(k);
+        session.step();
+        let f = session.recorder().latest().expect("recorded");
+        let (meta, globals, slots) = &original[k as usize];
+        assert_eq!(f.meta.frame, meta.frame);
+        assert_eq!(f.meta.to_world, meta.to_world, "frame {k}");
+        assert_eq!(&f.globals, globals, "frame {k}");
+        assert_eq!(&f.slots, slots, "frame {k}");
+    }
+
+    // Between the keyframe before the edit (frame 60) and the next (frame 120): the edit
+    // is made again on the way, and the state is the recorded one.
+    session.resume_from(110).expect("resumes");
+    assert!(
+        !session.status().contains("differs"),
+        "{}",
+        session.status()
+    );
+    slots.copy_from(session.instance().slots());
+    assert_eq!(slots, original[110].2);
+    assert_eq!(session.instance().variable(lift), Value::Float(45.0));
+
+    // Back before the edit: the tunable is what it was then, and walking on differs from
+    // the first time (the original walk turned at frame 150, this one keeps going).
+    session.resume_from(90).expect("resumes");
+    assert_eq!(session.instance().variable(lift), Value::Float(30.0));
+    let mut instance = session.instance().clone();
+    assert_eq!(instance.pose_mut().globals(), original[90].1.as_slice());
+    for _ in 0..60 {
+        session.input = MoveInput {
+            direction: Vec2::NEG_X,
+            speed: 150.0,
+            facing: Facing::Velocity,
+        };
+        session.step();
+    }
+    let now = session.component_to_world().translation;
+    let then = original[150].0.to_world.translation;
+    assert!(now.x < then.x - 100.0, "{now:?} vs {then:?}");
+}
+
+#[test]
+fn playing_from_a_scrubbed_frame_continues_from_it() {
+    let mut harness = harness(options(&PathBuf::from(GRAPHS).join("locomotion.ron")));
+    walk(&mut harness, Vec2::Y, 150.0, 239);
+    let (index, frame) = {
+        let app = harness.state_mut();
+        app.playback.scrub_back(app.session.recorder(), 2.0);
+        let index = app.playback.shown(app.session.recorder()).expect("a frame");
+        let frame = app.session.recorder().get(index).expect("kept").meta;
+        (index, frame)
+    };
+    assert!((118..=120).contains(&frame.frame), "{}", frame.frame);
+    harness.run_steps(2);
+    // Step from there: the frame after the one shown runs, the later ones are forgotten.
+    harness.get_by_label("⏭ Step").click();
+    harness.run_steps(2);
+    let app = harness.state();
+    assert!(app.controls.message.is_none(), "{:?}", app.controls.message);
+    assert!(app.playback.cursor.is_none());
+    assert_eq!(app.session.recorder().len(), index + 2);
+    assert_eq!(app.session.frame(), frame.frame + 2);
+    assert!(
+        app.session
+            .status()
+            .starts_with(&format!("resumed from frame {} ", frame.frame)),
+        "{}",
+        app.session.status()
+    );
+}
+
+#[test]
+fn a_tunable_read_by_construction_reruns_it_and_keeps_the_state() {
+    let dir = scratch_dir("tunable-construction");
+    let graph = dir.join("derived.ron");
+    std::fs::write(
+        &graph,
+        r#"Graph(
+    version: 1,
+    name: "derived",
+    variables: {
+        "Gain":    (type: Float, default: 2.0, tunable: (min: 0.0, max: 10.0)),
+        "Other":   (type: Float, default: 1.0, tunable: (min: 0.0, max: 10.0)),
+        "Doubled": (type: Float),
+        "Count":   (type: Float),
+    },
+    nodes: {
+        "twice": Multiply(a: var("Gain"), b: 2.0),
+        "next":  Add(a: var("Count"), b: 1.0),
+    },
+    events: {
+        construction: [ Set("Doubled", "twice") ],
+        forward: [ Set("Count", "next") ],
+    },
+)
+"#,
+    )
+    .expect("write");
+    let mut harness = harness(options(&graph));
+    harness.state_mut().advance(9);
+    let get = |app: &InspectorApp, name: &str| {
+        let id = app.session.program().variable_id(name).expect("declared");
+        app.session.instance().variable(id)
+    };
+    assert_eq!(get(harness.state(), "Doubled"), Value::Float(4.0));
+    // Type 5 into Gain's slider: construction gives Doubled = 5 · 2 = 10; Count keeps the
+    // 10 frames counted (one when the app opened, 9 more).
+    harness.state_mut().variables.filter = "Gain".to_string();
+    harness.run_steps(2);
+    harness.get_by_value("2.0").click();
+    harness.run_steps(1);
+    harness.event(egui::Event::Text("5".to_string()));
+    harness.key_press(Key::Enter);
+    harness.run_steps(2);
+    assert_eq!(get(harness.state(), "Gain"), Value::Float(5.0));
+    assert_eq!(get(harness.state(), "Doubled"), Value::Float(10.0));
+    assert_eq!(get(harness.state(), "Count"), Value::Float(10.0));
+    // A frame runs with it.
+    harness.state_mut().advance(1);
+    assert_eq!(get(harness.state(), "Count"), Value::Float(11.0));
+    assert_eq!(get(harness.state(), "Doubled"), Value::Float(10.0));
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
+#[test]
+fn dragged_nodes_are_saved_to_a_layout_file_beside_the_graph() {
+    let dir = scratch_dir("layout");
+    let graph = dir.join("bob.ron");
+    let text = std::fs::read_to_string("tests/data/bob.ron").expect("read");
+    std::fs::write(&graph, &text).expect("copy");
+    let mut harness = harness(options(&graph));
+    harness.run_steps(2);
+    let layer = egui::LayerId::new(egui::Order::Background, egui::Id::new("strider-graph-view"));
+    let (title, before, scale) = {
+        let app = harness.state();
+        let i = app
+            .graph
+            .body()
+            .nodes
+            .iter()
+            .position(|n| n.label() == "offset")
+            .expect("the offset node");
+        // Just above and left of the title: the node's frame (the title itself takes
+        // clicks), which drags the node.
+        let title =
+            harness.get_by_label("offset: MakeVector").rect().left_top() - egui::vec2(3.0, 3.0);
+        let t = harness
+            .ctx
+            .layer_transform_to_global(layer)
+            .expect("a zoomed layer");
+        (t * title, app.graph.body().positions[i], t.scaling)
+    };
+    // Drag the node's title 120 px right and 60 px down on screen.
+    let delta = egui::vec2(120.0, 60.0);
+    harness.hover_at(title);
+    harness.run_steps(1);
+    harness.drag_at(title);
+    harness.run_steps(1);
+    for k in 1..=4 {
+        harness.hover_at(title + delta * (k as f32 / 4.0));
+        harness.run_steps(1);
+    }
+    harness.drop_at(title + delta);
+    harness.run_steps(2);
+    let moved = harness
+        .state()
+        .graph
+        .layout
+        .position(strider_inspector::layout::TOP_LEVEL, "offset")
+        .expect("the move is kept in the layout");
+    let expected = before + delta / scale;
+    assert!(
+        (moved - expected).length() < 2.0,
+        "{before:?} + {delta:?} / {scale} = {expected:?}, got {moved:?}"
+    );
+    assert!(harness.state().graph.layout_dirty);
+    harness.get_by_label("Save layout*").click();
+    harness.run_steps(2);
+    let file = dir.join("bob.layout.ron");
+    assert!(file.exists(), "written next to the graph");
+    assert!(!harness.state().graph.layout_dirty);
+    // The graph file is untouched; a new window shows the node where it was left.
+    assert_eq!(std::fs::read_to_string(&graph).expect("read"), text);
+    let again = crate::harness(options(&graph));
+    let app = again.state();
+    let i = app
+        .graph
+        .body()
+        .nodes
+        .iter()
+        .position(|n| n.label() == "offset")
+        .expect("the offset node");
+    assert_eq!(app.graph.body().positions[i], moved);
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
+#[test]
+fn pins_in_a_loop_say_they_show_the_last_iteration() {
+    let mut harness = harness(options(&PathBuf::from(GRAPHS).join("locomotion.ron")));
+    {
+        let app = harness.state_mut();
+        let program = std::sync::Arc::clone(app.session.program());
+        let loaded = std::sync::Arc::clone(app.session.document());
+        let body = strider_inspector::graph_view::build_body(&loaded, Some("SetupArray"));
+        let in_loop = |label: &str| {
+            body.nodes
+                .iter()
+                .find(|n| n.label() == label)
+                .unwrap_or_else(|| panic!("{label}"))
+                .in_loop
+        };
+        // `rest` and `elbow` read the loops' elements `foot` and `hand`; `feet` and `hands`
+        // are computed once, before the loops.
+        assert!(in_loop("rest") && in_loop("elbow"));
+        assert!(!in_loop("feet") && !in_loop("hands"));
+        // The 12 Appends sit in the loop bodies; the Resets before them do not.
+        let appends: Vec<bool> = body
+            .nodes
+            .iter()
+            .filter(|n| n.node_type == "Append")
+            .map(|n| n.in_loop)
+            .collect();
+        assert_eq!(appends, vec![true; 12]);
+        assert!(
+            body.nodes
+                .iter()
+                .filter(|n| n.node_type == "Reset")
+                .all(|n| !n.in_loop)
+        );
+        assert!(
+            app.graph
+                .open_function_anywhere(&program, &loaded, "SetupArray")
+        );
+    }
+    harness.run_steps(3);
+    assert!(harness.state_mut().graph.select("rest"));
+    harness.run_steps(2);
+    harness.get_by_label("in a loop: the values of its last iteration");
+    assert!(harness.state_mut().graph.select("feet"));
+    harness.run_steps(2);
+    assert!(
+        harness
+            .query_by_label("in a loop: the values of its last iteration")
+            .is_none()
+    );
+}
+
+#[test]
+fn resuming_a_scenario_plays_the_same_frames_again() {
+    let mut opts = options(&PathBuf::from(GRAPHS).join("locomotion.ron"));
+    opts.scenario = Some(PathBuf::from(GRAPHS).join("scenarios/teleport.ron"));
+    let mut session = Session::open(opts).expect("loads");
+    for _ in 0..300 {
+        session.step();
+    }
+    let original: Vec<_> = session
+        .recorder()
+        .iter()
+        .map(|f| (f.meta, f.globals.clone()))
+        .collect();
+    session.resume_from(170).expect("resumes");
+    assert!(
+        !session.status().contains("differs"),
+        "{}",
+        session.status()
+    );
+    for (meta, globals) in &original[171..] {
+        session.step();
+        let f = session.recorder().latest().expect("recorded");
+        assert_eq!(f.meta, *meta, "frame {}", meta.frame);
+        assert_eq!(f.globals, *globals, "frame {}", meta.frame);
+    }
 }
