@@ -1080,14 +1080,16 @@ fn pins_in_a_loop_say_they_show_the_last_iteration() {
         // are computed once, before the loops.
         assert!(in_loop("rest") && in_loop("elbow"));
         assert!(!in_loop("feet") && !in_loop("hands"));
-        // The 12 Appends sit in the loop bodies; the Resets before them do not.
+        // The Appends (one per per-foot or per-hand array) sit in the loop bodies; the
+        // Resets before them do not.
         let appends: Vec<bool> = body
             .nodes
             .iter()
             .filter(|n| n.node_type == "Append")
             .map(|n| n.in_loop)
             .collect();
-        assert_eq!(appends, vec![true; 12]);
+        assert!(appends.len() >= 12, "{} Appends", appends.len());
+        assert!(appends.iter().all(|&a| a), "{appends:?}");
         assert!(
             body.nodes
                 .iter()
