@@ -19,4 +19,6 @@ cargo clippy -p strider-vm -p strider -p strider-inspector --all-targets --no-de
     --features strider-vm/profile,strider/profile,strider-inspector/profile -- -D warnings
 cargo test -p strider-vm -p strider-inspector --locked \
     --features strider-vm/profile,strider-inspector/profile
-cargo test -p strider --features profile --locked --test profile --test allocations
+# The root crate's profile tests need no inspector: leaving it out (no default features)
+# saves rebuilding the window stack with another feature set.
+cargo test -p strider --no-default-features --features profile --locked --test profile --test allocations
