@@ -56,6 +56,16 @@ fn walk(harness: &mut Harness<'_, InspectorApp>, direction: Vec2, speed: f32, fr
     app.advance(frames);
 }
 
+/// Index of the node labelled `label` in the graph view's open body.
+fn node_index(app: &InspectorApp, label: &str) -> usize {
+    app.graph
+        .body()
+        .nodes
+        .iter()
+        .position(|n| n.label() == label)
+        .unwrap_or_else(|| panic!("no node `{label}` in the open body"))
+}
+
 fn pelvis_world(app: &InspectorApp) -> Vec3 {
     let frame = app.session.recorder().latest().expect("a frame");
     let pelvis = app
@@ -1000,13 +1010,7 @@ fn dragged_nodes_are_saved_to_a_layout_file_beside_the_graph() {
     let layer = egui::LayerId::new(egui::Order::Background, egui::Id::new("strider-graph-view"));
     let (title, before, scale) = {
         let app = harness.state();
-        let i = app
-            .graph
-            .body()
-            .nodes
-            .iter()
-            .position(|n| n.label() == "offset")
-            .expect("the offset node");
+        let i = node_index(app, "offset");
         // Just above and left of the title: the node's frame (the title itself takes
         // clicks), which drags the node.
         let title =
@@ -1050,13 +1054,7 @@ fn dragged_nodes_are_saved_to_a_layout_file_beside_the_graph() {
     assert_eq!(std::fs::read_to_string(&graph).expect("read"), text);
     let again = crate::harness(options(&graph));
     let app = again.state();
-    let i = app
-        .graph
-        .body()
-        .nodes
-        .iter()
-        .position(|n| n.label() == "offset")
-        .expect("the offset node");
+    let i = node_index(app, "offset");
     assert_eq!(app.graph.body().positions[i], moved);
     let _ = std::fs::remove_dir_all(&dir);
 }

@@ -60,46 +60,39 @@ impl ScalarLens {
     }
 }
 
+/// Grows `v` to `len` items with `zero`s if it is shorter.
+#[inline]
+fn grow_to<T: Clone>(v: &mut Vec<T>, len: usize, zero: T) {
+    if v.len() < len {
+        v.resize(len, zero);
+    }
+}
+
 impl Slots {
     /// Grows the scalar arrays (with zeroed slots) to at least `lens`. Does nothing, and
     /// costs six comparisons, when they are long enough.
     #[inline]
     pub(crate) fn cover(&mut self, lens: &ScalarLens) {
         let [b, i, f, v, q, t] = lens.0;
-        if self.bools.len() < b
-            || self.ints.len() < i
-            || self.floats.len() < f
-            || self.vec3s.len() < v
-            || self.quats.len() < q
-            || self.transforms.len() < t
-        {
-            let grow = |n: usize, len: usize| n.max(len);
-            self.bools.resize(grow(self.bools.len(), b), false);
-            self.ints.resize(grow(self.ints.len(), i), 0);
-            self.floats.resize(grow(self.floats.len(), f), 0.0);
-            self.vec3s.resize(grow(self.vec3s.len(), v), Vec3::ZERO);
-            self.quats.resize(grow(self.quats.len(), q), Quat::IDENTITY);
-            self.transforms
-                .resize(grow(self.transforms.len(), t), Transform::IDENTITY);
-        }
+        grow_to(&mut self.bools, b, false);
+        grow_to(&mut self.ints, i, 0);
+        grow_to(&mut self.floats, f, 0.0);
+        grow_to(&mut self.vec3s, v, Vec3::ZERO);
+        grow_to(&mut self.quats, q, Quat::IDENTITY);
+        grow_to(&mut self.transforms, t, Transform::IDENTITY);
     }
 
     /// Grows the array of scalar type `ty` so that slot `index` exists (other types: no
     /// effect; their accesses are bounds-checked).
     pub(crate) fn cover_slot(&mut self, ty: ValueType, index: u32) {
-        fn at_least<T: Clone>(v: &mut Vec<T>, index: u32, zero: T) {
-            let len = index as usize + 1;
-            if v.len() < len {
-                v.resize(len, zero);
-            }
-        }
+        let len = index as usize + 1;
         match ty {
-            ValueType::Bool => at_least(&mut self.bools, index, false),
-            ValueType::Int => at_least(&mut self.ints, index, 0),
-            ValueType::Float => at_least(&mut self.floats, index, 0.0),
-            ValueType::Vec3 => at_least(&mut self.vec3s, index, Vec3::ZERO),
-            ValueType::Quat => at_least(&mut self.quats, index, Quat::IDENTITY),
-            ValueType::Transform => at_least(&mut self.transforms, index, Transform::IDENTITY),
+            ValueType::Bool => grow_to(&mut self.bools, len, false),
+            ValueType::Int => grow_to(&mut self.ints, len, 0),
+            ValueType::Float => grow_to(&mut self.floats, len, 0.0),
+            ValueType::Vec3 => grow_to(&mut self.vec3s, len, Vec3::ZERO),
+            ValueType::Quat => grow_to(&mut self.quats, len, Quat::IDENTITY),
+            ValueType::Transform => grow_to(&mut self.transforms, len, Transform::IDENTITY),
             ValueType::Bone | ValueType::Name | ValueType::Array(_) => {}
         }
     }
