@@ -5,7 +5,7 @@
 use crate::literal::{self, Fit};
 use petgraph::algo::{kosaraju_scc, toposort};
 use petgraph::graph::{DiGraph, NodeIndex};
-use std::collections::HashMap;
+use rustc_hash::{FxHashMap, FxHashSet};
 use strider_graph::diagnostic::{Diagnostics, Loc, SourceMap};
 use strider_graph::{
     Diagnostic, EventKind, Expr, ExprKind, FunctionDecl, Graph, Ident, LoadedGraph, NodeDecl,
@@ -13,15 +13,49 @@ use strider_graph::{
 };
 use strider_nodes::{Effect, Op, PinSpec, Value, ValueType, registry};
 
+/// Why a node's given pins do not fit an overload (formatted only when reported: overload
+/// resolution tries and rejects many).
+enum Mismatch {
+    /// A link of another type.
+    Types {
+        expected: ValueType,
+        found: ValueType,
+    },
+    /// A literal that does not convert, and why.
+    Literal(String),
+    /// A link whose source failed to resolve (already reported).
+    Unresolved,
+}
+
+impl std::fmt::Display for Mismatch {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        match self {
+            Mismatch::Types { expected, found } => write!(f, "expected {expected}, found {found}"),
+            Mismatch::Literal(m) => f.write_str(m),
+            Mismatch::Unresolved => Ok(()),
+        }
+    }
+}
+
 /// Where a value comes from.
 #[derive(Clone, Debug, PartialEq)]
 pub(crate) enum Src {
-    Node { node: usize, out: usize },
+    Node {
+        node: usize,
+        out: usize,
+    },
     Input(usize),
     Local(usize),
     Global(usize),
-    Loop { lp: usize, part: LoopPart },
-    Const { value: Value, location: String },
+    Loop {
+        lp: usize,
+        part: LoopPart,
+    },
+    /// A literal (`loc`: where it is written; `None` for a pin's default).
+    Const {
+        value: Value,
+        loc: Option<Loc>,
+    },
 }
 
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -139,7 +173,7 @@ pub(crate) fn check(loaded: &LoadedGraph) -> Result<Checked, Vec<Diagnostic>> {
 
     // Variables of every file share one namespace.
     let mut globals: Vec<GlobalVar> = Vec::new();
-    let mut global_index: HashMap<String, usize> = HashMap::new();
+    let mut global_index: FxHashMap<String, usize> = FxHashMap::default();
     for g in &files {
         for v in &g.variables {
             if let Some(&prev) = global_index.get(&v.name.name) {
@@ -204,7 +238,7 @@ pub(crate) fn check(loaded: &LoadedGraph) -> Result<Checked, Vec<Diagnostic>> {
 
     // Functions of every file share one namespace.
     let mut fn_decls: Vec<&FunctionDecl> = Vec::new();
-    let mut fn_index: HashMap<String, usize> = HashMap::new();
+    let mut fn_index: FxHashMap<String, usize> = FxHashMap::default();
     for g in &files {
         for f in &g.functions {
             if let Some(&prev) = fn_index.get(&f.name.name) {
@@ -340,7 +374,7 @@ impl Body {
 fn collect_calls(
     nodes: &[NodeDecl],
     steps: &[Step],
-    fn_index: &HashMap<String, usize>,
+    fn_index: &FxHashMap<String, usize>,
     out: &mut Vec<usize>,
 ) {
     for n in nodes {
@@ -381,7 +415,7 @@ fn for_each_node_in_steps<'a>(steps: &'a [Step], f: &mut dyn FnMut(&'a NodeDecl)
 fn function_purity(
     i: usize,
     decls: &[&FunctionDecl],
-    index: &HashMap<String, usize>,
+    index: &FxHashMap<String, usize>,
     recursive: &[bool],
     memo: &mut Vec<Option<bool>>,
 ) -> bool {
@@ -432,9 +466,9 @@ fn function_purity(
 struct Ctx<'a> {
     sources: &'a SourceMap,
     globals: &'a [GlobalVar],
-    global_index: &'a HashMap<String, usize>,
+    global_index: &'a FxHashMap<String, usize>,
     fns: &'a [FnSig<'a>],
-    fn_index: &'a HashMap<String, usize>,
+    fn_index: &'a FxHashMap<String, usize>,
 }
 
 #[derive(Clone, Copy, Debug)]
@@ -466,11 +500,11 @@ struct Scope<'a, 'c> {
     function: Option<&'a FunctionDecl>,
     nodes: Vec<Slot<'a>>,
     loops: Vec<LoopDecl<'a>>,
-    names: HashMap<String, Name>,
-    locals: HashMap<String, usize>,
+    names: FxHashMap<String, Name>,
+    locals: FxHashMap<String, usize>,
     /// Inline exec nodes, in walk order, so the step walk can find its node index.
-    inline_index: HashMap<*const NodeDecl, usize>,
-    loop_index: HashMap<*const Step, usize>,
+    inline_index: FxHashMap<*const NodeDecl, usize>,
+    loop_index: FxHashMap<*const Step, usize>,
 }
 
 impl<'a, 'c> Scope<'a, 'c> {
@@ -480,10 +514,10 @@ impl<'a, 'c> Scope<'a, 'c> {
             function,
             nodes: Vec::new(),
             loops: Vec::new(),
-            names: HashMap::new(),
-            locals: HashMap::new(),
-            inline_index: HashMap::new(),
-            loop_index: HashMap::new(),
+            names: FxHashMap::default(),
+            locals: FxHashMap::default(),
+            inline_index: FxHashMap::default(),
+            loop_index: FxHashMap::default(),
         }
     }
 
@@ -736,7 +770,7 @@ impl<'a, 'c> Scope<'a, 'c> {
         let n = self.nodes.len();
         let mut g: DiGraph<usize, ()> = DiGraph::new();
         let v: Vec<NodeIndex> = (0..n + self.loops.len()).map(|i| g.add_node(i)).collect();
-        let link_deps = |e: &Expr, names: &HashMap<String, Name>| -> Option<usize> {
+        let link_deps = |e: &Expr, names: &FxHashMap<String, Name>| -> Option<usize> {
             if let ExprKind::Link { source, .. } = &e.kind {
                 match names.get(source) {
                     Some(Name::Node(j)) => return Some(*j),
@@ -1176,7 +1210,7 @@ impl<'a, 'c> Scope<'a, 'c> {
         &self,
         pins: &[PinSpec],
         given: &[(&PinArg, Option<Result<Arg, strider_graph::Literal>>)],
-    ) -> Result<(Vec<Arg>, usize), (usize, String)> {
+    ) -> Result<(Vec<Arg>, usize), (usize, Mismatch)> {
         let mut args = Vec::with_capacity(pins.len());
         let mut promotions = 0;
         for (pi, pin) in pins.iter().enumerate() {
@@ -1185,10 +1219,7 @@ impl<'a, 'c> Scope<'a, 'c> {
                 None => {
                     let value = pin.default.clone().unwrap_or_else(|| pin.ty.zero());
                     Arg {
-                        src: Src::Const {
-                            value,
-                            location: String::new(),
-                        },
+                        src: Src::Const { value, loc: None },
                         ty: pin.ty,
                         to_float: false,
                     }
@@ -1204,7 +1235,13 @@ impl<'a, 'c> Scope<'a, 'c> {
                         }
                     } else {
                         let _ = p;
-                        return Err((pi, format!("expected {}, found {}", pin.ty, a.ty)));
+                        return Err((
+                            pi,
+                            Mismatch::Types {
+                                expected: pin.ty,
+                                found: a.ty,
+                            },
+                        ));
                     }
                 }
                 Some((_, Some(Err(lit)))) => match literal::convert(lit, pin.ty, pin.choices) {
@@ -1212,16 +1249,18 @@ impl<'a, 'c> Scope<'a, 'c> {
                         if fit == Fit::Promoted {
                             promotions += 1;
                         }
-                        let location = self.sources().describe(lit.loc);
                         Arg {
-                            src: Src::Const { value, location },
+                            src: Src::Const {
+                                value,
+                                loc: Some(lit.loc),
+                            },
                             ty: pin.ty,
                             to_float: false,
                         }
                     }
-                    Err(m) => return Err((pi, m)),
+                    Err(m) => return Err((pi, Mismatch::Literal(m))),
                 },
-                Some((_, None)) => return Err((pi, String::new())),
+                Some((_, None)) => return Err((pi, Mismatch::Unresolved)),
             };
             args.push(arg);
         }
@@ -1272,7 +1311,7 @@ impl<'a, 'c> Scope<'a, 'c> {
                 if let Some((p, Some(Err(lit)))) =
                     given.iter().find(|(p, _)| p.name.name == pin.name)
                     && literal::natural_type(lit) == Some(pin.ty)
-                    && !msg.is_empty()
+                    && !matches!(msg, Mismatch::Unresolved)
                 {
                     diags
                         .error(
@@ -1388,7 +1427,7 @@ impl<'a, 'c> Scope<'a, 'c> {
                         Ok((value, _)) => Arg {
                             src: Src::Const {
                                 value,
-                                location: self.sources().describe(lit.loc),
+                                loc: Some(lit.loc),
                             },
                             ty: q.ty,
                             to_float: false,
@@ -1456,14 +1495,14 @@ impl<'a, 'c> Scope<'a, 'c> {
                     }
                 }
                 Some((_, Some(Err(lit)))) => match literal::convert(lit, q.ty, &[]) {
-                    Ok((value, _)) => {
-                        let location = self.sources().describe(lit.loc);
-                        Arg {
-                            src: Src::Const { value, location },
-                            ty: q.ty,
-                            to_float: false,
-                        }
-                    }
+                    Ok((value, _)) => Arg {
+                        src: Src::Const {
+                            value,
+                            loc: Some(lit.loc),
+                        },
+                        ty: q.ty,
+                        to_float: false,
+                    },
                     Err(m) => {
                         diags
                             .error(
@@ -1525,7 +1564,7 @@ impl<'a, 'c> Scope<'a, 'c> {
                 Ok((value, _)) => Some(Arg {
                     src: Src::Const {
                         value,
-                        location: self.sources().describe(lit.loc),
+                        loc: Some(lit.loc),
                     },
                     ty,
                     to_float: false,
@@ -1548,7 +1587,7 @@ impl<'a, 'c> Scope<'a, 'c> {
     /// Checks that the pure nodes an argument pulls read loop names only inside their loop.
     /// Iterative, so arbitrarily long data-flow chains cannot overflow the stack.
     fn check_scope(&self, arg: &Arg, active: &[usize], at: Loc, diags: &mut Diagnostics) {
-        let mut seen = std::collections::HashSet::new();
+        let mut seen = FxHashSet::default();
         let mut stack: Vec<(&Arg, Loc)> = vec![(arg, at)];
         while let Some((arg, at)) = stack.pop() {
             match &arg.src {
@@ -1715,7 +1754,7 @@ impl<'a, 'c> Scope<'a, 'c> {
                             Some(Ok((value, _))) => Some(Arg {
                                 src: Src::Const {
                                     value,
-                                    location: self.sources().describe(lit.loc),
+                                    loc: Some(lit.loc),
                                 },
                                 ty: ty?,
                                 to_float: false,
@@ -1822,8 +1861,8 @@ impl<'a, 'c> Scope<'a, 'c> {
 /// the shortest way back, found breadth-first.
 fn cycle_path(g: &DiGraph<usize, ()>, scc: &[NodeIndex]) -> Vec<NodeIndex> {
     let start = *scc.iter().min_by_key(|v| g[**v]).unwrap_or(&scc[0]);
-    let members: std::collections::HashSet<NodeIndex> = scc.iter().copied().collect();
-    let mut previous: HashMap<NodeIndex, NodeIndex> = HashMap::new();
+    let members: FxHashSet<NodeIndex> = scc.iter().copied().collect();
+    let mut previous: FxHashMap<NodeIndex, NodeIndex> = FxHashMap::default();
     let mut queue = std::collections::VecDeque::from([start]);
     while let Some(v) = queue.pop_front() {
         let mut next: Vec<NodeIndex> = g.neighbors(v).filter(|w| members.contains(w)).collect();

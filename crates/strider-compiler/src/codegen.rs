@@ -17,8 +17,8 @@
 
 use crate::check::{Arg, Body, CStep, Checked, LoopPart, NodeKind, Src, VarRef};
 use crate::reads::{ReadsTable, Writes, pulled_by};
-use std::collections::{HashMap, HashSet};
-use strider_graph::{EventKind, FunctionDecl, LoadedGraph, NodeDecl, Step};
+use rustc_hash::{FxHashMap, FxHashSet};
+use strider_graph::{EventKind, FunctionDecl, LoadedGraph, Loc, NodeDecl, Step};
 use strider_nodes::{Elem, Op, Value, ValueType, registry};
 use strider_vm::{
     Event, InstrOrigin, OriginId, OriginKind, OriginScope, PinOwner, PinSlot, Program,
@@ -29,16 +29,13 @@ use strider_vm::{
 struct NodeSource {
     id: Option<String>,
     kind: String,
-    location: String,
+    /// Described as `path:line:col` only when an origin is made for the node.
+    loc: Loc,
 }
 
 /// The nodes of a body in the checker's order: declared nodes in file order, then inline
 /// nodes of the exec lists in the order the lists are walked (depth first).
-fn body_node_sources(
-    loaded: &LoadedGraph,
-    nodes: &[NodeDecl],
-    lists: &[&[Step]],
-) -> Vec<NodeSource> {
+fn body_node_sources(nodes: &[NodeDecl], lists: &[&[Step]]) -> Vec<NodeSource> {
     fn walk<'d>(steps: &'d [Step], out: &mut Vec<&'d NodeDecl>) {
         for s in steps {
             match s {
@@ -68,7 +65,7 @@ fn body_node_sources(
         .map(|d| NodeSource {
             id: d.id.as_ref().map(|i| i.name.clone()),
             kind: d.kind.name.clone(),
-            location: loaded.sources.describe(d.loc),
+            loc: d.loc,
         })
         .collect()
 }
@@ -103,6 +100,48 @@ fn step_source(loaded: &LoadedGraph, step: &CStep, doc: Option<&Step>) -> (Strin
     (name, loc)
 }
 
+/// What makes two constants share a slot: scalars by type and bits (so `-0.0` and `0.0`
+/// stay apart), everything else by its text. Bone and text constants carry their source
+/// location (for "unknown bone" errors at instantiation), so they are shared only between
+/// uses of the same literal.
+#[derive(PartialEq, Eq, Hash)]
+enum ConstKey {
+    Scalar(ValueType, [u32; 10]),
+    Text(String),
+}
+
+impl ConstKey {
+    fn new(value: &Value, location: &str) -> Self {
+        let bits = |v: &[f32]| {
+            let mut b = [0; 10];
+            for (b, v) in b.iter_mut().zip(v) {
+                *b = v.to_bits();
+            }
+            b
+        };
+        match value {
+            Value::Bool(v) => {
+                ConstKey::Scalar(ValueType::Bool, [u32::from(*v), 0, 0, 0, 0, 0, 0, 0, 0, 0])
+            }
+            Value::Int(v) => ConstKey::Scalar(
+                ValueType::Int,
+                [v.cast_unsigned(), 0, 0, 0, 0, 0, 0, 0, 0, 0],
+            ),
+            Value::Float(v) => ConstKey::Scalar(ValueType::Float, bits(&[*v])),
+            Value::Vec3(v) => ConstKey::Scalar(ValueType::Vec3, bits(&v.to_array())),
+            Value::Quat(q) => ConstKey::Scalar(ValueType::Quat, bits(&q.to_array())),
+            Value::Transform(t) => ConstKey::Scalar(ValueType::Transform, t.to_bits()),
+            Value::Bone(Some(_)) | Value::Name(_) => {
+                ConstKey::Text(format!("{value:?}@{location}"))
+            }
+            Value::Array(Elem::Bone, items) if !items.is_empty() => {
+                ConstKey::Text(format!("{value:?}@{location}"))
+            }
+            Value::Bone(None) | Value::Array(..) => ConstKey::Text(format!("{value:?}")),
+        }
+    }
+}
+
 struct LoopSlots {
     counter: u32,
     element: u32,
@@ -121,14 +160,14 @@ struct Frame {
     outputs: Vec<u32>,
     locals: Vec<u32>,
     loops: Vec<LoopSlots>,
-    callees: HashMap<usize, usize>,
+    callees: FxHashMap<usize, usize>,
 }
 
 struct Gen<'a> {
     pb: ProgramBuilder,
     checked: &'a Checked,
     globals: Vec<u32>,
-    consts: HashMap<String, u32>,
+    consts: FxHashMap<ConstKey, u32>,
     frames: Vec<Frame>,
     /// For origins: the document.
     loaded: &'a LoadedGraph,
@@ -139,10 +178,10 @@ struct Gen<'a> {
     /// The event being generated.
     event: Event,
     /// Origin of node `n` of body `f` (`None`: the graph) in an event (`None` in functions).
-    node_origins: HashMap<(Option<usize>, usize, Option<Event>), OriginId>,
+    node_origins: FxHashMap<(Option<usize>, usize, Option<Event>), OriginId>,
     /// Per frame: the pure nodes whose output slots hold their current value at the point
     /// being emitted.
-    avail: Vec<HashSet<usize>>,
+    avail: Vec<FxHashSet<usize>>,
     /// What each pure node's value depends on.
     reads: ReadsTable,
 }
@@ -179,10 +218,9 @@ pub(crate) fn generate(loaded: &LoadedGraph, checked: &Checked) -> Program {
     );
     let mut node_sources: Vec<Vec<NodeSource>> = fn_decls
         .iter()
-        .map(|f| body_node_sources(loaded, &f.nodes, &[&f.exec]))
+        .map(|f| body_node_sources(&f.nodes, &[&f.exec]))
         .collect();
     node_sources.push(body_node_sources(
-        loaded,
         &loaded.main.nodes,
         &[&construction_doc, &forward_doc],
     ));
@@ -190,13 +228,13 @@ pub(crate) fn generate(loaded: &LoadedGraph, checked: &Checked) -> Program {
         pb: ProgramBuilder::new(&name),
         checked,
         globals: Vec::new(),
-        consts: HashMap::new(),
+        consts: FxHashMap::default(),
         frames: Vec::new(),
         loaded,
         fn_decls,
         node_sources,
         event: Event::Construction,
-        node_origins: HashMap::new(),
+        node_origins: FxHashMap::default(),
         avail: Vec::new(),
         reads: ReadsTable::default(),
     };
@@ -214,7 +252,7 @@ pub(crate) fn generate(loaded: &LoadedGraph, checked: &Checked) -> Program {
         });
     }
     let top = g.frame(None, Vec::new());
-    g.avail = vec![HashSet::new(); g.frames.len()];
+    g.avail = vec![FxHashSet::default(); g.frames.len()];
     for (steps, doc, event) in [
         (
             &checked.graph.construction,
@@ -224,7 +262,7 @@ pub(crate) fn generate(loaded: &LoadedGraph, checked: &Checked) -> Program {
         (&checked.graph.forward, &forward_doc, Event::Forward),
     ] {
         g.event = event;
-        g.avail.iter_mut().for_each(HashSet::clear);
+        g.avail.iter_mut().for_each(FxHashSet::clear);
         let entry = g.pb.here();
         if event == Event::Construction {
             g.pb.set_construction_entry(entry);
@@ -269,7 +307,11 @@ impl Gen<'_> {
         }
         let sources = &self.node_sources[body.unwrap_or(self.node_sources.len() - 1)];
         let (node_id, node_type, location) = match sources.get(n) {
-            Some(src) => (src.id.clone(), src.kind.clone(), src.location.clone()),
+            Some(src) => (
+                src.id.clone(),
+                src.kind.clone(),
+                self.loaded.sources.describe(src.loc),
+            ),
             None => (None, "?".to_string(), String::new()),
         };
         let kind = match self.body(frame).nodes[n].kind {
@@ -417,7 +459,7 @@ impl Gen<'_> {
             outputs,
             locals,
             loops,
-            callees: HashMap::new(),
+            callees: FxHashMap::default(),
         });
         let node_count = body.nodes.len();
         let mut node_out = Vec::with_capacity(node_count);
@@ -448,18 +490,7 @@ impl Gen<'_> {
     }
 
     fn constant(&mut self, value: &Value, location: &str) -> u32 {
-        let has_names = match value {
-            Value::Bone(Some(_)) | Value::Name(_) => true,
-            Value::Array(Elem::Bone, items) => !items.is_empty(),
-            _ => false,
-        };
-        // Bone and text constants carry their source location (for "unknown bone" errors at
-        // instantiation), so they are shared only between uses of the same literal.
-        let key = if has_names {
-            format!("{value:?}@{location}")
-        } else {
-            format!("{value:?}")
-        };
+        let key = ConstKey::new(value, location);
         if let Some(&s) = self.consts.get(&key) {
             return s;
         }
@@ -484,9 +515,18 @@ impl Gen<'_> {
                     LoopPart::Count => l.count,
                 }
             }
-            Src::Const { value, location } => {
-                let (value, location) = (value.clone(), location.clone());
-                self.constant(&value, &location)
+            Src::Const { value, loc } => {
+                // Bone and text constants are kept apart per literal (see `ConstKey`); bone
+                // names are looked up at instantiation and reported with their location.
+                let per_literal = matches!(
+                    value,
+                    Value::Bone(Some(_)) | Value::Name(_) | Value::Array(Elem::Bone, _)
+                );
+                let location = match loc {
+                    Some(l) if per_literal => self.loaded.sources.describe(*l),
+                    _ => String::new(),
+                };
+                self.constant(value, &location)
             }
         };
         if arg.to_float {
@@ -539,7 +579,7 @@ impl Gen<'_> {
     /// stateful node, whose state must advance where the graph evaluates it), and keeps
     /// only the values the body cannot change. Returns those values: they hold in every
     /// iteration and after the loop, however many times it runs.
-    fn enter_loop(&mut self, frame: usize, body: &[CStep]) -> HashSet<usize> {
+    fn enter_loop(&mut self, frame: usize, body: &[CStep]) -> FxHashSet<usize> {
         let checked = self.checked;
         let function = self.frames[frame].body;
         let frame_body = match function {

@@ -9,7 +9,7 @@
 //! are never kept across loop iterations.
 
 use crate::check::{Body, CStep, Checked, NodeKind, Src, VarRef};
-use std::collections::HashMap;
+use rustc_hash::FxHashMap;
 use strider_nodes::Op;
 
 /// The mutable state a value was computed from.
@@ -208,9 +208,9 @@ pub(crate) fn pulled_by(body: &Body, steps: &[CStep]) -> Vec<usize> {
 #[derive(Default)]
 pub(crate) struct ReadsTable {
     /// `(function or None for the graph, node)` → reads.
-    nodes: HashMap<(Option<usize>, usize), Reads>,
+    nodes: FxHashMap<(Option<usize>, usize), Reads>,
     /// Function → the globals and pose its whole body reads (for calls of it).
-    functions: HashMap<usize, Reads>,
+    functions: FxHashMap<usize, Reads>,
 }
 
 impl ReadsTable {

@@ -19,6 +19,9 @@ pub struct Loc {
 
 struct SourceFile {
     path: PathBuf,
+    /// `path` as shown in `path:line:col` (lossy UTF-8), made once: the compiler describes
+    /// a location for every node it emits.
+    shown: String,
     text: String,
     lines: LineIndex,
 }
@@ -43,6 +46,7 @@ impl SourceMap {
         let lines = LineIndex::new(&text);
         self.files.push(SourceFile {
             path: path.to_path_buf(),
+            shown: path.display().to_string(),
             text,
             lines,
         });
@@ -78,7 +82,7 @@ impl SourceMap {
     #[must_use]
     pub fn describe(&self, loc: Loc) -> String {
         let (line, col) = self.line_col(loc);
-        format!("{}:{line}:{col}", self.path(loc.file).display())
+        format!("{}:{line}:{col}", self.files[loc.file.0 as usize].shown)
     }
 }
 

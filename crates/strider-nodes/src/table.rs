@@ -4,7 +4,7 @@
 use crate::ops::Op;
 use crate::types::{Elem, Value, ValueType};
 use glam::{Quat, Vec3};
-use std::collections::HashMap;
+use rustc_hash::FxHashMap;
 use std::fmt::Write as _;
 use std::sync::OnceLock;
 use strider_core::Transform;
@@ -73,9 +73,9 @@ pub struct NodeSpec {
 #[derive(Debug)]
 pub struct Registry {
     nodes: Vec<NodeSpec>,
-    index: HashMap<&'static str, usize>,
+    index: FxHashMap<&'static str, usize>,
     /// Each node op's operand types: inputs, outputs, state (see [`Op::operands`]).
-    layouts: HashMap<Op, Vec<ValueType>>,
+    layouts: FxHashMap<Op, Vec<ValueType>>,
 }
 
 /// The built-in node table, built once.
@@ -84,7 +84,7 @@ pub fn registry() -> &'static Registry {
     REGISTRY.get_or_init(|| {
         let nodes = build();
         let index = nodes.iter().enumerate().map(|(i, n)| (n.name, i)).collect();
-        let mut layouts = HashMap::new();
+        let mut layouts = FxHashMap::default();
         for o in nodes.iter().flat_map(|n| &n.overloads) {
             let types = o.inputs.iter().chain(&o.outputs).map(|p| p.ty);
             layouts
@@ -2043,7 +2043,7 @@ mod tests {
     #[test]
     fn names_are_unique_and_every_node_has_docs() {
         let r = registry();
-        let mut seen = std::collections::HashSet::new();
+        let mut seen = rustc_hash::FxHashSet::default();
         for n in r.nodes() {
             assert!(seen.insert(n.name), "duplicate node {}", n.name);
             assert!(
@@ -2065,7 +2065,7 @@ mod tests {
                         );
                     }
                 }
-                let mut pins = std::collections::HashSet::new();
+                let mut pins = rustc_hash::FxHashSet::default();
                 for p in o.inputs.iter().chain(&o.outputs) {
                     assert!(
                         pins.insert(p.name),

@@ -2,7 +2,7 @@
 //! compiler's way of making one.
 
 use crate::slots::{ScalarLens, Slots};
-use std::collections::HashMap;
+use rustc_hash::FxHashMap;
 use std::fmt;
 use strider_nodes::{Op, Operand, Value, ValueType};
 
@@ -330,7 +330,7 @@ pub struct ProgramBuilder {
     /// Origin given to instructions emitted now.
     current_origin: Option<OriginId>,
     /// Origin → its id, so each is stored once.
-    origin_ids: HashMap<InstrOrigin, OriginId>,
+    origin_ids: FxHashMap<InstrOrigin, OriginId>,
 }
 
 impl ProgramBuilder {
@@ -354,7 +354,7 @@ impl ProgramBuilder {
                 scalar_lens: ScalarLens::default(),
             },
             current_origin: None,
-            origin_ids: HashMap::new(),
+            origin_ids: FxHashMap::default(),
         }
     }
 
