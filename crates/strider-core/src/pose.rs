@@ -106,14 +106,14 @@ impl Pose {
     /// with the bone (RigVM's "Propagate to Children"). Without it the children keep their
     /// global transforms: their locals are recomputed against the new parent.
     pub fn set_global(&mut self, bone: BoneIndex, global: Transform, propagate_to_children: bool) {
-        let skeleton = Arc::clone(&self.skeleton);
         if !propagate_to_children {
-            for &c in skeleton.children(bone) {
+            for k in 0..self.skeleton.children(bone).len() {
+                let c = self.skeleton.children(bone)[k];
                 let _ = self.global(c);
             }
         }
         let i = bone.get();
-        let local = match skeleton.parent(bone) {
+        let local = match self.skeleton.parent(bone) {
             Some(p) => global.relative_to(&self.global(p)),
             None => global,
         };
@@ -121,10 +121,10 @@ impl Pose {
         self.globals[i] = global;
         self.dirty[i] = false;
         if propagate_to_children {
-            let end = skeleton.subtree_end(bone);
+            let end = self.skeleton.subtree_end(bone);
             self.dirty[i + 1..end].fill(true);
         } else {
-            for &c in skeleton.children(bone) {
+            for &c in self.skeleton.children(bone) {
                 let ci = c.get();
                 self.locals[ci] = self.globals[ci].relative_to(&global);
             }
