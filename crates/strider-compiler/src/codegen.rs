@@ -18,6 +18,7 @@
 use crate::check::{Arg, Body, CStep, Checked, LoopPart, NodeKind, Src, VarRef};
 use crate::reads::{ReadsTable, Writes, pulled_by};
 use rustc_hash::{FxHashMap, FxHashSet};
+use smallvec::SmallVec;
 use strider_graph::{EventKind, FunctionDecl, LoadedGraph, Loc, NodeDecl, Step};
 use strider_nodes::{Elem, Op, Value, ValueType, registry};
 use strider_vm::{
@@ -141,6 +142,9 @@ impl ConstKey {
         }
     }
 }
+
+/// An instruction's operand slots as the compiler gathers them (inline up to 24).
+type Operands = SmallVec<[u32; 24]>;
 
 struct LoopSlots {
     counter: u32,
@@ -289,7 +293,7 @@ pub(crate) fn generate(loaded: &LoadedGraph, checked: &Checked) -> Program {
     g.pb.finish()
 }
 
-impl Gen<'_> {
+impl<'a> Gen<'a> {
     /// The scope origins of `frame` get: its function, or the event being generated.
     fn scope(&self, frame: usize) -> OriginScope {
         match self.frames[frame].body {
@@ -344,7 +348,7 @@ impl Gen<'_> {
         self.pb.set_origin(Some(id))
     }
 
-    fn body(&self, frame: usize) -> &Body {
+    fn body(&self, frame: usize) -> &'a Body {
         match self.frames[frame].body {
             None => &self.checked.graph,
             Some(f) => &self.checked.functions[f],
@@ -403,7 +407,7 @@ impl Gen<'_> {
         }
         for n in 0..self.frames[frame].node_out.len() {
             let names = self.output_names(body, n);
-            let types = self.body(frame).nodes[n].outputs.clone();
+            let types = &self.body(frame).nodes[n].outputs;
             for (o, &slot) in self.frames[frame].node_out[n].iter().enumerate() {
                 if let (Some(name), Some(&ty)) = (names.get(o), types.get(o)) {
                     entries.push((PinOwner::NodeOutput(n as u32), name.clone(), ty, slot));
@@ -467,8 +471,8 @@ impl Gen<'_> {
         for n in 0..node_count {
             let node = &self.body(id).nodes[n];
             let kind = node.kind;
-            let out_types = node.outputs.clone();
-            let state_types = node.state.clone();
+            let out_types = &node.outputs;
+            let state_types = &node.state;
             node_state.push(state_types.iter().map(|&t| self.pb.alloc(t)).collect());
             match kind {
                 NodeKind::Call(f) => {
@@ -540,7 +544,7 @@ impl Gen<'_> {
 
     /// Emits the pure nodes `args` depend on that do not hold their current value yet,
     /// then returns the argument slots.
-    fn pull(&mut self, frame: usize, args: &[Arg]) -> Vec<u32> {
+    fn pull(&mut self, frame: usize, args: &[Arg]) -> Operands {
         for a in args {
             if let Src::Node { node, .. } = a.src {
                 self.pure_closure(frame, node);
@@ -626,7 +630,7 @@ impl Gen<'_> {
 
     /// [`Gen::node`] without setting the origin.
     fn node_code(&mut self, frame: usize, n: usize) {
-        let node = self.body(frame).nodes[n].clone();
+        let node = &self.body(frame).nodes[n];
         let ins = self.pull(frame, &node.inputs);
         match node.kind {
             NodeKind::Builtin(op) => {
