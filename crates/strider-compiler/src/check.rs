@@ -73,6 +73,17 @@ pub(crate) struct Arg {
     pub to_float: bool,
 }
 
+impl Arg {
+    /// A constant of type `ty` (`loc`: the literal it was written as; `None` for a default).
+    fn constant(value: Value, ty: ValueType, loc: Option<Loc>) -> Self {
+        Arg {
+            src: Src::Const { value, loc },
+            ty,
+            to_float: false,
+        }
+    }
+}
+
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub(crate) enum NodeKind {
     Builtin(Op),
@@ -1218,11 +1229,7 @@ impl<'a, 'c> Scope<'a, 'c> {
             let arg = match g {
                 None => {
                     let value = pin.default.clone().unwrap_or_else(|| pin.ty.zero());
-                    Arg {
-                        src: Src::Const { value, loc: None },
-                        ty: pin.ty,
-                        to_float: false,
-                    }
+                    Arg::constant(value, pin.ty, None)
                 }
                 Some((p, Some(Ok(a)))) => {
                     if a.ty == pin.ty {
@@ -1249,14 +1256,7 @@ impl<'a, 'c> Scope<'a, 'c> {
                         if fit == Fit::Promoted {
                             promotions += 1;
                         }
-                        Arg {
-                            src: Src::Const {
-                                value,
-                                loc: Some(lit.loc),
-                            },
-                            ty: pin.ty,
-                            to_float: false,
-                        }
+                        Arg::constant(value, pin.ty, Some(lit.loc))
                     }
                     Err(m) => return Err((pi, Mismatch::Literal(m))),
                 },
@@ -1424,14 +1424,7 @@ impl<'a, 'c> Scope<'a, 'c> {
             let arg = match g {
                 None => match &q.default {
                     Some(lit) => match literal::convert(lit, q.ty, &[]) {
-                        Ok((value, _)) => Arg {
-                            src: Src::Const {
-                                value,
-                                loc: Some(lit.loc),
-                            },
-                            ty: q.ty,
-                            to_float: false,
-                        },
+                        Ok((value, _)) => Arg::constant(value, q.ty, Some(lit.loc)),
                         Err(m) => {
                             diags
                                 .error(
@@ -1495,14 +1488,7 @@ impl<'a, 'c> Scope<'a, 'c> {
                     }
                 }
                 Some((_, Some(Err(lit)))) => match literal::convert(lit, q.ty, &[]) {
-                    Ok((value, _)) => Arg {
-                        src: Src::Const {
-                            value,
-                            loc: Some(lit.loc),
-                        },
-                        ty: q.ty,
-                        to_float: false,
-                    },
+                    Ok((value, _)) => Arg::constant(value, q.ty, Some(lit.loc)),
                     Err(m) => {
                         diags
                             .error(
@@ -1561,14 +1547,7 @@ impl<'a, 'c> Scope<'a, 'c> {
                 None
             }
             Err(lit) => match literal::convert(&lit, ty, &[]) {
-                Ok((value, _)) => Some(Arg {
-                    src: Src::Const {
-                        value,
-                        loc: Some(lit.loc),
-                    },
-                    ty,
-                    to_float: false,
-                }),
+                Ok((value, _)) => Some(Arg::constant(value, ty, Some(lit.loc))),
                 Err(m) => {
                     diags
                         .error(
@@ -1751,14 +1730,7 @@ impl<'a, 'c> Scope<'a, 'c> {
                     Some(Err(lit)) => {
                         let ty = literal::natural_type(&lit).filter(|t| t.is_array());
                         match ty.map(|t| literal::convert(&lit, t, &[])) {
-                            Some(Ok((value, _))) => Some(Arg {
-                                src: Src::Const {
-                                    value,
-                                    loc: Some(lit.loc),
-                                },
-                                ty: ty?,
-                                to_float: false,
-                            }),
+                            Some(Ok((value, _))) => Some(Arg::constant(value, ty?, Some(lit.loc))),
                             _ => None,
                         }
                     }

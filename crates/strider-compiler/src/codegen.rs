@@ -120,25 +120,29 @@ impl ConstKey {
             }
             b
         };
+        let word = |w: u32| {
+            let mut b = [0; 10];
+            b[0] = w;
+            b
+        };
         match value {
-            Value::Bool(v) => {
-                ConstKey::Scalar(ValueType::Bool, [u32::from(*v), 0, 0, 0, 0, 0, 0, 0, 0, 0])
-            }
-            Value::Int(v) => ConstKey::Scalar(
-                ValueType::Int,
-                [v.cast_unsigned(), 0, 0, 0, 0, 0, 0, 0, 0, 0],
-            ),
+            Value::Bool(v) => ConstKey::Scalar(ValueType::Bool, word(u32::from(*v))),
+            Value::Int(v) => ConstKey::Scalar(ValueType::Int, word(v.cast_unsigned())),
             Value::Float(v) => ConstKey::Scalar(ValueType::Float, bits(&[*v])),
             Value::Vec3(v) => ConstKey::Scalar(ValueType::Vec3, bits(&v.to_array())),
             Value::Quat(q) => ConstKey::Scalar(ValueType::Quat, bits(&q.to_array())),
             Value::Transform(t) => ConstKey::Scalar(ValueType::Transform, t.to_bits()),
-            Value::Bone(Some(_)) | Value::Name(_) => {
-                ConstKey::Text(format!("{value:?}@{location}"))
-            }
-            Value::Array(Elem::Bone, items) if !items.is_empty() => {
-                ConstKey::Text(format!("{value:?}@{location}"))
-            }
-            Value::Bone(None) | Value::Array(..) => ConstKey::Text(format!("{value:?}")),
+            _ if ConstKey::per_literal(value) => ConstKey::Text(format!("{value:?}@{location}")),
+            _ => ConstKey::Text(format!("{value:?}")),
+        }
+    }
+
+    /// Whether `value` names bones or text, and so is kept apart per literal.
+    fn per_literal(value: &Value) -> bool {
+        match value {
+            Value::Bone(Some(_)) | Value::Name(_) => true,
+            Value::Array(Elem::Bone, items) => !items.is_empty(),
+            _ => false,
         }
     }
 }
@@ -520,14 +524,10 @@ impl<'a> Gen<'a> {
                 }
             }
             Src::Const { value, loc } => {
-                // Bone and text constants are kept apart per literal (see `ConstKey`); bone
-                // names are looked up at instantiation and reported with their location.
-                let per_literal = matches!(
-                    value,
-                    Value::Bone(Some(_)) | Value::Name(_) | Value::Array(Elem::Bone, _)
-                );
+                // Only constants kept apart per literal need their location (bone names are
+                // looked up at instantiation and reported with it).
                 let location = match loc {
-                    Some(l) if per_literal => self.loaded.sources.describe(*l),
+                    Some(l) if ConstKey::per_literal(value) => self.loaded.sources.describe(*l),
                     _ => String::new(),
                 };
                 self.constant(value, &location)
