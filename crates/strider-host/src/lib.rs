@@ -13,4 +13,5 @@ pub mod overrides;
 pub mod plots;
 pub mod report;
 pub mod scenario;
+mod sweep;
 pub mod world;

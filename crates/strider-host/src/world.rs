@@ -31,20 +31,25 @@
 //! # Queries
 //!
 //! Traces loop over the shapes and keep the nearest hit (the first shape in the list wins
-//! a tie), so answers are deterministic. Demo worlds hold a handful of shapes; a world
-//! with thousands would put them in parry's BVH (a `Compound` shape or a
-//! `parry3d::partitioning::Bvh`) instead of the linear loop.
+//! a tie), so answers are deterministic. Each shape's bounding box is computed once; a
+//! trace skips every shape whose box its own swept box misses, so only the few shapes near
+//! a trace pay for an exact query (a stair flight is one box per step). Demo worlds hold
+//! tens of shapes, where this linear pass over boxes costs less than descending a tree; a
+//! world with thousands would put them in parry's BVH (`parry3d::partitioning::Bvh`).
 
 use std::fmt;
 use std::path::{Path, PathBuf};
 
 use glam::{Quat, Vec3};
+use parry3d::bounding_volume::{Aabb, BoundingVolume};
 use parry3d::math::Pose;
 use parry3d::query::{Ray, ShapeCastOptions, cast_shapes};
 use parry3d::shape::{Ball, Shape, SharedShape, TriMesh};
 use serde::Deserialize;
 use serde::de::{self, Deserializer, SeqAccess, Visitor};
 use strider_core::{TraceHit, WorldQuery};
+
+use crate::sweep::{BallSweep, ball_box_sweep, ball_half_space_sweep, ball_triangle_sweep};
 
 /// How far [`World::ground_height`] looks below its start point, centimetres.
 pub const GROUND_SEARCH_DEPTH: f32 = 100_000.0;
@@ -577,18 +582,129 @@ pub(crate) struct SweepHit {
 #[derive(Clone)]
 pub struct World {
     desc: WorldDesc,
-    shapes: Vec<(Pose, SharedShape)>,
-    /// For each of `shapes`, its plane (a point on it and the unit outward normal, world
-    /// space) when it is a half-space: sweeps of a ball against it take the closed form
-    /// without asking the shape what it is.
-    planes: Vec<Option<(Vec3, Vec3)>>,
+    colliders: Vec<Collider>,
 }
+
+/// One collision shape placed in the world, with what traces need to know about it before
+/// asking it anything.
+#[derive(Clone)]
+struct Collider {
+    pose: Pose,
+    shape: SharedShape,
+    /// What the shape is, for the sweeps that have a closed form.
+    form: Form,
+    /// Its world-space bounding box, loosened by [`CULL_MARGIN`]; `None` for a half-space
+    /// (unbounded), which every trace tests.
+    bounds: Option<Aabb>,
+}
+
+/// The kinds of shape a ball's sweep is answered for in closed form ([`crate::sweep`]).
+#[derive(Clone, Copy)]
+enum Form {
+    /// A half-space: a point on its plane and its unit outward normal, world space.
+    HalfSpace { point: Vec3, normal: Vec3 },
+    /// A box with these half extents (cm) in its own frame (the collider's pose).
+    Box { half: Vec3 },
+    /// A triangle mesh (the heightfield): its triangles near the sweep, found through the
+    /// mesh's own tree.
+    Mesh,
+    /// Anything else (a ramp's convex hull): parry3d's general cast.
+    Other,
+}
+
+impl Collider {
+    /// Whether a trace whose swept volume lies within `reach` may touch this shape.
+    #[inline]
+    fn near(&self, reach: &Aabb) -> bool {
+        self.bounds.is_none_or(|b| b.intersects(reach))
+    }
+
+    /// A ball of `radius` swept from `start` along the unit `dir` for `length` (world
+    /// space), in closed form: `Some(hit or miss)`, or `None` when this shape has no closed
+    /// form or the ball starts overlapping it (then parry3d's cast answers).
+    #[inline]
+    fn ball_sweep(
+        &self,
+        start: Vec3,
+        dir: Vec3,
+        length: f32,
+        radius: f32,
+        stop_at_penetration: bool,
+    ) -> Option<Option<SweepHit>> {
+        match self.form {
+            Form::HalfSpace { point, normal } => Some(
+                ball_half_space_sweep(
+                    start,
+                    dir,
+                    length,
+                    radius,
+                    point,
+                    normal,
+                    stop_at_penetration,
+                )
+                .map(|distance| SweepHit { distance, normal }),
+            ),
+            Form::Box { half } => {
+                let local_start = self.pose.inverse_transform_point(start);
+                let local_dir = self.pose.rotation.inverse() * dir;
+                self.found(ball_box_sweep(local_start, local_dir, length, radius, half))
+            }
+            Form::Mesh => {
+                let mesh = self.shape.as_trimesh()?;
+                let local_start = self.pose.inverse_transform_point(start);
+                let local_dir = self.pose.rotation.inverse() * dir;
+                let local_end = local_start + local_dir * length;
+                let reach = Aabb::new(
+                    local_start.min(local_end) - radius,
+                    local_start.max(local_end) + radius,
+                );
+                let mut nearest = BallSweep::Miss;
+                for i in mesh.bvh().intersect_aabb(&reach) {
+                    let t = mesh.triangle(i);
+                    match ball_triangle_sweep(
+                        local_start,
+                        local_dir,
+                        length,
+                        radius,
+                        [t.a, t.b, t.c],
+                    ) {
+                        BallSweep::Overlap => return None,
+                        BallSweep::Hit { distance, .. } if matches!(nearest, BallSweep::Hit { distance: d, .. } if d <= distance) =>
+                            {}
+                        hit @ BallSweep::Hit { .. } => nearest = hit,
+                        BallSweep::Miss => {}
+                    }
+                }
+                self.found(nearest)
+            }
+            Form::Other => None,
+        }
+    }
+
+    /// A closed-form answer in this shape's frame as a world-space hit; `None` for an
+    /// overlap at the start.
+    fn found(&self, sweep: BallSweep) -> Option<Option<SweepHit>> {
+        match sweep {
+            BallSweep::Miss => Some(None),
+            BallSweep::Hit { distance, normal } => Some(Some(SweepHit {
+                distance,
+                normal: self.pose.rotation * normal,
+            })),
+            BallSweep::Overlap => None,
+        }
+    }
+}
+
+/// How much (cm) bounding boxes are widened before a trace skips a shape: far more than
+/// parry3d's query tolerances, so a skipped shape is one the exact query would have missed
+/// and answers are the same with or without the boxes.
+const CULL_MARGIN: f32 = 0.01;
 
 impl fmt::Debug for World {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         f.debug_struct("World")
             .field("desc", &self.desc)
-            .field("collision_shapes", &self.shapes.len())
+            .field("collision_shapes", &self.colliders.len())
             .finish()
     }
 }
@@ -645,19 +761,39 @@ impl World {
 
     /// A world of built shapes and the description they came from.
     fn with_shapes(desc: WorldDesc, shapes: Vec<(Pose, SharedShape)>) -> World {
-        let planes = shapes
-            .iter()
+        let colliders = shapes
+            .into_iter()
             .map(|(pose, shape)| {
-                let half_space = shape.as_halfspace()?;
-                let normal = (pose.rotation * half_space.normal).normalize_or_zero();
-                (normal != Vec3::ZERO).then_some((pose.translation, normal))
+                let form = if let Some(h) = shape.as_halfspace() {
+                    let normal = (pose.rotation * h.normal).normalize_or_zero();
+                    if normal == Vec3::ZERO {
+                        Form::Other
+                    } else {
+                        Form::HalfSpace {
+                            point: pose.translation,
+                            normal,
+                        }
+                    }
+                } else if let Some(cuboid) = shape.as_cuboid() {
+                    Form::Box {
+                        half: cuboid.half_extents,
+                    }
+                } else if shape.as_trimesh().is_some() {
+                    Form::Mesh
+                } else {
+                    Form::Other
+                };
+                let bounds = (!matches!(form, Form::HalfSpace { .. }))
+                    .then(|| shape.compute_aabb(&pose).loosened(CULL_MARGIN));
+                Collider {
+                    pose,
+                    shape,
+                    form,
+                    bounds,
+                }
             })
             .collect();
-        World {
-            desc,
-            shapes,
-            planes,
-        }
+        World { desc, colliders }
     }
 
     /// Builds a world, leaving out any shape that [`ShapeDesc::validate`] rejects or that
@@ -758,22 +894,24 @@ impl World {
         } else {
             None
         };
+        let end = start + delta;
+        let reach = if let Some(radius) = ball_radius {
+            Aabb::new(start.min(end) - radius, start.max(end) + radius)
+        } else {
+            let local = shape.compute_local_aabb();
+            Aabb::new(start + local.mins, start + local.maxs)
+                .merged(&Aabb::new(end + local.mins, end + local.maxs))
+                .loosened(skin.max(0.0))
+        };
         let mut best: Option<SweepHit> = None;
-        for ((pose2, shape2), plane) in self.shapes.iter().zip(&self.planes) {
-            if let (Some(radius), Some((point, normal))) = (ball_radius, *plane) {
-                let hit = ball_half_space_sweep(
-                    start,
-                    dir,
-                    length,
-                    radius,
-                    point,
-                    normal,
-                    stop_at_penetration,
-                );
-                if let Some(distance) = hit
-                    && best.is_none_or(|b| distance < b.distance)
+        for collider in self.colliders.iter().filter(|c| c.near(&reach)) {
+            let closed_form = ball_radius
+                .and_then(|r| collider.ball_sweep(start, dir, length, r, stop_at_penetration));
+            if let Some(found) = closed_form {
+                if let Some(hit) = found
+                    && best.is_none_or(|b| hit.distance < b.distance)
                 {
-                    best = Some(SweepHit { distance, normal });
+                    best = Some(hit);
                 }
                 continue;
             }
@@ -781,9 +919,9 @@ impl World {
                 &start_pose,
                 dir,
                 shape,
-                pose2,
+                &collider.pose,
                 Vec3::ZERO,
-                shape2.as_ref(),
+                collider.shape.as_ref(),
                 options,
             ) else {
                 continue;
@@ -802,37 +940,6 @@ impl World {
         }
         best
     }
-}
-
-/// Where a sphere of `radius` whose centre moves from `start` along the unit vector `dir`
-/// for up to `length` first touches the half-space below the plane through `point` with
-/// unit `normal`: the distance travelled, 0 when it starts touching or inside (if
-/// `stop_at_penetration`; else a sphere starting inside does not hit).
-///
-/// Closed form, written here because the sphere traces of a locomotion graph mostly land on
-/// the ground: parry3d answers this case through its general support-map cast at about
-/// 50 times the cost of these few lines (each foot-landing grid traces it 36 times a
-/// frame). The world tests check it against parry3d's cast on random sweeps.
-pub(crate) fn ball_half_space_sweep(
-    start: Vec3,
-    dir: Vec3,
-    length: f32,
-    radius: f32,
-    point: Vec3,
-    normal: Vec3,
-    stop_at_penetration: bool,
-) -> Option<f32> {
-    // Signed distance from the sphere's lowest point (towards the plane) to the plane.
-    let gap = normal.dot(start - point) - radius;
-    if gap <= 0.0 {
-        return stop_at_penetration.then_some(0.0);
-    }
-    let approach = -normal.dot(dir);
-    if approach <= 0.0 {
-        return None;
-    }
-    let distance = gap / approach;
-    (distance <= length).then_some(distance)
 }
 
 /// The options every RON file of the host is read with (`Some(...)` may be left out).
@@ -930,9 +1037,13 @@ impl WorldQuery for World {
         }
         let dir = delta / length;
         let ray = Ray::new(start, dir);
+        let reach = Aabb::new(start.min(end), start.max(end));
         let mut best: Option<(f32, Vec3)> = None;
-        for (pose, shape) in &self.shapes {
-            if let Some(hit) = shape.cast_ray_and_get_normal(pose, &ray, length, true)
+        for collider in self.colliders.iter().filter(|c| c.near(&reach)) {
+            if let Some(hit) =
+                collider
+                    .shape
+                    .cast_ray_and_get_normal(&collider.pose, &ray, length, true)
                 && best.is_none_or(|(d, _)| hit.time_of_impact < d)
             {
                 best = Some((hit.time_of_impact, hit.normal));
