@@ -1,5 +1,5 @@
-//! Closed-form sweeps of a ball against the world's simple shapes: a half-space, a box and a
-//! triangle.
+//! Closed-form sweeps of a ball against the world's simple shapes: a half-space, a box, a
+//! triangle and a convex hull (a ramp).
 //!
 //! Written here rather than taken from parry3d because a locomotion graph sweeps small balls
 //! dozens of times per character and frame (each foot's landing grid alone traces 9 + 1),
@@ -173,6 +173,37 @@ pub(crate) fn ball_triangle_sweep(
         }
     }
     edges
+}
+
+/// A ball of `radius` swept from `start` along `dir` for `length`, against the solid convex
+/// hull bounded by `triangles` (its surface) and `planes` (each face's unit outward normal
+/// and offset: inside is `normal · p ≤ offset` for every face).
+pub(crate) fn ball_hull_sweep(
+    start: Vec3,
+    dir: Vec3,
+    length: f32,
+    radius: f32,
+    triangles: &[[Vec3; 3]],
+    planes: &[(Vec3, f32)],
+) -> BallSweep {
+    if planes.iter().all(|&(n, d)| n.dot(start) <= d) {
+        return BallSweep::Overlap;
+    }
+    // From outside, the ball meets the hull's surface first; the triangles' edges inside a
+    // face (its diagonals) lie within the grown hull, so they never come first.
+    let mut nearest = BallSweep::Miss;
+    for &corners in triangles {
+        match ball_triangle_sweep(start, dir, length, radius, corners) {
+            BallSweep::Overlap => return BallSweep::Overlap,
+            BallSweep::Hit { distance, normal } => {
+                if !matches!(nearest, BallSweep::Hit { distance: d, .. } if d <= distance) {
+                    nearest = BallSweep::Hit { distance, normal };
+                }
+            }
+            BallSweep::Miss => {}
+        }
+    }
+    nearest
 }
 
 /// The sweep against a triangle's three edges and corners alone.

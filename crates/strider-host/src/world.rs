@@ -39,6 +39,7 @@
 
 use std::fmt;
 use std::path::{Path, PathBuf};
+use std::sync::Arc;
 
 use glam::{Quat, Vec3};
 use parry3d::bounding_volume::{Aabb, BoundingVolume};
@@ -49,7 +50,9 @@ use serde::Deserialize;
 use serde::de::{self, Deserializer, SeqAccess, Visitor};
 use strider_core::{TraceHit, WorldQuery};
 
-use crate::sweep::{BallSweep, ball_box_sweep, ball_half_space_sweep, ball_triangle_sweep};
+use crate::sweep::{
+    BallSweep, ball_box_sweep, ball_half_space_sweep, ball_hull_sweep, ball_triangle_sweep,
+};
 
 /// How far [`World::ground_height`] looks below its start point, centimetres.
 pub const GROUND_SEARCH_DEPTH: f32 = 100_000.0;
@@ -599,7 +602,7 @@ struct Collider {
 }
 
 /// The kinds of shape a ball's sweep is answered for in closed form ([`crate::sweep`]).
-#[derive(Clone, Copy)]
+#[derive(Clone)]
 enum Form {
     /// A half-space: a point on its plane and its unit outward normal, world space.
     HalfSpace { point: Vec3, normal: Vec3 },
@@ -608,6 +611,12 @@ enum Form {
     /// A triangle mesh (the heightfield): its triangles near the sweep, found through the
     /// mesh's own tree.
     Mesh,
+    /// A convex hull (a ramp), in its own frame: its surface as triangles and its faces'
+    /// planes (unit outward normal, offset).
+    Hull {
+        triangles: Arc<[[Vec3; 3]]>,
+        planes: Arc<[(Vec3, f32)]>,
+    },
     /// Anything else (a ramp's convex hull): parry3d's general cast.
     Other,
 }
@@ -631,8 +640,8 @@ impl Collider {
         radius: f32,
         stop_at_penetration: bool,
     ) -> Option<Option<SweepHit>> {
-        match self.form {
-            Form::HalfSpace { point, normal } => Some(
+        match &self.form {
+            &Form::HalfSpace { point, normal } => Some(
                 ball_half_space_sweep(
                     start,
                     dir,
@@ -644,7 +653,7 @@ impl Collider {
                 )
                 .map(|distance| SweepHit { distance, normal }),
             ),
-            Form::Box { half } => {
+            &Form::Box { half } => {
                 let local_start = self.pose.inverse_transform_point(start);
                 let local_dir = self.pose.rotation.inverse() * dir;
                 self.found(ball_box_sweep(local_start, local_dir, length, radius, half))
@@ -677,6 +686,18 @@ impl Collider {
                 }
                 self.found(nearest)
             }
+            Form::Hull { triangles, planes } => {
+                let local_start = self.pose.inverse_transform_point(start);
+                let local_dir = self.pose.rotation.inverse() * dir;
+                self.found(ball_hull_sweep(
+                    local_start,
+                    local_dir,
+                    length,
+                    radius,
+                    triangles,
+                    planes,
+                ))
+            }
             Form::Other => None,
         }
     }
@@ -692,6 +713,28 @@ impl Collider {
             })),
             BallSweep::Overlap => None,
         }
+    }
+}
+
+/// The closed-form description of a convex hull from its surface triangles (its own frame):
+/// each triangle's plane, turned to face away from the hull's centre.
+fn hull_form((vertices, indices): (Vec<Vec3>, Vec<[u32; 3]>)) -> Form {
+    let centre = vertices.iter().copied().sum::<Vec3>() / vertices.len().max(1) as f32;
+    let triangles: Vec<[Vec3; 3]> = indices
+        .iter()
+        .map(|t| t.map(|i| vertices[i as usize]))
+        .collect();
+    let planes = triangles
+        .iter()
+        .filter_map(|&[a, b, c]| {
+            let n = (b - a).cross(c - a).try_normalize()?;
+            let n = if n.dot(a - centre) < 0.0 { -n } else { n };
+            Some((n, n.dot(a)))
+        })
+        .collect();
+    Form::Hull {
+        triangles: triangles.into(),
+        planes,
     }
 }
 
@@ -780,6 +823,8 @@ impl World {
                     }
                 } else if shape.as_trimesh().is_some() {
                     Form::Mesh
+                } else if let Some(hull) = shape.as_convex_polyhedron() {
+                    hull_form(hull.to_trimesh())
                 } else {
                     Form::Other
                 };
@@ -882,13 +927,6 @@ impl World {
             return None;
         }
         let dir = delta / length;
-        let start_pose = Pose::from_translation(start);
-        let options = ShapeCastOptions {
-            max_time_of_impact: length,
-            target_distance: skin,
-            stop_at_penetration,
-            compute_impact_geometry_on_penetration: true,
-        };
         let ball_radius = if skin == 0.0 {
             shape.as_ball().map(|ball| ball.radius)
         } else {
@@ -915,8 +953,14 @@ impl World {
                 }
                 continue;
             }
+            let options = ShapeCastOptions {
+                max_time_of_impact: length,
+                target_distance: skin,
+                stop_at_penetration,
+                compute_impact_geometry_on_penetration: true,
+            };
             let Ok(Some(hit)) = cast_shapes(
-                &start_pose,
+                &Pose::from_translation(start),
                 dir,
                 shape,
                 &collider.pose,

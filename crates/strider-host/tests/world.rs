@@ -529,6 +529,45 @@ fn sphere_traces_onto_boxes_agree_with_parry3d() {
 }
 
 #[test]
+fn sphere_traces_onto_a_ramp_agree_with_parry3d() {
+    // Ball-versus-convex-hull sweeps in closed form (the ramp's faces as triangles, its
+    // edges and corners) against parry3d's cast on a hull built here from the shared
+    // corner formula; a 25° ramp turned by −40°, swept at from every side.
+    use parry3d::math::Pose;
+    use parry3d::shape::ConvexPolyhedron;
+    let desc = ShapeDesc::Ramp {
+        start: (20.0, -30.0, 4.0),
+        yaw: -40.0,
+        angle: 25.0,
+        length: 120.0,
+        width: 80.0,
+    };
+    let w = World::try_from_desc(&WorldDesc {
+        shapes: vec![desc.clone()],
+    })
+    .expect("valid ramp");
+    let corners = desc.ramp_corners().expect("a ramp");
+    let hull = ConvexPolyhedron::from_convex_hull(&corners).expect("hull");
+    let pose = Pose::from_parts(
+        Vec3::new(20.0, -30.0, 4.0),
+        glam::Quat::from_rotation_z((-40f32).to_radians()),
+    );
+    let hits = agree_with_parry(
+        &w,
+        &hull,
+        &pose,
+        (Vec3::new(20.0, -30.0, 40.0), Vec3::new(130.0, 130.0, 60.0)),
+        Vec3::new(90.0, 90.0, 90.0),
+        3000,
+        0x5eed_0001,
+    );
+    assert!(
+        hits > 300 && hits < 2800,
+        "{hits} hits: the sweeps should mix hits and misses"
+    );
+}
+
+#[test]
 fn sphere_traces_onto_a_heightfield_agree_with_parry3d() {
     // Ball-versus-triangle sweeps in closed form against the heightfield's triangles, and
     // parry3d's cast against a mesh built here from the shared vertex formula.
