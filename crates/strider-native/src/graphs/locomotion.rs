@@ -14,7 +14,7 @@ use strider_vm::native::{Frame, NativeProgram, step};
 /// The forward event of `locomotion`, compiled ahead of time.
 pub static NATIVE: NativeProgram = NativeProgram {
     name: "locomotion",
-    fingerprint: 0xd38035e4ee93ca38,
+    fingerprint: 0x1a2fc6872d0642f9,
     forward,
 };
 
@@ -28,52 +28,52 @@ fn forward(f: &mut Frame<'_>) {
                 step(f, Op::Not, &[0, 9], 454);
                 step(f, Op::Copy(ValueType::Bool), &[9, 1], 455);
                 step(f, Op::WorldTransform, &[12], 456);
-                step(f, Op::BreakTransform, &[12, 32, 7, 33], 457);
+                step(f, Op::BreakTransform, &[12, 33, 7, 34], 457);
                 step(f, Op::Select(ValueType::Transform), &[0, 0, 12, 13], 458);
-                step(f, Op::BreakTransform, &[13, 34, 8, 35], 459);
-                step(f, Op::SubV, &[32, 34, 36], 460);
-                step(f, Op::LengthV, &[36, 130], 461);
-                step(f, Op::GreaterF, &[130, 32, 10], 462);
+                step(f, Op::BreakTransform, &[13, 35, 8, 36], 459);
+                step(f, Op::SubV, &[33, 35, 37], 460);
+                step(f, Op::LengthV, &[37, 136], 461);
+                step(f, Op::GreaterF, &[136, 33, 10], 462);
                 step(f, Op::Copy(ValueType::Bool), &[10, 2], 463);
                 step(f, Op::MakeRelative, &[13, 12, 17], 464);
-                step(f, Op::Select(ValueType::Transform), &[10, 110, 17, 18], 465);
+                step(f, Op::Select(ValueType::Transform), &[10, 111, 17, 18], 465);
                 step(f, Op::Copy(ValueType::Transform), &[18, 2], 466);
                 step(f, Op::InverseT, &[13, 15], 467);
                 step(f, Op::MulT, &[12, 15, 16], 468);
                 step(f, Op::Copy(ValueType::Transform), &[16, 1], 469);
-                step(f, Op::TransformVector, &[2, 0, 41], 470);
+                step(f, Op::TransformVector, &[2, 0, 42], 470);
                 step(f, Op::InverseT, &[12, 14], 471);
-                step(f, Op::DeltaTime, &[129], 472);
-                step(f, Op::DivF, &[682, 129, 131], 473);
-                step(f, Op::ScaleV, &[36, 131, 37], 474);
-                step(f, Op::TransformVector, &[14, 37, 38], 475);
-                step(f, Op::BreakVector, &[38, 132, 133, 134], 476);
-                step(f, Op::MakeVector, &[132, 133, 680, 39], 477);
-                step(f, Op::LengthV, &[39, 135], 478);
-                step(f, Op::MulF, &[135, 112, 136], 479);
-                step(f, Op::NegF, &[136, 137], 480);
-                step(f, Op::ClampF, &[134, 137, 136, 138], 481);
-                step(f, Op::MakeVector, &[132, 133, 138, 40], 482);
-                step(f, Op::Select(ValueType::Vec3), &[2, 41, 40, 43], 483);
-                step(f, Op::VectorLerp, &[41, 43, 33, 680, 44], 484);
-                step(f, Op::Copy(ValueType::Vec3), &[44, 0], 485);
-                step(f, Op::TransformVector, &[2, 1, 42], 486);
-                step(f, Op::TransformVector, &[2, 0, 41], 487);
-                step(f, Op::Select(ValueType::Vec3), &[2, 41, 40, 43], 488);
-                step(f, Op::VectorLerp, &[42, 43, 34, 680, 45], 489);
-                step(f, Op::Copy(ValueType::Vec3), &[45, 1], 490);
-                step(f, Op::LengthV, &[43, 145], 491);
-                step(f, Op::Copy(ValueType::Float), &[145, 0], 492);
-                step(f, Op::BreakVector, &[36, 139, 140, 141], 493);
-                step(f, Op::MulF, &[138, 129, 142], 494);
-                step(f, Op::SubF, &[141, 142, 143], 495);
-                step(f, Op::Select(ValueType::Float), &[10, 680, 143, 144], 496);
-                step(f, Op::Copy(ValueType::Float), &[144, 1], 497);
+                step(f, Op::DeltaTime, &[135], 472);
+                step(f, Op::DivF, &[806, 135, 137], 473);
+                step(f, Op::ScaleV, &[37, 137, 38], 474);
+                step(f, Op::TransformVector, &[14, 38, 39], 475);
+                step(f, Op::BreakVector, &[39, 138, 139, 140], 476);
+                step(f, Op::MakeVector, &[138, 139, 804, 40], 477);
+                step(f, Op::LengthV, &[40, 141], 478);
+                step(f, Op::MulF, &[141, 118, 142], 479);
+                step(f, Op::NegF, &[142, 143], 480);
+                step(f, Op::ClampF, &[140, 143, 142, 144], 481);
+                step(f, Op::MakeVector, &[138, 139, 144, 41], 482);
+                step(f, Op::Select(ValueType::Vec3), &[2, 42, 41, 44], 483);
+                step(f, Op::VectorLerp, &[42, 44, 34, 804, 45], 484);
+                step(f, Op::Copy(ValueType::Vec3), &[45, 0], 485);
+                step(f, Op::TransformVector, &[2, 1, 43], 486);
+                step(f, Op::TransformVector, &[2, 0, 42], 487);
+                step(f, Op::Select(ValueType::Vec3), &[2, 42, 41, 44], 488);
+                step(f, Op::VectorLerp, &[43, 44, 35, 804, 46], 489);
+                step(f, Op::Copy(ValueType::Vec3), &[46, 1], 490);
+                step(f, Op::LengthV, &[44, 151], 491);
+                step(f, Op::Copy(ValueType::Float), &[151, 0], 492);
+                step(f, Op::BreakVector, &[37, 145, 146, 147], 493);
+                step(f, Op::MulF, &[144, 135, 148], 494);
+                step(f, Op::SubF, &[147, 148, 149], 495);
+                step(f, Op::Select(ValueType::Float), &[10, 804, 149, 150], 496);
+                step(f, Op::Copy(ValueType::Float), &[150, 1], 497);
                 step(f, Op::JumpIfFalse, &[2, 516], 498)
             }
             498 => {
                 step(f, Op::Copy(ValueType::Array(Elem::Bone)), &[0, 12], 499);
-                step(f, Op::Copy(ValueType::Int), &[65, 17], 500);
+                step(f, Op::Copy(ValueType::Int), &[72, 17], 500);
                 500
             }
             500 => {
@@ -95,48 +95,48 @@ fn forward(f: &mut Frame<'_>) {
                 step(f, Op::Jump, &[500], 514)
             }
             514 => {
-                step(f, Op::Copy(ValueType::Float), &[680, 14], 515);
+                step(f, Op::Copy(ValueType::Float), &[804, 14], 515);
                 step(f, Op::Jump, &[516], 516)
             }
             516 => {
                 step(f, Op::WorldTransform, &[12], 517);
                 step(f, Op::Copy(ValueType::Transform), &[12, 0], 518);
-                step(f, Op::Copy(ValueType::Bool), &[79, 0], 519);
+                step(f, Op::Copy(ValueType::Bool), &[98, 0], 519);
                 step(f, Op::JumpIfFalse, &[8, 526], 520)
             }
             520 => {
-                step(f, Op::GetTransform, &[34, 65, 79, 19], 521);
-                step(f, Op::BreakTransform, &[19, 46, 9, 47], 522);
-                step(f, Op::ScaleV, &[0, 683, 48], 523);
-                step(f, Op::AddV, &[46, 48, 49], 524);
-                step(f, Op::DrawArrow, &[46, 49, 681, 393], 525);
+                step(f, Op::GetTransform, &[34, 72, 98, 19], 521);
+                step(f, Op::BreakTransform, &[19, 47, 9, 48], 522);
+                step(f, Op::ScaleV, &[0, 807, 49], 523);
+                step(f, Op::AddV, &[47, 49, 50], 524);
+                step(f, Op::DrawArrow, &[47, 50, 805, 422], 525);
                 step(f, Op::Jump, &[526], 526)
             }
             526 => {
-                step(f, Op::Copy(ValueType::Float), &[680, 146], 527);
-                step(f, Op::Copy(ValueType::Float), &[682, 147], 528);
-                step(f, Op::Copy(ValueType::Float), &[682, 148], 529);
-                step(f, Op::Copy(ValueType::Bool), &[80, 11], 530);
-                step(f, Op::Copy(ValueType::Bool), &[80, 12], 531);
+                step(f, Op::Copy(ValueType::Float), &[804, 152], 527);
+                step(f, Op::Copy(ValueType::Float), &[806, 153], 528);
+                step(f, Op::Copy(ValueType::Float), &[806, 154], 529);
+                step(f, Op::Copy(ValueType::Bool), &[99, 11], 530);
+                step(f, Op::Copy(ValueType::Bool), &[99, 12], 531);
                 step(f, Op::Copy(ValueType::Array(Elem::Transform)), &[7, 8], 532);
-                step(f, Op::Copy(ValueType::Int), &[65, 25], 533);
-                step(f, Op::MakeVector, &[680, 680, 51, 54], 534);
+                step(f, Op::Copy(ValueType::Int), &[72, 25], 533);
+                step(f, Op::MakeVector, &[804, 804, 53, 55], 534);
                 534
             }
             534 => {
                 step(f, Op::ForEachNext(Elem::Transform), &[8, 25, 21, 26, 27, 545], 535)
             }
             535 => {
-                step(f, Op::BreakTransform, &[21, 50, 10, 51], 536);
-                step(f, Op::TransformPoint, &[2, 50, 52], 537);
-                step(f, Op::LerpV, &[52, 50, 148, 53], 538);
-                step(f, Op::AddV, &[53, 54, 55], 539);
-                step(f, Op::SubV, &[53, 54, 56], 540);
-                step(f, Op::LineTrace, &[55, 56, 13, 57, 58, 149], 541);
+                step(f, Op::BreakTransform, &[21, 51, 10, 52], 536);
+                step(f, Op::TransformPoint, &[2, 51, 53], 537);
+                step(f, Op::LerpV, &[53, 51, 154, 54], 538);
+                step(f, Op::AddV, &[54, 55, 56], 539);
+                step(f, Op::SubV, &[54, 55, 57], 540);
+                step(f, Op::LineTrace, &[56, 57, 13, 58, 59, 155], 541);
                 step(f, Op::JumpIfFalse, &[13, 544], 542)
             }
             542 => {
-                step(f, Op::Copy(ValueType::Bool), &[79, 12], 543);
+                step(f, Op::Copy(ValueType::Bool), &[98, 12], 543);
                 step(f, Op::Jump, &[544], 544)
             }
             544 => {
@@ -157,37 +157,37 @@ fn forward(f: &mut Frame<'_>) {
             }
             552 => {
                 step(f, Op::Copy(ValueType::Int), &[1, 24], 553);
-                step(f, Op::Copy(ValueType::Int), &[65, 20], 554);
+                step(f, Op::Copy(ValueType::Int), &[72, 20], 554);
                 554
             }
             554 => {
                 step(f, Op::ForNext, &[20, 24, 22, 582], 555)
             }
             555 => {
-                step(f, Op::AddF, &[146, 147, 150], 556);
-                step(f, Op::MulF, &[150, 681, 151], 557);
-                step(f, Op::Copy(ValueType::Float), &[151, 152], 558);
-                step(f, Op::Copy(ValueType::Bool), &[80, 17], 559);
-                step(f, Op::Copy(ValueType::Bool), &[80, 18], 560);
+                step(f, Op::AddF, &[152, 153, 156], 556);
+                step(f, Op::MulF, &[156, 805, 157], 557);
+                step(f, Op::Copy(ValueType::Float), &[157, 158], 558);
+                step(f, Op::Copy(ValueType::Bool), &[99, 17], 559);
+                step(f, Op::Copy(ValueType::Bool), &[99, 18], 560);
                 step(f, Op::Copy(ValueType::Array(Elem::Transform)), &[7, 9], 561);
-                step(f, Op::Copy(ValueType::Int), &[65, 28], 562);
-                step(f, Op::MakeVector, &[680, 680, 51, 63], 563);
+                step(f, Op::Copy(ValueType::Int), &[72, 28], 562);
+                step(f, Op::MakeVector, &[804, 804, 53, 64], 563);
                 563
             }
             563 => {
                 step(f, Op::ForEachNext(Elem::Transform), &[9, 28, 22, 29, 30, 574], 564)
             }
             564 => {
-                step(f, Op::BreakTransform, &[22, 59, 11, 60], 565);
-                step(f, Op::TransformPoint, &[2, 59, 61], 566);
-                step(f, Op::LerpV, &[61, 59, 152, 62], 567);
-                step(f, Op::AddV, &[62, 63, 64], 568);
-                step(f, Op::SubV, &[62, 63, 65], 569);
-                step(f, Op::LineTrace, &[64, 65, 19, 66, 67, 153], 570);
+                step(f, Op::BreakTransform, &[22, 60, 11, 61], 565);
+                step(f, Op::TransformPoint, &[2, 60, 62], 566);
+                step(f, Op::LerpV, &[62, 60, 158, 63], 567);
+                step(f, Op::AddV, &[63, 64, 65], 568);
+                step(f, Op::SubV, &[63, 64, 66], 569);
+                step(f, Op::LineTrace, &[65, 66, 19, 67, 68, 159], 570);
                 step(f, Op::JumpIfFalse, &[19, 573], 571)
             }
             571 => {
-                step(f, Op::Copy(ValueType::Bool), &[79, 18], 572);
+                step(f, Op::Copy(ValueType::Bool), &[98, 18], 572);
                 step(f, Op::Jump, &[573], 573)
             }
             573 => {
@@ -202,11 +202,11 @@ fn forward(f: &mut Frame<'_>) {
                 step(f, Op::JumpIfFalse, &[20, 580], 578)
             }
             578 => {
-                step(f, Op::Copy(ValueType::Float), &[151, 146], 579);
+                step(f, Op::Copy(ValueType::Float), &[157, 152], 579);
                 step(f, Op::Jump, &[581], 580)
             }
             580 => {
-                step(f, Op::Copy(ValueType::Float), &[151, 147], 581);
+                step(f, Op::Copy(ValueType::Float), &[157, 153], 581);
                 581
             }
             581 => {
@@ -219,1784 +219,1993 @@ fn forward(f: &mut Frame<'_>) {
                 step(f, Op::Jump, &[584], 584)
             }
             584 => {
-                step(f, Op::Select(ValueType::Float), &[5, 684, 682, 159], 585);
+                step(f, Op::Select(ValueType::Float), &[5, 808, 806, 165], 585);
                 step(f, Op::NotEquals(Elem::Bool), &[11, 6, 16], 586);
-                step(f, Op::AddF, &[146, 147, 150], 587);
-                step(f, Op::MulF, &[150, 681, 154], 588);
-                step(f, Op::Select(ValueType::Float), &[16, 154, 681, 155], 589);
-                step(f, Op::Select(ValueType::Float), &[15, 155, 680, 161], 590);
-                step(f, Op::MulF, &[159, 161, 163], 591);
-                step(f, Op::DeltaTime, &[157], 592);
-                step(f, Op::DivF, &[157, 115, 158], 593);
-                step(f, Op::MulF, &[163, 158, 164], 594);
-                step(f, Op::AddF, &[17, 164, 165], 595);
-                step(f, Op::ClampF, &[165, 680, 682, 166], 596);
-                step(f, Op::Select(ValueType::Float), &[14, 684, 682, 160], 597);
-                step(f, Op::SubF, &[682, 155, 156], 598);
-                step(f, Op::Select(ValueType::Float), &[15, 156, 682, 162], 599);
-                step(f, Op::MulF, &[160, 162, 167], 600);
-                step(f, Op::MulF, &[167, 158, 168], 601);
-                step(f, Op::AddF, &[166, 168, 169], 602);
-                step(f, Op::ClampF, &[169, 680, 682, 170], 603);
-                step(f, Op::MulF, &[170, 170, 171], 604);
-                step(f, Op::MulF, &[170, 685, 172], 605);
-                step(f, Op::SubF, &[686, 172, 173], 606);
-                step(f, Op::MulF, &[171, 173, 174], 607);
-                step(f, Op::AddF, &[18, 174, 175], 608);
-                step(f, Op::MulF, &[175, 681, 176], 609);
-                step(f, Op::SubF, &[682, 176, 177], 610);
-                step(f, Op::MulF, &[177, 177, 178], 611);
-                step(f, Op::SubF, &[682, 178, 179], 612);
-                step(f, Op::Copy(ValueType::Float), &[179, 19], 613);
-                step(f, Op::Copy(ValueType::Float), &[174, 18], 614);
-                step(f, Op::Copy(ValueType::Float), &[170, 17], 615);
-                step(f, Op::GreaterF, &[18, 680, 21], 616);
-                step(f, Op::TransformVector, &[2, 3, 68], 617);
-                step(f, Op::Select(ValueType::Vec3), &[21, 68, 0, 69], 618);
-                step(f, Op::Copy(ValueType::Vec3), &[69, 3], 619);
-                step(f, Op::LerpV, &[0, 3, 18, 70], 620);
-                step(f, Op::Select(ValueType::Vec3), &[21, 70, 0, 71], 621);
-                step(f, Op::Copy(ValueType::Vec3), &[71, 2], 622);
+                step(f, Op::AddF, &[152, 153, 156], 587);
+                step(f, Op::MulF, &[156, 805, 160], 588);
+                step(f, Op::Select(ValueType::Float), &[16, 160, 805, 161], 589);
+                step(f, Op::Select(ValueType::Float), &[15, 161, 804, 167], 590);
+                step(f, Op::MulF, &[165, 167, 169], 591);
+                step(f, Op::DeltaTime, &[163], 592);
+                step(f, Op::DivF, &[163, 121, 164], 593);
+                step(f, Op::MulF, &[169, 164, 170], 594);
+                step(f, Op::AddF, &[18, 170, 171], 595);
+                step(f, Op::ClampF, &[171, 804, 806, 172], 596);
+                step(f, Op::Select(ValueType::Float), &[14, 808, 806, 166], 597);
+                step(f, Op::SubF, &[806, 161, 162], 598);
+                step(f, Op::Select(ValueType::Float), &[15, 162, 806, 168], 599);
+                step(f, Op::MulF, &[166, 168, 173], 600);
+                step(f, Op::MulF, &[173, 164, 174], 601);
+                step(f, Op::AddF, &[172, 174, 175], 602);
+                step(f, Op::ClampF, &[175, 804, 806, 176], 603);
+                step(f, Op::MulF, &[176, 176, 177], 604);
+                step(f, Op::MulF, &[176, 809, 178], 605);
+                step(f, Op::SubF, &[810, 178, 179], 606);
+                step(f, Op::MulF, &[177, 179, 180], 607);
+                step(f, Op::AddF, &[19, 180, 181], 608);
+                step(f, Op::MulF, &[181, 805, 182], 609);
+                step(f, Op::SubF, &[806, 182, 183], 610);
+                step(f, Op::MulF, &[183, 183, 184], 611);
+                step(f, Op::SubF, &[806, 184, 185], 612);
+                step(f, Op::Copy(ValueType::Float), &[185, 20], 613);
+                step(f, Op::Copy(ValueType::Float), &[180, 19], 614);
+                step(f, Op::Copy(ValueType::Float), &[176, 18], 615);
+                step(f, Op::GreaterF, &[19, 804, 21], 616);
+                step(f, Op::TransformVector, &[2, 3, 69], 617);
+                step(f, Op::Select(ValueType::Vec3), &[21, 69, 0, 70], 618);
+                step(f, Op::Copy(ValueType::Vec3), &[70, 3], 619);
+                step(f, Op::LerpV, &[0, 3, 19, 71], 620);
+                step(f, Op::Select(ValueType::Vec3), &[21, 71, 0, 72], 621);
+                step(f, Op::Copy(ValueType::Vec3), &[72, 2], 622);
                 step(f, Op::Copy(ValueType::Bool), &[14, 5], 623);
                 step(f, Op::Copy(ValueType::Bool), &[11, 6], 624);
-                step(f, Op::Copy(ValueType::Bool), &[80, 7], 625);
-                step(f, Op::SubF, &[682, 19, 180], 626);
-                step(f, Op::MulF, &[1, 180, 181], 627);
-                step(f, Op::AddF, &[2, 181, 182], 628);
-                step(f, Op::SpringF, &[182, 113, 185, 31, 183, 184], 629);
-                step(f, Op::SubF, &[182, 185, 186], 630);
-                step(f, Op::Copy(ValueType::Float), &[186, 3], 631);
-                step(f, Op::Copy(ValueType::Float), &[182, 2], 632);
-                step(f, Op::Copy(ValueType::Bool), &[80, 23], 633);
-                step(f, Op::Copy(ValueType::Bool), &[79, 24], 634);
-                step(f, Op::Copy(ValueType::Array(Elem::Bool)), &[0, 1], 635);
-                step(f, Op::Copy(ValueType::Int), &[65, 35], 636);
-                636
+                step(f, Op::Copy(ValueType::Bool), &[99, 7], 625);
+                step(f, Op::SubF, &[806, 20, 186], 626);
+                step(f, Op::MulF, &[1, 186, 187], 627);
+                step(f, Op::AddF, &[2, 187, 188], 628);
+                step(f, Op::SpringF, &[188, 119, 191, 31, 189, 190], 629);
+                step(f, Op::SubF, &[188, 191, 192], 630);
+                step(f, Op::Copy(ValueType::Float), &[192, 3], 631);
+                step(f, Op::Copy(ValueType::Float), &[188, 2], 632);
+                step(f, Op::LengthV, &[4, 194], 633);
+                step(f, Op::GreaterF, &[194, 27, 22], 634);
+                step(f, Op::LengthV, &[2, 195], 635);
+                step(f, Op::GreaterF, &[195, 27, 23], 636);
+                step(f, Op::And, &[22, 23, 25], 637);
+                step(f, Op::Select(ValueType::Vec3), &[22, 4, 420, 73], 638);
+                step(f, Op::MovementAngleOffset, &[73, 12, 804, 811, 811, 812, 38, 813, 196], 639);
+                step(f, Op::Copy(ValueType::Float), &[196, 198], 640);
+                step(f, Op::Copy(ValueType::Float), &[12, 199], 641);
+                step(f, Op::Copy(ValueType::Float), &[804, 200], 642);
+                step(f, Op::SubF, &[198, 199, 201], 643);
+                step(f, Op::AddF, &[201, 814, 202], 644);
+                step(f, Op::DivF, &[202, 815, 203], 645);
+                step(f, Op::FractF, &[203, 204], 646);
+                step(f, Op::MulF, &[204, 815, 205], 647);
+                step(f, Op::SubF, &[205, 814, 206], 648);
+                step(f, Op::Copy(ValueType::Float), &[206, 200], 649);
+                step(f, Op::Jump, &[650], 650)
             }
-            636 => {
-                step(f, Op::ForEachNext(Elem::Bool), &[1, 35, 25, 36, 37, 642], 637)
+            650 => {
+                step(f, Op::AbsF, &[200, 225], 651);
+                step(f, Op::Select(ValueType::Vec3), &[23, 2, 420, 74], 652);
+                step(f, Op::MovementAngleOffset, &[74, 12, 804, 811, 811, 812, 38, 813, 197], 653);
+                step(f, Op::Copy(ValueType::Float), &[197, 207], 654);
+                step(f, Op::Copy(ValueType::Float), &[12, 208], 655);
+                step(f, Op::Copy(ValueType::Float), &[804, 209], 656);
+                step(f, Op::SubF, &[207, 208, 210], 657);
+                step(f, Op::AddF, &[210, 814, 211], 658);
+                step(f, Op::DivF, &[211, 815, 212], 659);
+                step(f, Op::FractF, &[212, 213], 660);
+                step(f, Op::MulF, &[213, 815, 214], 661);
+                step(f, Op::SubF, &[214, 814, 215], 662);
+                step(f, Op::Copy(ValueType::Float), &[215, 209], 663);
+                step(f, Op::Jump, &[664], 664)
             }
-            637 => {
-                step(f, Op::Not, &[25, 26], 638);
-                step(f, Op::JumpIfFalse, &[26, 641], 639)
+            664 => {
+                step(f, Op::AbsF, &[209, 226], 665);
+                step(f, Op::MaxF, &[225, 226, 228], 666);
+                step(f, Op::Copy(ValueType::Float), &[197, 216], 667);
+                step(f, Op::Copy(ValueType::Float), &[196, 217], 668);
+                step(f, Op::Copy(ValueType::Float), &[804, 218], 669);
+                step(f, Op::SubF, &[216, 217, 219], 670);
+                step(f, Op::AddF, &[219, 814, 220], 671);
+                step(f, Op::DivF, &[220, 815, 221], 672);
+                step(f, Op::FractF, &[221, 222], 673);
+                step(f, Op::MulF, &[222, 815, 223], 674);
+                step(f, Op::SubF, &[223, 814, 224], 675);
+                step(f, Op::Copy(ValueType::Float), &[224, 218], 676);
+                step(f, Op::Jump, &[677], 677)
             }
-            639 => {
-                step(f, Op::Copy(ValueType::Bool), &[80, 24], 640);
-                step(f, Op::Jump, &[641], 641)
+            677 => {
+                step(f, Op::AbsF, &[218, 227], 678);
+                step(f, Op::MaxF, &[228, 227, 229], 679);
+                step(f, Op::LessF, &[229, 816, 24], 680);
+                step(f, Op::And, &[25, 24, 26], 681);
+                step(f, Op::Not, &[22, 27], 682);
+                step(f, Op::Not, &[23, 28], 683);
+                step(f, Op::And, &[27, 28, 29], 684);
+                step(f, Op::Or, &[26, 29, 30], 685);
+                step(f, Op::JumpIfFalse, &[30, 707], 686)
             }
-            641 => {
-                step(f, Op::Jump, &[636], 642)
+            686 => {
+                step(f, Op::DeltaTime, &[193], 687);
+                step(f, Op::MulF, &[36, 193, 233], 688);
+                step(f, Op::GreaterF, &[233, 804, 31], 689);
+                step(f, Op::DivF, &[47, 193, 230], 690);
+                step(f, Op::FloatLerp, &[804, 806, 36, 231], 691);
+                step(f, Op::SubF, &[806, 231, 232], 692);
+                step(f, Op::DivF, &[232, 231, 234], 693);
+                step(f, Op::DivF, &[806, 233, 235], 694);
+                step(f, Op::SubF, &[234, 235, 236], 695);
+                step(f, Op::AddF, &[230, 236, 237], 696);
+                step(f, Op::Select(ValueType::Float), &[31, 237, 804, 238], 697);
+                step(f, Op::MulF, &[218, 238, 239], 698);
+                step(f, Op::AddF, &[197, 239, 240], 699);
+                step(f, Op::SinF, &[240, 241], 700);
+                step(f, Op::NegF, &[241, 242], 701);
+                step(f, Op::CosF, &[240, 243], 702);
+                step(f, Op::MakeVector, &[242, 243, 804, 75], 703);
+                step(f, Op::Select(ValueType::Vec3), &[23, 75, 420, 76], 704);
+                step(f, Op::MovementAngleOffset, &[76, 12, 804, 36, 37, 812, 814, 813, 244], 705);
+                step(f, Op::Copy(ValueType::Float), &[244, 12], 706);
+                step(f, Op::Jump, &[742], 707)
             }
-            642 => {
-                step(f, Op::Copy(ValueType::Bool), &[24, 23], 643);
-                step(f, Op::Jump, &[644], 644)
+            707 => {
+                step(f, Op::DeltaTime, &[193], 708);
+                step(f, Op::DivF, &[193, 39, 245], 709);
+                step(f, Op::AddF, &[245, 805, 246], 710);
+                step(f, Op::FloorF, &[246, 247], 711);
+                step(f, Op::MaxF, &[247, 806, 248], 712);
+                step(f, Op::ToInt, &[248, 37], 713);
+                step(f, Op::Copy(ValueType::Int), &[37, 36], 714);
+                step(f, Op::Copy(ValueType::Int), &[72, 32], 715);
+                step(f, Op::MulF, &[39, 805, 252], 716);
+                step(f, Op::SubF, &[47, 252, 253], 717);
+                step(f, Op::DivF, &[253, 193, 254], 718);
+                step(f, Op::FloatLerp, &[804, 806, 34, 256], 719);
+                step(f, Op::GreaterF, &[256, 804, 32], 720);
+                step(f, Op::DivF, &[36, 248, 266], 721);
+                step(f, Op::DivF, &[37, 248, 267], 722);
+                722
             }
-            644 => {
-                step(f, Op::Copy(ValueType::Bool), &[80, 27], 645);
-                step(f, Op::Copy(ValueType::Bool), &[79, 28], 646);
-                step(f, Op::Copy(ValueType::Array(Elem::Bone)), &[0, 14], 647);
-                step(f, Op::Copy(ValueType::Int), &[65, 38], 648);
-                648
+            722 => {
+                step(f, Op::ForNext, &[32, 36, 34, 742], 723)
             }
-            648 => {
-                step(f, Op::ForEachNext(Elem::Bone), &[14, 38, 15, 39, 40, 663], 649)
+            723 => {
+                step(f, Op::ToFloat, &[34, 249], 724);
+                step(f, Op::AddF, &[249, 806, 250], 725);
+                step(f, Op::DivF, &[250, 248, 251], 726);
+                step(f, Op::AddF, &[251, 254, 255], 727);
+                step(f, Op::MulF, &[34, 255, 257], 728);
+                step(f, Op::FloatLerp, &[804, 806, 257, 258], 729);
+                step(f, Op::DivF, &[258, 256, 259], 730);
+                step(f, Op::Select(ValueType::Float), &[32, 259, 255, 260], 731);
+                step(f, Op::LerpV, &[4, 2, 260, 77], 732);
+                step(f, Op::LengthV, &[77, 261], 733);
+                step(f, Op::GreaterF, &[261, 27, 33], 734);
+                step(f, Op::Select(ValueType::Vec3), &[33, 77, 420, 78], 735);
+                step(f, Op::MulF, &[193, 255, 262], 736);
+                step(f, Op::MulF, &[6, 262, 263], 737);
+                step(f, Op::AddF, &[10, 263, 264], 738);
+                step(f, Op::FractF, &[264, 265], 739);
+                step(f, Op::MovementAngleOffset, &[78, 12, 265, 266, 267, 812, 38, 813, 268], 740);
+                step(f, Op::Copy(ValueType::Float), &[268, 12], 741);
+                step(f, Op::Jump, &[722], 742)
             }
-            649 => {
-                step(f, Op::ArrayAt(Elem::Transform), &[0, 39, 23], 650);
-                step(f, Op::BreakTransform, &[23, 72, 12, 73], 651);
-                step(f, Op::BreakVector, &[72, 195, 196, 197], 652);
-                step(f, Op::MakeVector, &[195, 196, 680, 76], 653);
-                step(f, Op::ArrayAt(Elem::Transform), &[7, 39, 24], 654);
-                step(f, Op::BreakTransform, &[24, 74, 13, 75], 655);
-                step(f, Op::BreakVector, &[74, 198, 199, 200], 656);
-                step(f, Op::MakeVector, &[198, 199, 680, 77], 657);
-                step(f, Op::DistanceV, &[76, 77, 201], 658);
-                step(f, Op::GreaterF, &[201, 28, 29], 659);
-                step(f, Op::JumpIfFalse, &[29, 662], 660)
+            742 => {
+                step(f, Op::QuatFromAxisAngle, &[423, 12, 12], 743);
+                step(f, Op::Copy(ValueType::Quat), &[12, 0], 744);
+                step(f, Op::SinF, &[12, 269], 745);
+                step(f, Op::AbsF, &[269, 270], 746);
+                step(f, Op::RemapF, &[270, 40, 41, 804, 806, 98, 271], 747);
+                step(f, Op::Copy(ValueType::Float), &[271, 13], 748);
+                step(f, Op::Copy(ValueType::Vec3), &[2, 4], 749);
+                step(f, Op::Copy(ValueType::Bool), &[99, 35], 750);
+                step(f, Op::Copy(ValueType::Bool), &[98, 36], 751);
+                step(f, Op::Copy(ValueType::Array(Elem::Bool)), &[0, 1], 752);
+                step(f, Op::Copy(ValueType::Int), &[72, 41], 753);
+                753
             }
-            660 => {
-                step(f, Op::Copy(ValueType::Bool), &[80, 28], 661);
-                step(f, Op::Jump, &[662], 662)
-            }
-            662 => {
-                step(f, Op::Jump, &[648], 663)
-            }
-            663 => {
-                step(f, Op::Copy(ValueType::Bool), &[28, 27], 664);
-                step(f, Op::Jump, &[665], 665)
-            }
-            665 => {
-                step(f, Op::And, &[23, 27, 30], 666);
-                step(f, Op::LengthV, &[2, 187], 667);
-                step(f, Op::GreaterF, &[187, 26, 22], 668);
-                step(f, Op::GreaterF, &[0, 26, 31], 669);
-                step(f, Op::Or, &[22, 31, 32], 670);
-                step(f, Op::Not, &[32, 33], 671);
-                step(f, Op::And, &[30, 33, 38], 672);
-                step(f, Op::DeltaTime, &[226], 673);
-                step(f, Op::MulF, &[226, 31, 227], 674);
-                step(f, Op::AddF, &[10, 227, 228], 675);
-                step(f, Op::GreaterF, &[10, 681, 39], 676);
-                step(f, Op::AddF, &[30, 681, 224], 677);
-                step(f, Op::Select(ValueType::Float), &[39, 224, 30, 225], 678);
-                step(f, Op::MinF, &[228, 225, 229], 679);
-                step(f, Op::NotEquals(Elem::Bool), &[33, 4, 34], 680);
-                step(f, Op::Not, &[30, 35], 681);
-                step(f, Op::And, &[34, 35, 36], 682);
-                step(f, Op::SubF, &[11, 26, 210], 683);
-                step(f, Op::SubF, &[11, 187, 211], 684);
-                step(f, Op::DivF, &[210, 211, 212], 685);
-                step(f, Op::ClampF, &[212, 680, 682, 213], 686);
-                step(f, Op::MulF, &[6, 213, 215], 687);
-                step(f, Op::RemapF, &[187, 26, 27, 680, 682, 79, 202], 688);
-                step(f, Op::MaxF, &[202, 7, 203], 689);
-                step(f, Op::Select(ValueType::Float), &[23, 682, 203, 204], 690);
-                step(f, Op::Select(ValueType::Float), &[33, 29, 204, 205], 691);
-                step(f, Op::Select(ValueType::Float), &[30, 202, 205, 206], 692);
-                step(f, Op::SubF, &[682, 18, 207], 693);
-                step(f, Op::MulF, &[206, 207, 208], 694);
-                step(f, Op::LerpF, &[20, 41, 13, 190], 695);
-                step(f, Op::RemapF, &[187, 23, 24, 21, 22, 79, 188], 696);
-                step(f, Op::LerpF, &[188, 40, 13, 189], 697);
-                step(f, Op::MaxF, &[187, 25, 191], 698);
-                step(f, Op::DivF, &[189, 191, 192], 699);
-                step(f, Op::AddF, &[190, 192, 193], 700);
-                step(f, Op::DivF, &[208, 193, 209], 701);
-                step(f, Op::SubF, &[682, 213, 214], 702);
-                step(f, Op::MulF, &[209, 214, 216], 703);
-                step(f, Op::AddF, &[215, 216, 217], 704);
-                step(f, Op::MulF, &[217, 685, 218], 705);
-                step(f, Op::AddF, &[6, 209, 219], 706);
-                step(f, Op::Select(ValueType::Float), &[36, 218, 219, 220], 707);
-                step(f, Op::DivF, &[685, 220, 221], 708);
-                step(f, Op::GreaterF, &[220, 680, 37], 709);
-                step(f, Op::CycleStep, &[10, 221, 680, 37, 222, 223], 710);
-                step(f, Op::Select(ValueType::Float), &[38, 229, 222, 230], 711);
-                step(f, Op::Copy(ValueType::Float), &[230, 10], 712);
-                step(f, Op::Copy(ValueType::Float), &[209, 6], 713);
-                step(f, Op::Copy(ValueType::Bool), &[22, 3], 714);
-                step(f, Op::Copy(ValueType::Float), &[192, 4], 715);
-                step(f, Op::Copy(ValueType::Float), &[193, 5], 716);
-                step(f, Op::Copy(ValueType::Array(Elem::Bone)), &[0, 13], 717);
-                step(f, Op::Copy(ValueType::Int), &[65, 32], 718);
-                718
-            }
-            718 => {
-                step(f, Op::ForEachNext(Elem::Bone), &[13, 32, 14, 33, 34, 892], 719)
-            }
-            719 => {
-                step(f, Op::ArrayAt(Elem::Float), &[0, 33, 244], 720);
-                step(f, Op::ToFloat, &[33, 231], 721);
-                step(f, Op::MulF, &[231, 681, 232], 722);
-                step(f, Op::AddF, &[10, 232, 233], 723);
-                step(f, Op::FractF, &[233, 234], 724);
-                step(f, Op::SubF, &[244, 234, 246], 725);
-                step(f, Op::GreaterF, &[246, 681, 40], 726);
-                step(f, Op::ArrayAt(Elem::Float), &[2, 33, 245], 727);
-                step(f, Op::Select(ValueType::Float), &[40, 680, 245, 273], 728);
-                step(f, Op::ArraySetAt(Elem::Float), &[3, 33, 273], 729);
-                step(f, Op::ArrayAt(Elem::Float), &[0, 33, 244], 730);
-                step(f, Op::ToFloat, &[33, 231], 731);
-                step(f, Op::MulF, &[231, 681, 232], 732);
-                step(f, Op::AddF, &[10, 232, 233], 733);
-                step(f, Op::FractF, &[233, 234], 734);
-                step(f, Op::SubF, &[244, 234, 246], 735);
-                step(f, Op::GreaterF, &[246, 681, 40], 736);
-                step(f, Op::SubF, &[682, 244, 267], 737);
-                step(f, Op::AddF, &[234, 267, 268], 738);
-                step(f, Op::DivF, &[234, 268, 269], 739);
-                step(f, Op::LengthV, &[2, 187], 740);
-                step(f, Op::GreaterF, &[187, 26, 22], 741);
-                step(f, Op::GreaterF, &[0, 26, 31], 742);
-                step(f, Op::Or, &[22, 31, 32], 743);
-                step(f, Op::Not, &[32, 33], 744);
-                step(f, Op::NotEquals(Elem::Bool), &[33, 4, 34], 745);
-                step(f, Op::Copy(ValueType::Bool), &[80, 23], 746);
-                step(f, Op::Copy(ValueType::Bool), &[79, 24], 747);
-                step(f, Op::Copy(ValueType::Array(Elem::Bool)), &[0, 1], 748);
-                step(f, Op::Copy(ValueType::Int), &[65, 35], 749);
-                749
-            }
-            749 => {
-                step(f, Op::ForEachNext(Elem::Bool), &[1, 35, 25, 36, 37, 755], 750)
-            }
-            750 => {
-                step(f, Op::Not, &[25, 26], 751);
-                step(f, Op::JumpIfFalse, &[26, 754], 752)
-            }
-            752 => {
-                step(f, Op::Copy(ValueType::Bool), &[80, 24], 753);
-                step(f, Op::Jump, &[754], 754)
+            753 => {
+                step(f, Op::ForEachNext(Elem::Bool), &[1, 41, 37, 42, 43, 759], 754)
             }
             754 => {
-                step(f, Op::Jump, &[749], 755)
+                step(f, Op::Not, &[37, 38], 755);
+                step(f, Op::JumpIfFalse, &[38, 758], 756)
             }
-            755 => {
-                step(f, Op::Copy(ValueType::Bool), &[24, 23], 756);
-                step(f, Op::Jump, &[757], 757)
+            756 => {
+                step(f, Op::Copy(ValueType::Bool), &[99, 36], 757);
+                step(f, Op::Jump, &[758], 758)
             }
-            757 => {
-                step(f, Op::Copy(ValueType::Bool), &[80, 27], 758);
-                step(f, Op::Copy(ValueType::Bool), &[79, 28], 759);
-                step(f, Op::Copy(ValueType::Array(Elem::Bone)), &[0, 14], 760);
-                step(f, Op::Copy(ValueType::Int), &[65, 38], 761);
-                761
+            758 => {
+                step(f, Op::Jump, &[753], 759)
+            }
+            759 => {
+                step(f, Op::Copy(ValueType::Bool), &[36, 35], 760);
+                step(f, Op::Jump, &[761], 761)
             }
             761 => {
-                step(f, Op::ForEachNext(Elem::Bone), &[14, 38, 15, 39, 40, 776], 762)
+                step(f, Op::Copy(ValueType::Bool), &[99, 39], 762);
+                step(f, Op::Copy(ValueType::Bool), &[98, 40], 763);
+                step(f, Op::Copy(ValueType::Array(Elem::Bone)), &[0, 14], 764);
+                step(f, Op::Copy(ValueType::Int), &[72, 44], 765);
+                765
             }
-            762 => {
-                step(f, Op::ArrayAt(Elem::Transform), &[0, 39, 23], 763);
-                step(f, Op::BreakTransform, &[23, 72, 12, 73], 764);
-                step(f, Op::BreakVector, &[72, 195, 196, 197], 765);
-                step(f, Op::MakeVector, &[195, 196, 680, 76], 766);
-                step(f, Op::ArrayAt(Elem::Transform), &[7, 39, 24], 767);
-                step(f, Op::BreakTransform, &[24, 74, 13, 75], 768);
-                step(f, Op::BreakVector, &[74, 198, 199, 200], 769);
-                step(f, Op::MakeVector, &[198, 199, 680, 77], 770);
-                step(f, Op::DistanceV, &[76, 77, 201], 771);
-                step(f, Op::GreaterF, &[201, 28, 29], 772);
-                step(f, Op::JumpIfFalse, &[29, 775], 773)
+            765 => {
+                step(f, Op::ForEachNext(Elem::Bone), &[14, 44, 15, 45, 46, 780], 766)
             }
-            773 => {
-                step(f, Op::Copy(ValueType::Bool), &[80, 28], 774);
-                step(f, Op::Jump, &[775], 775)
+            766 => {
+                step(f, Op::ArrayAt(Elem::Transform), &[0, 45, 23], 767);
+                step(f, Op::BreakTransform, &[23, 79, 13, 80], 768);
+                step(f, Op::BreakVector, &[79, 280, 281, 282], 769);
+                step(f, Op::MakeVector, &[280, 281, 804, 83], 770);
+                step(f, Op::ArrayAt(Elem::Transform), &[7, 45, 24], 771);
+                step(f, Op::BreakTransform, &[24, 81, 14, 82], 772);
+                step(f, Op::BreakVector, &[81, 283, 284, 285], 773);
+                step(f, Op::MakeVector, &[283, 284, 804, 84], 774);
+                step(f, Op::DistanceV, &[83, 84, 286], 775);
+                step(f, Op::GreaterF, &[286, 29, 41], 776);
+                step(f, Op::JumpIfFalse, &[41, 779], 777)
             }
-            775 => {
-                step(f, Op::Jump, &[761], 776)
+            777 => {
+                step(f, Op::Copy(ValueType::Bool), &[99, 40], 778);
+                step(f, Op::Jump, &[779], 779)
             }
-            776 => {
-                step(f, Op::Copy(ValueType::Bool), &[28, 27], 777);
-                step(f, Op::Jump, &[778], 778)
+            779 => {
+                step(f, Op::Jump, &[765], 780)
             }
-            778 => {
-                step(f, Op::And, &[23, 27, 30], 779);
-                step(f, Op::Not, &[30, 35], 780);
-                step(f, Op::And, &[34, 35, 36], 781);
-                step(f, Op::SubF, &[11, 26, 210], 782);
-                step(f, Op::SubF, &[11, 187, 211], 783);
-                step(f, Op::DivF, &[210, 211, 212], 784);
-                step(f, Op::ClampF, &[212, 680, 682, 213], 785);
-                step(f, Op::MulF, &[9, 213, 236], 786);
-                step(f, Op::RemapF, &[187, 26, 27, 680, 682, 79, 202], 787);
-                step(f, Op::MaxF, &[202, 7, 203], 788);
-                step(f, Op::Select(ValueType::Float), &[23, 682, 203, 204], 789);
-                step(f, Op::Select(ValueType::Float), &[33, 29, 204, 205], 790);
-                step(f, Op::Select(ValueType::Float), &[30, 202, 205, 206], 791);
-                step(f, Op::SubF, &[682, 18, 207], 792);
-                step(f, Op::MulF, &[206, 207, 208], 793);
-                step(f, Op::LerpF, &[20, 41, 13, 190], 794);
-                step(f, Op::DivF, &[208, 190, 235], 795);
-                step(f, Op::SubF, &[682, 213, 214], 796);
-                step(f, Op::MulF, &[235, 214, 237], 797);
-                step(f, Op::AddF, &[236, 237, 238], 798);
-                step(f, Op::MulF, &[238, 685, 239], 799);
-                step(f, Op::AddF, &[9, 235, 240], 800);
-                step(f, Op::Select(ValueType::Float), &[36, 239, 240, 241], 801);
-                step(f, Op::DeltaTime, &[226], 802);
-                step(f, Op::MulF, &[226, 681, 242], 803);
-                step(f, Op::MulF, &[241, 242, 243], 804);
-                step(f, Op::MulF, &[269, 243, 270], 805);
-                step(f, Op::ArrayAt(Elem::Float), &[2, 33, 245], 806);
-                step(f, Op::ArrayAt(Elem::Bool), &[0, 33, 41], 807);
-                step(f, Op::RemapF, &[187, 23, 24, 21, 22, 79, 188], 808);
-                step(f, Op::LerpF, &[188, 40, 13, 189], 809);
-                step(f, Op::MaxF, &[187, 25, 191], 810);
-                step(f, Op::DivF, &[189, 191, 192], 811);
-                step(f, Op::AddF, &[190, 192, 193], 812);
-                step(f, Op::DivF, &[190, 193, 194], 813);
-                step(f, Op::SubF, &[194, 8, 247], 814);
-                step(f, Op::MaxF, &[247, 680, 248], 815);
-                step(f, Op::DivF, &[248, 194, 249], 816);
-                step(f, Op::SubF, &[682, 13, 251], 817);
-                step(f, Op::MulF, &[249, 251, 258], 818);
-                step(f, Op::MulF, &[258, 207, 259], 819);
-                step(f, Op::MulF, &[259, 110, 260], 820);
-                step(f, Op::DivF, &[45, 226, 256], 821);
-                step(f, Op::SubF, &[681, 256, 257], 822);
-                step(f, Op::MulF, &[260, 257, 261], 823);
-                step(f, Op::SubF, &[682, 261, 262], 824);
-                step(f, Op::MulF, &[243, 262, 263], 825);
-                step(f, Op::Select(ValueType::Float), &[41, 243, 263, 264], 826);
-                step(f, Op::MulF, &[249, 245, 250], 827);
-                step(f, Op::MulF, &[250, 251, 252], 828);
-                step(f, Op::MulF, &[252, 207, 253], 829);
-                step(f, Op::MulF, &[253, 110, 254], 830);
-                step(f, Op::Select(ValueType::Float), &[41, 680, 254, 255], 831);
-                step(f, Op::SubF, &[264, 255, 265], 832);
-                step(f, Op::AddF, &[245, 265, 266], 833);
-                step(f, Op::Select(ValueType::Float), &[40, 270, 266, 271], 834);
-                step(f, Op::MinF, &[271, 685, 272], 835);
-                step(f, Op::ArraySetAt(Elem::Float), &[2, 33, 272], 836);
-                step(f, Op::ArrayAt(Elem::Float), &[0, 33, 244], 837);
-                step(f, Op::ToFloat, &[33, 231], 838);
-                step(f, Op::MulF, &[231, 681, 232], 839);
-                step(f, Op::AddF, &[10, 232, 233], 840);
-                step(f, Op::FractF, &[233, 234], 841);
-                step(f, Op::SubF, &[244, 234, 246], 842);
-                step(f, Op::GreaterF, &[246, 681, 40], 843);
-                step(f, Op::JumpIfFalse, &[40, 890], 844)
+            780 => {
+                step(f, Op::Copy(ValueType::Bool), &[40, 39], 781);
+                step(f, Op::Jump, &[782], 782)
             }
-            844 => {
-                step(f, Op::Copy(ValueType::Bool), &[80, 23], 845);
-                step(f, Op::Copy(ValueType::Bool), &[79, 24], 846);
-                step(f, Op::Copy(ValueType::Array(Elem::Bool)), &[0, 1], 847);
-                step(f, Op::Copy(ValueType::Int), &[65, 35], 848);
-                848
+            782 => {
+                step(f, Op::And, &[35, 39, 42], 783);
+                step(f, Op::LengthV, &[2, 272], 784);
+                step(f, Op::GreaterF, &[272, 27, 34], 785);
+                step(f, Op::GreaterF, &[0, 27, 43], 786);
+                step(f, Op::Or, &[34, 43, 44], 787);
+                step(f, Op::Not, &[44, 45], 788);
+                step(f, Op::And, &[42, 45, 50], 789);
+                step(f, Op::DeltaTime, &[311], 790);
+                step(f, Op::MulF, &[311, 32, 312], 791);
+                step(f, Op::AddF, &[10, 312, 313], 792);
+                step(f, Op::GreaterF, &[10, 805, 51], 793);
+                step(f, Op::AddF, &[31, 805, 309], 794);
+                step(f, Op::Select(ValueType::Float), &[51, 309, 31, 310], 795);
+                step(f, Op::MinF, &[313, 310, 314], 796);
+                step(f, Op::NotEquals(Elem::Bool), &[45, 4, 46], 797);
+                step(f, Op::Not, &[42, 47], 798);
+                step(f, Op::And, &[46, 47, 48], 799);
+                step(f, Op::SubF, &[11, 27, 295], 800);
+                step(f, Op::SubF, &[11, 272, 296], 801);
+                step(f, Op::DivF, &[295, 296, 297], 802);
+                step(f, Op::ClampF, &[297, 804, 806, 298], 803);
+                step(f, Op::MulF, &[6, 298, 300], 804);
+                step(f, Op::RemapF, &[272, 27, 28, 804, 806, 98, 287], 805);
+                step(f, Op::MaxF, &[287, 7, 288], 806);
+                step(f, Op::Select(ValueType::Float), &[35, 806, 288, 289], 807);
+                step(f, Op::Select(ValueType::Float), &[45, 30, 289, 290], 808);
+                step(f, Op::Select(ValueType::Float), &[42, 287, 290, 291], 809);
+                step(f, Op::SubF, &[806, 19, 292], 810);
+                step(f, Op::MulF, &[291, 292, 293], 811);
+                step(f, Op::LerpF, &[21, 43, 13, 275], 812);
+                step(f, Op::RemapF, &[272, 24, 25, 22, 23, 98, 273], 813);
+                step(f, Op::LerpF, &[273, 42, 13, 274], 814);
+                step(f, Op::MaxF, &[272, 26, 276], 815);
+                step(f, Op::DivF, &[274, 276, 277], 816);
+                step(f, Op::AddF, &[275, 277, 278], 817);
+                step(f, Op::DivF, &[293, 278, 294], 818);
+                step(f, Op::SubF, &[806, 298, 299], 819);
+                step(f, Op::MulF, &[294, 299, 301], 820);
+                step(f, Op::AddF, &[300, 301, 302], 821);
+                step(f, Op::MulF, &[302, 809, 303], 822);
+                step(f, Op::AddF, &[6, 294, 304], 823);
+                step(f, Op::Select(ValueType::Float), &[48, 303, 304, 305], 824);
+                step(f, Op::DivF, &[809, 305, 306], 825);
+                step(f, Op::GreaterF, &[305, 804, 49], 826);
+                step(f, Op::CycleStep, &[10, 306, 804, 49, 307, 308], 827);
+                step(f, Op::Select(ValueType::Float), &[50, 314, 307, 315], 828);
+                step(f, Op::Copy(ValueType::Float), &[315, 10], 829);
+                step(f, Op::Copy(ValueType::Float), &[294, 6], 830);
+                step(f, Op::Copy(ValueType::Bool), &[34, 3], 831);
+                step(f, Op::Copy(ValueType::Float), &[277, 4], 832);
+                step(f, Op::Copy(ValueType::Float), &[278, 5], 833);
+                step(f, Op::Copy(ValueType::Array(Elem::Bone)), &[0, 13], 834);
+                step(f, Op::Copy(ValueType::Int), &[72, 38], 835);
+                835
             }
-            848 => {
-                step(f, Op::ForEachNext(Elem::Bool), &[1, 35, 25, 36, 37, 854], 849)
+            835 => {
+                step(f, Op::ForEachNext(Elem::Bone), &[13, 38, 14, 39, 40, 1009], 836)
             }
-            849 => {
-                step(f, Op::Not, &[25, 26], 850);
-                step(f, Op::JumpIfFalse, &[26, 853], 851)
+            836 => {
+                step(f, Op::ArrayAt(Elem::Float), &[0, 39, 329], 837);
+                step(f, Op::ToFloat, &[39, 316], 838);
+                step(f, Op::MulF, &[316, 805, 317], 839);
+                step(f, Op::AddF, &[10, 317, 318], 840);
+                step(f, Op::FractF, &[318, 319], 841);
+                step(f, Op::SubF, &[329, 319, 331], 842);
+                step(f, Op::GreaterF, &[331, 805, 52], 843);
+                step(f, Op::ArrayAt(Elem::Float), &[2, 39, 330], 844);
+                step(f, Op::Select(ValueType::Float), &[52, 804, 330, 358], 845);
+                step(f, Op::ArraySetAt(Elem::Float), &[3, 39, 358], 846);
+                step(f, Op::ArrayAt(Elem::Float), &[0, 39, 329], 847);
+                step(f, Op::ToFloat, &[39, 316], 848);
+                step(f, Op::MulF, &[316, 805, 317], 849);
+                step(f, Op::AddF, &[10, 317, 318], 850);
+                step(f, Op::FractF, &[318, 319], 851);
+                step(f, Op::SubF, &[329, 319, 331], 852);
+                step(f, Op::GreaterF, &[331, 805, 52], 853);
+                step(f, Op::SubF, &[806, 329, 352], 854);
+                step(f, Op::AddF, &[319, 352, 353], 855);
+                step(f, Op::DivF, &[319, 353, 354], 856);
+                step(f, Op::LengthV, &[2, 272], 857);
+                step(f, Op::GreaterF, &[272, 27, 34], 858);
+                step(f, Op::GreaterF, &[0, 27, 43], 859);
+                step(f, Op::Or, &[34, 43, 44], 860);
+                step(f, Op::Not, &[44, 45], 861);
+                step(f, Op::NotEquals(Elem::Bool), &[45, 4, 46], 862);
+                step(f, Op::Copy(ValueType::Bool), &[99, 35], 863);
+                step(f, Op::Copy(ValueType::Bool), &[98, 36], 864);
+                step(f, Op::Copy(ValueType::Array(Elem::Bool)), &[0, 1], 865);
+                step(f, Op::Copy(ValueType::Int), &[72, 41], 866);
+                866
             }
-            851 => {
-                step(f, Op::Copy(ValueType::Bool), &[80, 24], 852);
-                step(f, Op::Jump, &[853], 853)
+            866 => {
+                step(f, Op::ForEachNext(Elem::Bool), &[1, 41, 37, 42, 43, 872], 867)
             }
-            853 => {
-                step(f, Op::Jump, &[848], 854)
+            867 => {
+                step(f, Op::Not, &[37, 38], 868);
+                step(f, Op::JumpIfFalse, &[38, 871], 869)
             }
-            854 => {
-                step(f, Op::Copy(ValueType::Bool), &[24, 23], 855);
-                step(f, Op::Jump, &[856], 856)
+            869 => {
+                step(f, Op::Copy(ValueType::Bool), &[99, 36], 870);
+                step(f, Op::Jump, &[871], 871)
             }
-            856 => {
-                step(f, Op::Copy(ValueType::Bool), &[80, 27], 857);
-                step(f, Op::Copy(ValueType::Bool), &[79, 28], 858);
-                step(f, Op::Copy(ValueType::Array(Elem::Bone)), &[0, 14], 859);
-                step(f, Op::Copy(ValueType::Int), &[65, 38], 860);
-                860
-            }
-            860 => {
-                step(f, Op::ForEachNext(Elem::Bone), &[14, 38, 15, 39, 40, 875], 861)
-            }
-            861 => {
-                step(f, Op::ArrayAt(Elem::Transform), &[0, 39, 23], 862);
-                step(f, Op::BreakTransform, &[23, 72, 12, 73], 863);
-                step(f, Op::BreakVector, &[72, 195, 196, 197], 864);
-                step(f, Op::MakeVector, &[195, 196, 680, 76], 865);
-                step(f, Op::ArrayAt(Elem::Transform), &[7, 39, 24], 866);
-                step(f, Op::BreakTransform, &[24, 74, 13, 75], 867);
-                step(f, Op::BreakVector, &[74, 198, 199, 200], 868);
-                step(f, Op::MakeVector, &[198, 199, 680, 77], 869);
-                step(f, Op::DistanceV, &[76, 77, 201], 870);
-                step(f, Op::GreaterF, &[201, 28, 29], 871);
-                step(f, Op::JumpIfFalse, &[29, 874], 872)
+            871 => {
+                step(f, Op::Jump, &[866], 872)
             }
             872 => {
-                step(f, Op::Copy(ValueType::Bool), &[80, 28], 873);
+                step(f, Op::Copy(ValueType::Bool), &[36, 35], 873);
                 step(f, Op::Jump, &[874], 874)
             }
             874 => {
-                step(f, Op::Jump, &[860], 875)
+                step(f, Op::Copy(ValueType::Bool), &[99, 39], 875);
+                step(f, Op::Copy(ValueType::Bool), &[98, 40], 876);
+                step(f, Op::Copy(ValueType::Array(Elem::Bone)), &[0, 14], 877);
+                step(f, Op::Copy(ValueType::Int), &[72, 44], 878);
+                878
             }
-            875 => {
-                step(f, Op::Copy(ValueType::Bool), &[28, 27], 876);
-                step(f, Op::Jump, &[877], 877)
+            878 => {
+                step(f, Op::ForEachNext(Elem::Bone), &[14, 44, 15, 45, 46, 893], 879)
             }
-            877 => {
-                step(f, Op::And, &[23, 27, 30], 878);
-                step(f, Op::LengthV, &[2, 187], 879);
-                step(f, Op::RemapF, &[187, 26, 27, 680, 682, 79, 202], 880);
-                step(f, Op::GreaterF, &[187, 26, 22], 881);
-                step(f, Op::GreaterF, &[0, 26, 31], 882);
-                step(f, Op::Or, &[22, 31, 32], 883);
-                step(f, Op::Not, &[32, 33], 884);
-                step(f, Op::MaxF, &[202, 7, 203], 885);
-                step(f, Op::Select(ValueType::Float), &[23, 682, 203, 204], 886);
-                step(f, Op::Select(ValueType::Float), &[33, 29, 204, 205], 887);
-                step(f, Op::Select(ValueType::Float), &[30, 202, 205, 206], 888);
-                step(f, Op::Copy(ValueType::Float), &[206, 7], 889);
-                step(f, Op::Jump, &[890], 890)
+            879 => {
+                step(f, Op::ArrayAt(Elem::Transform), &[0, 45, 23], 880);
+                step(f, Op::BreakTransform, &[23, 79, 13, 80], 881);
+                step(f, Op::BreakVector, &[79, 280, 281, 282], 882);
+                step(f, Op::MakeVector, &[280, 281, 804, 83], 883);
+                step(f, Op::ArrayAt(Elem::Transform), &[7, 45, 24], 884);
+                step(f, Op::BreakTransform, &[24, 81, 14, 82], 885);
+                step(f, Op::BreakVector, &[81, 283, 284, 285], 886);
+                step(f, Op::MakeVector, &[283, 284, 804, 84], 887);
+                step(f, Op::DistanceV, &[83, 84, 286], 888);
+                step(f, Op::GreaterF, &[286, 29, 41], 889);
+                step(f, Op::JumpIfFalse, &[41, 892], 890)
             }
             890 => {
-                step(f, Op::ArraySetAt(Elem::Float), &[0, 33, 234], 891);
-                step(f, Op::Jump, &[718], 892)
+                step(f, Op::Copy(ValueType::Bool), &[99, 40], 891);
+                step(f, Op::Jump, &[892], 892)
             }
             892 => {
-                step(f, Op::LerpF, &[20, 41, 13, 190], 893);
-                step(f, Op::LengthV, &[2, 187], 894);
-                step(f, Op::RemapF, &[187, 23, 24, 21, 22, 79, 188], 895);
-                step(f, Op::LerpF, &[188, 40, 13, 189], 896);
-                step(f, Op::MaxF, &[187, 25, 191], 897);
-                step(f, Op::DivF, &[189, 191, 192], 898);
-                step(f, Op::AddF, &[190, 192, 193], 899);
-                step(f, Op::DivF, &[190, 193, 194], 900);
-                step(f, Op::Copy(ValueType::Float), &[194, 8], 901);
-                step(f, Op::GreaterF, &[187, 26, 22], 902);
-                step(f, Op::GreaterF, &[0, 26, 31], 903);
-                step(f, Op::Or, &[22, 31, 32], 904);
-                step(f, Op::Not, &[32, 33], 905);
-                step(f, Op::Copy(ValueType::Bool), &[33, 4], 906);
-                step(f, Op::Copy(ValueType::Float), &[187, 11], 907);
-                step(f, Op::Copy(ValueType::Bool), &[80, 23], 908);
-                step(f, Op::Copy(ValueType::Bool), &[79, 24], 909);
-                step(f, Op::Copy(ValueType::Array(Elem::Bool)), &[0, 1], 910);
-                step(f, Op::Copy(ValueType::Int), &[65, 35], 911);
-                911
+                step(f, Op::Jump, &[878], 893)
             }
-            911 => {
-                step(f, Op::ForEachNext(Elem::Bool), &[1, 35, 25, 36, 37, 917], 912)
+            893 => {
+                step(f, Op::Copy(ValueType::Bool), &[40, 39], 894);
+                step(f, Op::Jump, &[895], 895)
             }
-            912 => {
-                step(f, Op::Not, &[25, 26], 913);
-                step(f, Op::JumpIfFalse, &[26, 916], 914)
-            }
-            914 => {
-                step(f, Op::Copy(ValueType::Bool), &[80, 24], 915);
-                step(f, Op::Jump, &[916], 916)
-            }
-            916 => {
-                step(f, Op::Jump, &[911], 917)
-            }
-            917 => {
-                step(f, Op::Copy(ValueType::Bool), &[24, 23], 918);
-                step(f, Op::Jump, &[919], 919)
-            }
-            919 => {
-                step(f, Op::Copy(ValueType::Bool), &[80, 27], 920);
-                step(f, Op::Copy(ValueType::Bool), &[79, 28], 921);
-                step(f, Op::Copy(ValueType::Array(Elem::Bone)), &[0, 14], 922);
-                step(f, Op::Copy(ValueType::Int), &[65, 38], 923);
-                923
-            }
-            923 => {
-                step(f, Op::ForEachNext(Elem::Bone), &[14, 38, 15, 39, 40, 938], 924)
-            }
-            924 => {
-                step(f, Op::ArrayAt(Elem::Transform), &[0, 39, 23], 925);
-                step(f, Op::BreakTransform, &[23, 72, 12, 73], 926);
-                step(f, Op::BreakVector, &[72, 195, 196, 197], 927);
-                step(f, Op::MakeVector, &[195, 196, 680, 76], 928);
-                step(f, Op::ArrayAt(Elem::Transform), &[7, 39, 24], 929);
-                step(f, Op::BreakTransform, &[24, 74, 13, 75], 930);
-                step(f, Op::BreakVector, &[74, 198, 199, 200], 931);
-                step(f, Op::MakeVector, &[198, 199, 680, 77], 932);
-                step(f, Op::DistanceV, &[76, 77, 201], 933);
-                step(f, Op::GreaterF, &[201, 28, 29], 934);
-                step(f, Op::JumpIfFalse, &[29, 937], 935)
-            }
-            935 => {
-                step(f, Op::Copy(ValueType::Bool), &[80, 28], 936);
-                step(f, Op::Jump, &[937], 937)
-            }
-            937 => {
-                step(f, Op::Jump, &[923], 938)
-            }
-            938 => {
-                step(f, Op::Copy(ValueType::Bool), &[28, 27], 939);
-                step(f, Op::Jump, &[940], 940)
-            }
-            940 => {
-                step(f, Op::And, &[23, 27, 30], 941);
-                step(f, Op::RemapF, &[187, 26, 27, 680, 682, 79, 202], 942);
-                step(f, Op::MaxF, &[202, 7, 203], 943);
-                step(f, Op::Select(ValueType::Float), &[23, 682, 203, 204], 944);
-                step(f, Op::Select(ValueType::Float), &[33, 29, 204, 205], 945);
-                step(f, Op::Select(ValueType::Float), &[30, 202, 205, 206], 946);
-                step(f, Op::SubF, &[682, 18, 207], 947);
-                step(f, Op::MulF, &[206, 207, 208], 948);
-                step(f, Op::DivF, &[208, 190, 235], 949);
-                step(f, Op::Copy(ValueType::Float), &[235, 9], 950);
-                step(f, Op::Select(ValueType::Vec3), &[3, 2, 391, 78], 951);
-                step(f, Op::MovementAngleOffset, &[78, 12, 10, 35, 36, 687, 37, 688, 274], 952);
-                step(f, Op::Copy(ValueType::Float), &[274, 12], 953);
-                step(f, Op::QuatFromAxisAngle, &[394, 12, 14], 954);
-                step(f, Op::Copy(ValueType::Quat), &[14, 0], 955);
-                step(f, Op::SinF, &[12, 275], 956);
-                step(f, Op::AbsF, &[275, 276], 957);
-                step(f, Op::RemapF, &[276, 38, 39, 680, 682, 79, 277], 958);
-                step(f, Op::Copy(ValueType::Float), &[277, 13], 959);
-                step(f, Op::Copy(ValueType::Array(Elem::Bone)), &[0, 4], 960);
-                step(f, Op::Copy(ValueType::Int), &[65, 2], 961);
-                961
+            895 => {
+                step(f, Op::And, &[35, 39, 42], 896);
+                step(f, Op::Not, &[42, 47], 897);
+                step(f, Op::And, &[46, 47, 48], 898);
+                step(f, Op::SubF, &[11, 27, 295], 899);
+                step(f, Op::SubF, &[11, 272, 296], 900);
+                step(f, Op::DivF, &[295, 296, 297], 901);
+                step(f, Op::ClampF, &[297, 804, 806, 298], 902);
+                step(f, Op::MulF, &[9, 298, 321], 903);
+                step(f, Op::RemapF, &[272, 27, 28, 804, 806, 98, 287], 904);
+                step(f, Op::MaxF, &[287, 7, 288], 905);
+                step(f, Op::Select(ValueType::Float), &[35, 806, 288, 289], 906);
+                step(f, Op::Select(ValueType::Float), &[45, 30, 289, 290], 907);
+                step(f, Op::Select(ValueType::Float), &[42, 287, 290, 291], 908);
+                step(f, Op::SubF, &[806, 19, 292], 909);
+                step(f, Op::MulF, &[291, 292, 293], 910);
+                step(f, Op::LerpF, &[21, 43, 13, 275], 911);
+                step(f, Op::DivF, &[293, 275, 320], 912);
+                step(f, Op::SubF, &[806, 298, 299], 913);
+                step(f, Op::MulF, &[320, 299, 322], 914);
+                step(f, Op::AddF, &[321, 322, 323], 915);
+                step(f, Op::MulF, &[323, 809, 324], 916);
+                step(f, Op::AddF, &[9, 320, 325], 917);
+                step(f, Op::Select(ValueType::Float), &[48, 324, 325, 326], 918);
+                step(f, Op::DeltaTime, &[311], 919);
+                step(f, Op::MulF, &[311, 805, 327], 920);
+                step(f, Op::MulF, &[326, 327, 328], 921);
+                step(f, Op::MulF, &[354, 328, 355], 922);
+                step(f, Op::ArrayAt(Elem::Float), &[2, 39, 330], 923);
+                step(f, Op::ArrayAt(Elem::Bool), &[0, 39, 53], 924);
+                step(f, Op::RemapF, &[272, 24, 25, 22, 23, 98, 273], 925);
+                step(f, Op::LerpF, &[273, 42, 13, 274], 926);
+                step(f, Op::MaxF, &[272, 26, 276], 927);
+                step(f, Op::DivF, &[274, 276, 277], 928);
+                step(f, Op::AddF, &[275, 277, 278], 929);
+                step(f, Op::DivF, &[275, 278, 279], 930);
+                step(f, Op::SubF, &[279, 8, 332], 931);
+                step(f, Op::MaxF, &[332, 804, 333], 932);
+                step(f, Op::DivF, &[333, 279, 334], 933);
+                step(f, Op::SubF, &[806, 13, 336], 934);
+                step(f, Op::MulF, &[334, 336, 343], 935);
+                step(f, Op::MulF, &[343, 292, 344], 936);
+                step(f, Op::MulF, &[344, 116, 345], 937);
+                step(f, Op::DivF, &[47, 311, 341], 938);
+                step(f, Op::SubF, &[805, 341, 342], 939);
+                step(f, Op::MulF, &[345, 342, 346], 940);
+                step(f, Op::SubF, &[806, 346, 347], 941);
+                step(f, Op::MulF, &[328, 347, 348], 942);
+                step(f, Op::Select(ValueType::Float), &[53, 328, 348, 349], 943);
+                step(f, Op::MulF, &[334, 330, 335], 944);
+                step(f, Op::MulF, &[335, 336, 337], 945);
+                step(f, Op::MulF, &[337, 292, 338], 946);
+                step(f, Op::MulF, &[338, 116, 339], 947);
+                step(f, Op::Select(ValueType::Float), &[53, 804, 339, 340], 948);
+                step(f, Op::SubF, &[349, 340, 350], 949);
+                step(f, Op::AddF, &[330, 350, 351], 950);
+                step(f, Op::Select(ValueType::Float), &[52, 355, 351, 356], 951);
+                step(f, Op::MinF, &[356, 809, 357], 952);
+                step(f, Op::ArraySetAt(Elem::Float), &[2, 39, 357], 953);
+                step(f, Op::ArrayAt(Elem::Float), &[0, 39, 329], 954);
+                step(f, Op::ToFloat, &[39, 316], 955);
+                step(f, Op::MulF, &[316, 805, 317], 956);
+                step(f, Op::AddF, &[10, 317, 318], 957);
+                step(f, Op::FractF, &[318, 319], 958);
+                step(f, Op::SubF, &[329, 319, 331], 959);
+                step(f, Op::GreaterF, &[331, 805, 52], 960);
+                step(f, Op::JumpIfFalse, &[52, 1007], 961)
             }
             961 => {
-                step(f, Op::ForEachNext(Elem::Bone), &[4, 2, 0, 3, 4, 1771], 962)
+                step(f, Op::Copy(ValueType::Bool), &[99, 35], 962);
+                step(f, Op::Copy(ValueType::Bool), &[98, 36], 963);
+                step(f, Op::Copy(ValueType::Array(Elem::Bool)), &[0, 1], 964);
+                step(f, Op::Copy(ValueType::Int), &[72, 41], 965);
+                965
             }
-            962 => {
-                step(f, Op::Copy(ValueType::Bone), &[0, 16], 963);
-                step(f, Op::Copy(ValueType::Int), &[3, 41], 964);
-                step(f, Op::GetTransform, &[35, 65, 79, 25], 965);
-                step(f, Op::BreakTransform, &[25, 81, 15, 82], 966);
-                step(f, Op::BreakVector, &[81, 289, 290, 291], 967);
-                step(f, Op::SubF, &[682, 13, 287], 968);
-                step(f, Op::MulF, &[12, 287, 288], 969);
-                step(f, Op::QuatFromAxisAngle, &[394, 288, 17], 970);
-                step(f, Op::GetTransform, &[16, 65, 79, 26], 971);
-                step(f, Op::BreakTransform, &[26, 83, 16, 84], 972);
-                step(f, Op::SubV, &[83, 81, 85], 973);
-                step(f, Op::BreakVector, &[85, 284, 285, 286], 974);
-                step(f, Op::MakeVector, &[284, 285, 680, 86], 975);
-                step(f, Op::RotateVector, &[17, 86, 87], 976);
-                step(f, Op::BreakVector, &[87, 292, 293, 294], 977);
-                step(f, Op::MulF, &[42, 13, 295], 978);
-                step(f, Op::Equals(Elem::Int), &[41, 65, 42], 979);
-                step(f, Op::Select(ValueType::Float), &[42, 682, 684, 304], 980);
-                step(f, Op::MulF, &[295, 304, 296], 981);
-                step(f, Op::AddF, &[292, 296, 297], 982);
-                step(f, Op::AddF, &[289, 297, 298], 983);
-                step(f, Op::AddF, &[290, 293, 299], 984);
-                step(f, Op::BreakVector, &[83, 300, 301, 302], 985);
-                step(f, Op::SubF, &[302, 46, 303], 986);
-                step(f, Op::MakeVector, &[298, 299, 303, 88], 987);
-                step(f, Op::ArrayAt(Elem::Float), &[2, 41, 278], 988);
-                step(f, Op::SubF, &[682, 278, 279], 989);
-                step(f, Op::MaxF, &[279, 680, 280], 990);
-                step(f, Op::MulF, &[8, 5, 281], 991);
-                step(f, Op::MulF, &[280, 281, 282], 992);
-                step(f, Op::ScaleV, &[2, 282, 79], 993);
-                step(f, Op::AddV, &[88, 79, 89], 994);
-                step(f, Op::MulF, &[4, 681, 283], 995);
-                step(f, Op::ScaleV, &[2, 283, 80], 996);
-                step(f, Op::AddV, &[89, 80, 90], 997);
-                step(f, Op::RotateVector, &[0, 395, 91], 998);
-                step(f, Op::Copy(ValueType::Vec3), &[90, 112], 999);
-                step(f, Op::Copy(ValueType::Vec3), &[91, 113], 1000);
-                step(f, Op::Copy(ValueType::Float), &[304, 323], 1001);
-                step(f, Op::Copy(ValueType::Vec3), &[391, 114], 1002);
-                step(f, Op::Copy(ValueType::Vec3), &[391, 115], 1003);
-                step(f, Op::Copy(ValueType::Bool), &[80, 44], 1004);
-                step(f, Op::Copy(ValueType::Float), &[689, 324], 1005);
-                step(f, Op::Copy(ValueType::Vec3), &[391, 116], 1006);
-                step(f, Op::Copy(ValueType::Vec3), &[394, 117], 1007);
-                step(f, Op::Copy(ValueType::Bool), &[80, 45], 1008);
-                step(f, Op::MulI, &[0, 0, 47], 1009);
-                step(f, Op::Copy(ValueType::Int), &[47, 46], 1010);
-                step(f, Op::Copy(ValueType::Int), &[65, 42], 1011);
-                step(f, Op::SubI, &[0, 66, 50], 1012);
-                step(f, Op::DivI, &[50, 67, 51], 1013);
-                step(f, Op::MakeVector, &[680, 680, 51, 122], 1014);
-                step(f, Op::ScaleV, &[113, 53, 127], 1015);
-                1015
+            965 => {
+                step(f, Op::ForEachNext(Elem::Bool), &[1, 41, 37, 42, 43, 971], 966)
             }
-            1015 => {
-                step(f, Op::ForNext, &[42, 46, 44, 1055], 1016)
+            966 => {
+                step(f, Op::Not, &[37, 38], 967);
+                step(f, Op::JumpIfFalse, &[38, 970], 968)
             }
-            1016 => {
-                step(f, Op::ModI, &[44, 0, 48], 1017);
-                step(f, Op::ToFloat, &[48, 325], 1018);
-                step(f, Op::MulF, &[325, 52, 327], 1019);
-                step(f, Op::MulF, &[327, 323, 328], 1020);
-                step(f, Op::MakeVector, &[328, 680, 680, 118], 1021);
-                step(f, Op::DivI, &[44, 0, 49], 1022);
-                step(f, Op::SubI, &[49, 51, 52], 1023);
-                step(f, Op::ToFloat, &[52, 326], 1024);
-                step(f, Op::MulF, &[326, 52, 329], 1025);
-                step(f, Op::ScaleV, &[113, 329, 119], 1026);
-                step(f, Op::AddV, &[118, 119, 120], 1027);
-                step(f, Op::AddV, &[112, 120, 121], 1028);
-                step(f, Op::AddV, &[121, 122, 123], 1029);
-                step(f, Op::SubV, &[121, 122, 124], 1030);
-                step(f, Op::SphereTrace, &[123, 124, 50, 46, 125, 126, 330], 1031);
-                step(f, Op::BreakVector, &[125, 332, 333, 334], 1032);
-                step(f, Op::AddV, &[123, 127, 128], 1033);
-                step(f, Op::AddV, &[124, 127, 129], 1034);
-                step(f, Op::SphereTrace, &[128, 129, 50, 47, 130, 131, 331], 1035);
-                step(f, Op::BreakVector, &[130, 335, 336, 337], 1036);
-                step(f, Op::SubF, &[334, 337, 338], 1037);
-                step(f, Op::AbsF, &[338, 339], 1038);
-                step(f, Op::Select(ValueType::Float), &[46, 680, 682, 340], 1039);
-                step(f, Op::AddF, &[339, 340, 345], 1040);
-                step(f, Op::LengthV, &[120, 341], 1041);
-                step(f, Op::RemapF, &[341, 680, 690, 680, 682, 79, 342], 1042);
-                step(f, Op::MinF, &[334, 337, 343], 1043);
-                step(f, Op::RemapF, &[343, 691, 690, 682, 681, 79, 344], 1044);
-                step(f, Op::AddF, &[342, 344, 346], 1045);
-                step(f, Op::AddF, &[345, 346, 347], 1046);
-                step(f, Op::LessF, &[347, 324, 48], 1047);
-                step(f, Op::And, &[46, 48, 49], 1048);
-                step(f, Op::JumpIfFalse, &[49, 1054], 1049)
+            968 => {
+                step(f, Op::Copy(ValueType::Bool), &[99, 36], 969);
+                step(f, Op::Jump, &[970], 970)
             }
-            1049 => {
-                step(f, Op::Copy(ValueType::Float), &[347, 324], 1050);
-                step(f, Op::Copy(ValueType::Vec3), &[125, 116], 1051);
-                step(f, Op::Copy(ValueType::Vec3), &[126, 117], 1052);
-                step(f, Op::Copy(ValueType::Bool), &[79, 45], 1053);
+            970 => {
+                step(f, Op::Jump, &[965], 971)
+            }
+            971 => {
+                step(f, Op::Copy(ValueType::Bool), &[36, 35], 972);
+                step(f, Op::Jump, &[973], 973)
+            }
+            973 => {
+                step(f, Op::Copy(ValueType::Bool), &[99, 39], 974);
+                step(f, Op::Copy(ValueType::Bool), &[98, 40], 975);
+                step(f, Op::Copy(ValueType::Array(Elem::Bone)), &[0, 14], 976);
+                step(f, Op::Copy(ValueType::Int), &[72, 44], 977);
+                977
+            }
+            977 => {
+                step(f, Op::ForEachNext(Elem::Bone), &[14, 44, 15, 45, 46, 992], 978)
+            }
+            978 => {
+                step(f, Op::ArrayAt(Elem::Transform), &[0, 45, 23], 979);
+                step(f, Op::BreakTransform, &[23, 79, 13, 80], 980);
+                step(f, Op::BreakVector, &[79, 280, 281, 282], 981);
+                step(f, Op::MakeVector, &[280, 281, 804, 83], 982);
+                step(f, Op::ArrayAt(Elem::Transform), &[7, 45, 24], 983);
+                step(f, Op::BreakTransform, &[24, 81, 14, 82], 984);
+                step(f, Op::BreakVector, &[81, 283, 284, 285], 985);
+                step(f, Op::MakeVector, &[283, 284, 804, 84], 986);
+                step(f, Op::DistanceV, &[83, 84, 286], 987);
+                step(f, Op::GreaterF, &[286, 29, 41], 988);
+                step(f, Op::JumpIfFalse, &[41, 991], 989)
+            }
+            989 => {
+                step(f, Op::Copy(ValueType::Bool), &[99, 40], 990);
+                step(f, Op::Jump, &[991], 991)
+            }
+            991 => {
+                step(f, Op::Jump, &[977], 992)
+            }
+            992 => {
+                step(f, Op::Copy(ValueType::Bool), &[40, 39], 993);
+                step(f, Op::Jump, &[994], 994)
+            }
+            994 => {
+                step(f, Op::And, &[35, 39, 42], 995);
+                step(f, Op::LengthV, &[2, 272], 996);
+                step(f, Op::RemapF, &[272, 27, 28, 804, 806, 98, 287], 997);
+                step(f, Op::GreaterF, &[272, 27, 34], 998);
+                step(f, Op::GreaterF, &[0, 27, 43], 999);
+                step(f, Op::Or, &[34, 43, 44], 1000);
+                step(f, Op::Not, &[44, 45], 1001);
+                step(f, Op::MaxF, &[287, 7, 288], 1002);
+                step(f, Op::Select(ValueType::Float), &[35, 806, 288, 289], 1003);
+                step(f, Op::Select(ValueType::Float), &[45, 30, 289, 290], 1004);
+                step(f, Op::Select(ValueType::Float), &[42, 287, 290, 291], 1005);
+                step(f, Op::Copy(ValueType::Float), &[291, 7], 1006);
+                step(f, Op::Jump, &[1007], 1007)
+            }
+            1007 => {
+                step(f, Op::ArraySetAt(Elem::Float), &[0, 39, 319], 1008);
+                step(f, Op::Jump, &[835], 1009)
+            }
+            1009 => {
+                step(f, Op::LerpF, &[21, 43, 13, 275], 1010);
+                step(f, Op::LengthV, &[2, 272], 1011);
+                step(f, Op::RemapF, &[272, 24, 25, 22, 23, 98, 273], 1012);
+                step(f, Op::LerpF, &[273, 42, 13, 274], 1013);
+                step(f, Op::MaxF, &[272, 26, 276], 1014);
+                step(f, Op::DivF, &[274, 276, 277], 1015);
+                step(f, Op::AddF, &[275, 277, 278], 1016);
+                step(f, Op::DivF, &[275, 278, 279], 1017);
+                step(f, Op::Copy(ValueType::Float), &[279, 8], 1018);
+                step(f, Op::GreaterF, &[272, 27, 34], 1019);
+                step(f, Op::GreaterF, &[0, 27, 43], 1020);
+                step(f, Op::Or, &[34, 43, 44], 1021);
+                step(f, Op::Not, &[44, 45], 1022);
+                step(f, Op::Copy(ValueType::Bool), &[45, 4], 1023);
+                step(f, Op::Copy(ValueType::Float), &[272, 11], 1024);
+                step(f, Op::Copy(ValueType::Bool), &[99, 35], 1025);
+                step(f, Op::Copy(ValueType::Bool), &[98, 36], 1026);
+                step(f, Op::Copy(ValueType::Array(Elem::Bool)), &[0, 1], 1027);
+                step(f, Op::Copy(ValueType::Int), &[72, 41], 1028);
+                1028
+            }
+            1028 => {
+                step(f, Op::ForEachNext(Elem::Bool), &[1, 41, 37, 42, 43, 1034], 1029)
+            }
+            1029 => {
+                step(f, Op::Not, &[37, 38], 1030);
+                step(f, Op::JumpIfFalse, &[38, 1033], 1031)
+            }
+            1031 => {
+                step(f, Op::Copy(ValueType::Bool), &[99, 36], 1032);
+                step(f, Op::Jump, &[1033], 1033)
+            }
+            1033 => {
+                step(f, Op::Jump, &[1028], 1034)
+            }
+            1034 => {
+                step(f, Op::Copy(ValueType::Bool), &[36, 35], 1035);
+                step(f, Op::Jump, &[1036], 1036)
+            }
+            1036 => {
+                step(f, Op::Copy(ValueType::Bool), &[99, 39], 1037);
+                step(f, Op::Copy(ValueType::Bool), &[98, 40], 1038);
+                step(f, Op::Copy(ValueType::Array(Elem::Bone)), &[0, 14], 1039);
+                step(f, Op::Copy(ValueType::Int), &[72, 44], 1040);
+                1040
+            }
+            1040 => {
+                step(f, Op::ForEachNext(Elem::Bone), &[14, 44, 15, 45, 46, 1055], 1041)
+            }
+            1041 => {
+                step(f, Op::ArrayAt(Elem::Transform), &[0, 45, 23], 1042);
+                step(f, Op::BreakTransform, &[23, 79, 13, 80], 1043);
+                step(f, Op::BreakVector, &[79, 280, 281, 282], 1044);
+                step(f, Op::MakeVector, &[280, 281, 804, 83], 1045);
+                step(f, Op::ArrayAt(Elem::Transform), &[7, 45, 24], 1046);
+                step(f, Op::BreakTransform, &[24, 81, 14, 82], 1047);
+                step(f, Op::BreakVector, &[81, 283, 284, 285], 1048);
+                step(f, Op::MakeVector, &[283, 284, 804, 84], 1049);
+                step(f, Op::DistanceV, &[83, 84, 286], 1050);
+                step(f, Op::GreaterF, &[286, 29, 41], 1051);
+                step(f, Op::JumpIfFalse, &[41, 1054], 1052)
+            }
+            1052 => {
+                step(f, Op::Copy(ValueType::Bool), &[99, 40], 1053);
                 step(f, Op::Jump, &[1054], 1054)
             }
             1054 => {
-                step(f, Op::Jump, &[1015], 1055)
+                step(f, Op::Jump, &[1040], 1055)
             }
             1055 => {
-                step(f, Op::JumpIfFalse, &[8, 1058], 1056)
+                step(f, Op::Copy(ValueType::Bool), &[40, 39], 1056);
+                step(f, Op::Jump, &[1057], 1057)
             }
-            1056 => {
-                step(f, Op::DrawSphere, &[116, 50, 395], 1057);
-                step(f, Op::Jump, &[1058], 1058)
+            1057 => {
+                step(f, Op::And, &[35, 39, 42], 1058);
+                step(f, Op::RemapF, &[272, 27, 28, 804, 806, 98, 287], 1059);
+                step(f, Op::MaxF, &[287, 7, 288], 1060);
+                step(f, Op::Select(ValueType::Float), &[35, 806, 288, 289], 1061);
+                step(f, Op::Select(ValueType::Float), &[45, 30, 289, 290], 1062);
+                step(f, Op::Select(ValueType::Float), &[42, 287, 290, 291], 1063);
+                step(f, Op::SubF, &[806, 19, 292], 1064);
+                step(f, Op::MulF, &[291, 292, 293], 1065);
+                step(f, Op::DivF, &[293, 275, 320], 1066);
+                step(f, Op::Copy(ValueType::Float), &[320, 9], 1067);
+                step(f, Op::Copy(ValueType::Array(Elem::Bone)), &[0, 4], 1068);
+                step(f, Op::Copy(ValueType::Int), &[72, 2], 1069);
+                1069
             }
-            1058 => {
-                step(f, Op::Copy(ValueType::Vec3), &[116, 114], 1059);
-                step(f, Op::Copy(ValueType::Vec3), &[117, 115], 1060);
-                step(f, Op::Copy(ValueType::Bool), &[45, 44], 1061);
-                step(f, Op::Jump, &[1062], 1062)
+            1069 => {
+                step(f, Op::ForEachNext(Elem::Bone), &[4, 2, 0, 3, 4, 1907], 1070)
             }
-            1062 => {
-                step(f, Op::ArrayAt(Elem::Transform), &[1, 41, 27], 1063);
-                step(f, Op::BreakTransform, &[27, 93, 21, 94], 1064);
-                step(f, Op::ArrayAt(Elem::Float), &[2, 41, 278], 1065);
-                step(f, Op::SubF, &[682, 278, 279], 1066);
-                step(f, Op::MaxF, &[279, 680, 280], 1067);
-                step(f, Op::MulF, &[8, 5, 281], 1068);
-                step(f, Op::MulF, &[280, 281, 282], 1069);
-                step(f, Op::ScaleV, &[2, 282, 79], 1070);
-                step(f, Op::SubV, &[114, 79, 92], 1071);
-                step(f, Op::Select(ValueType::Vec3), &[44, 92, 93, 95], 1072);
-                step(f, Op::ArrayAt(Elem::Transform), &[2, 41, 28], 1073);
-                step(f, Op::BreakTransform, &[28, 96, 23, 97], 1074);
-                step(f, Op::Copy(ValueType::Vec3), &[93, 98], 1075);
-                step(f, Op::Copy(ValueType::Vec3), &[95, 99], 1076);
-                step(f, Op::Copy(ValueType::Vec3), &[96, 100], 1077);
-                step(f, Op::Copy(ValueType::Float), &[43, 310], 1078);
-                step(f, Op::Copy(ValueType::Float), &[45, 311], 1079);
-                step(f, Op::Copy(ValueType::Vec3), &[391, 101], 1080);
-                step(f, Op::SubV, &[99, 100, 102], 1081);
-                step(f, Op::DeltaTime, &[312], 1082);
-                step(f, Op::DivF, &[311, 312, 313], 1083);
-                step(f, Op::ScaleV, &[102, 313, 103], 1084);
-                step(f, Op::AddV, &[99, 103, 104], 1085);
-                step(f, Op::AddV, &[100, 103, 105], 1086);
-                step(f, Op::SubV, &[98, 105, 106], 1087);
-                step(f, Op::FloatLerp, &[680, 682, 310, 314], 1088);
-                step(f, Op::SubF, &[682, 314, 315], 1089);
-                step(f, Op::ScaleV, &[106, 315, 107], 1090);
-                step(f, Op::AddV, &[104, 107, 109], 1091);
-                step(f, Op::MulF, &[310, 312, 316], 1092);
-                step(f, Op::GreaterF, &[316, 680, 43], 1093);
-                step(f, Op::DivF, &[314, 316, 317], 1094);
-                step(f, Op::Select(ValueType::Float), &[43, 317, 682, 318], 1095);
-                step(f, Op::ScaleV, &[102, 318, 108], 1096);
-                step(f, Op::SubV, &[109, 108, 110], 1097);
-                step(f, Op::Copy(ValueType::Vec3), &[110, 101], 1098);
-                step(f, Op::Jump, &[1099], 1099)
-            }
-            1099 => {
-                step(f, Op::BreakVector, &[101, 319, 320, 321], 1100);
-                step(f, Op::ClampF, &[321, 54, 55, 322], 1101);
-                step(f, Op::MakeVector, &[319, 320, 322, 111], 1102);
-                step(f, Op::RotationFromNormal, &[115, 308, 309, 19], 1103);
-                step(f, Op::PerFootRotationFactor, &[12, 88, 89, 305], 1104);
-                step(f, Op::MulF, &[12, 305, 306], 1105);
-                step(f, Op::SubF, &[682, 13, 287], 1106);
-                step(f, Op::MulF, &[306, 287, 307], 1107);
-                step(f, Op::QuatFromAxisAngle, &[394, 307, 18], 1108);
-                step(f, Op::MulQ, &[19, 18, 20], 1109);
-                step(f, Op::Select(ValueType::Quat), &[44, 20, 21, 22], 1110);
-                step(f, Op::MakeTransform, &[111, 22, 392, 30], 1111);
-                step(f, Op::ArraySetAt(Elem::Transform), &[1, 41, 30], 1112);
-                step(f, Op::ArrayAt(Elem::Float), &[2, 41, 278], 1113);
-                step(f, Op::SubF, &[682, 278, 279], 1114);
-                step(f, Op::MaxF, &[279, 680, 280], 1115);
-                step(f, Op::MulF, &[8, 5, 281], 1116);
-                step(f, Op::MulF, &[280, 281, 282], 1117);
-                step(f, Op::ScaleV, &[2, 282, 79], 1118);
-                step(f, Op::SubV, &[114, 79, 92], 1119);
-                step(f, Op::ArrayAt(Elem::Transform), &[1, 41, 27], 1120);
-                step(f, Op::BreakTransform, &[27, 93, 21, 94], 1121);
-                step(f, Op::Select(ValueType::Vec3), &[44, 92, 93, 95], 1122);
-                step(f, Op::MakeTransform, &[95, 91, 392, 29], 1123);
-                step(f, Op::ArraySetAt(Elem::Transform), &[2, 41, 29], 1124);
-                step(f, Op::JumpIfFalse, &[44, 1127], 1125)
+            1070 => {
+                step(f, Op::Copy(ValueType::Bone), &[0, 16], 1071);
+                step(f, Op::Copy(ValueType::Int), &[3, 47], 1072);
+                step(f, Op::GetTransform, &[35, 72, 98, 25], 1073);
+                step(f, Op::BreakTransform, &[25, 87, 15, 88], 1074);
+                step(f, Op::BreakVector, &[87, 370, 371, 372], 1075);
+                step(f, Op::SubF, &[806, 13, 368], 1076);
+                step(f, Op::MulF, &[12, 368, 369], 1077);
+                step(f, Op::QuatFromAxisAngle, &[423, 369, 17], 1078);
+                step(f, Op::GetTransform, &[16, 72, 98, 26], 1079);
+                step(f, Op::BreakTransform, &[26, 89, 16, 90], 1080);
+                step(f, Op::SubV, &[89, 87, 91], 1081);
+                step(f, Op::BreakVector, &[91, 365, 366, 367], 1082);
+                step(f, Op::MakeVector, &[365, 366, 804, 92], 1083);
+                step(f, Op::RotateVector, &[17, 92, 93], 1084);
+                step(f, Op::BreakVector, &[93, 373, 374, 375], 1085);
+                step(f, Op::MulF, &[44, 13, 376], 1086);
+                step(f, Op::Equals(Elem::Int), &[47, 72, 54], 1087);
+                step(f, Op::Select(ValueType::Float), &[54, 806, 808, 385], 1088);
+                step(f, Op::MulF, &[376, 385, 377], 1089);
+                step(f, Op::AddF, &[373, 377, 378], 1090);
+                step(f, Op::AddF, &[370, 378, 379], 1091);
+                step(f, Op::AddF, &[371, 374, 380], 1092);
+                step(f, Op::BreakVector, &[89, 381, 382, 383], 1093);
+                step(f, Op::SubF, &[383, 48, 384], 1094);
+                step(f, Op::MakeVector, &[379, 380, 384, 94], 1095);
+                step(f, Op::ArrayAt(Elem::Float), &[2, 47, 359], 1096);
+                step(f, Op::SubF, &[806, 359, 360], 1097);
+                step(f, Op::MaxF, &[360, 804, 361], 1098);
+                step(f, Op::MulF, &[8, 5, 362], 1099);
+                step(f, Op::MulF, &[361, 362, 363], 1100);
+                step(f, Op::ScaleV, &[2, 363, 85], 1101);
+                step(f, Op::AddV, &[94, 85, 95], 1102);
+                step(f, Op::MulF, &[4, 805, 364], 1103);
+                step(f, Op::ScaleV, &[2, 364, 86], 1104);
+                step(f, Op::AddV, &[95, 86, 96], 1105);
+                step(f, Op::RotateVector, &[0, 424, 97], 1106);
+                step(f, Op::Copy(ValueType::Vec3), &[96, 118], 1107);
+                step(f, Op::Copy(ValueType::Vec3), &[97, 119], 1108);
+                step(f, Op::Copy(ValueType::Float), &[385, 404], 1109);
+                step(f, Op::Copy(ValueType::Vec3), &[420, 120], 1110);
+                step(f, Op::Copy(ValueType::Vec3), &[420, 121], 1111);
+                step(f, Op::Copy(ValueType::Bool), &[99, 56], 1112);
+                step(f, Op::Copy(ValueType::Float), &[811, 405], 1113);
+                step(f, Op::Copy(ValueType::Vec3), &[420, 122], 1114);
+                step(f, Op::Copy(ValueType::Vec3), &[423, 123], 1115);
+                step(f, Op::Copy(ValueType::Bool), &[99, 57], 1116);
+                step(f, Op::Copy(ValueType::Float), &[811, 406], 1117);
+                step(f, Op::Copy(ValueType::Vec3), &[420, 124], 1118);
+                step(f, Op::MulI, &[0, 0, 53], 1119);
+                step(f, Op::Copy(ValueType::Int), &[53, 52], 1120);
+                step(f, Op::Copy(ValueType::Int), &[72, 48], 1121);
+                step(f, Op::SubI, &[0, 73, 56], 1122);
+                step(f, Op::DivI, &[56, 74, 57], 1123);
+                step(f, Op::MakeVector, &[804, 804, 53, 129], 1124);
+                step(f, Op::ScaleV, &[119, 56, 134], 1125);
+                1125
             }
             1125 => {
-                step(f, Op::Copy(ValueType::Bool), &[79, 7], 1126);
-                step(f, Op::Jump, &[1127], 1127)
+                step(f, Op::ForNext, &[48, 52, 50, 1173], 1126)
             }
-            1127 => {
-                step(f, Op::Copy(ValueType::Int), &[3, 53], 1128);
-                step(f, Op::ArrayAt(Elem::Transform), &[0, 53, 33], 1129);
-                step(f, Op::GreaterF, &[18, 680, 53], 1130);
-                step(f, Op::InterpolateTransform, &[2, 110, 19, 31], 1131);
-                step(f, Op::Select(ValueType::Transform), &[53, 31, 2, 32], 1132);
-                step(f, Op::MakeAbsolute, &[33, 32, 34], 1133);
-                step(f, Op::BreakTransform, &[34, 132, 24, 133], 1134);
-                step(f, Op::ArrayAt(Elem::Transform), &[7, 53, 35], 1135);
-                step(f, Op::BreakTransform, &[35, 134, 25, 135], 1136);
-                step(f, Op::AddF, &[58, 59, 349], 1137);
-                step(f, Op::ClampSpatially, &[132, 134, 680, 349, 136], 1138);
-                step(f, Op::SubF, &[682, 13, 364], 1139);
-                step(f, Op::MulF, &[12, 364, 350], 1140);
-                step(f, Op::LimitRotationAroundZ, &[24, 350, 87, 26], 1141);
-                step(f, Op::MakeTransform, &[136, 26, 392, 36], 1142);
-                step(f, Op::ArraySetAt(Elem::Transform), &[0, 53, 36], 1143);
-                step(f, Op::ArrayAt(Elem::Bool), &[0, 53, 50], 1144);
-                step(f, Op::JumpIfFalse, &[50, 1198], 1145)
+            1126 => {
+                step(f, Op::ModI, &[50, 0, 54], 1127);
+                step(f, Op::ToFloat, &[54, 407], 1128);
+                step(f, Op::MulF, &[407, 54, 409], 1129);
+                step(f, Op::MulF, &[409, 404, 410], 1130);
+                step(f, Op::MakeVector, &[410, 804, 804, 125], 1131);
+                step(f, Op::DivI, &[50, 0, 55], 1132);
+                step(f, Op::SubI, &[55, 57, 58], 1133);
+                step(f, Op::ToFloat, &[58, 408], 1134);
+                step(f, Op::MulF, &[408, 54, 411], 1135);
+                step(f, Op::ScaleV, &[119, 411, 126], 1136);
+                step(f, Op::AddV, &[125, 126, 127], 1137);
+                step(f, Op::AddV, &[118, 127, 128], 1138);
+                step(f, Op::AddV, &[128, 129, 130], 1139);
+                step(f, Op::SubV, &[128, 129, 131], 1140);
+                step(f, Op::SphereTrace, &[130, 131, 52, 58, 132, 133, 412], 1141);
+                step(f, Op::BreakVector, &[132, 414, 415, 416], 1142);
+                step(f, Op::AddV, &[130, 134, 135], 1143);
+                step(f, Op::AddV, &[131, 134, 136], 1144);
+                step(f, Op::SphereTrace, &[135, 136, 52, 59, 137, 138, 413], 1145);
+                step(f, Op::BreakVector, &[137, 417, 418, 419], 1146);
+                step(f, Op::SubF, &[416, 419, 420], 1147);
+                step(f, Op::AbsF, &[420, 421], 1148);
+                step(f, Op::Select(ValueType::Float), &[58, 804, 806, 422], 1149);
+                step(f, Op::AddF, &[421, 422, 427], 1150);
+                step(f, Op::LengthV, &[127, 423], 1151);
+                step(f, Op::RemapF, &[423, 804, 817, 804, 806, 98, 424], 1152);
+                step(f, Op::MinF, &[416, 419, 425], 1153);
+                step(f, Op::RemapF, &[425, 818, 817, 806, 805, 98, 426], 1154);
+                step(f, Op::AddF, &[424, 426, 428], 1155);
+                step(f, Op::AddF, &[427, 428, 429], 1156);
+                step(f, Op::LessF, &[429, 405, 60], 1157);
+                step(f, Op::And, &[58, 60, 61], 1158);
+                step(f, Op::JumpIfFalse, &[61, 1166], 1159)
             }
-            1145 => {
-                step(f, Op::ArrayAt(Elem::Transform), &[1, 53, 39], 1146);
-                step(f, Op::BreakTransform, &[39, 142, 28, 143], 1147);
-                step(f, Op::ArrayAt(Elem::Float), &[2, 53, 348], 1148);
-                step(f, Op::SubF, &[682, 348, 361], 1149);
-                step(f, Op::MulF, &[8, 5, 362], 1150);
-                step(f, Op::MulF, &[361, 362, 363], 1151);
-                step(f, Op::ScaleV, &[2, 363, 144], 1152);
-                step(f, Op::AddV, &[142, 144, 145], 1153);
-                step(f, Op::MakeTransform, &[145, 28, 392, 46], 1154);
-                step(f, Op::Copy(ValueType::Transform), &[46, 47], 1155);
-                step(f, Op::Copy(ValueType::Transform), &[110, 48], 1156);
-                step(f, Op::BreakTransform, &[47, 173, 33, 174], 1157);
-                step(f, Op::MakeVector, &[680, 680, 51, 175], 1158);
-                step(f, Op::AddV, &[173, 175, 176], 1159);
-                step(f, Op::SubV, &[173, 175, 177], 1160);
-                step(f, Op::LineTrace, &[176, 177, 57, 178, 179, 391], 1161);
-                step(f, Op::RotateVector, &[33, 394, 180], 1162);
-                step(f, Op::FindQuatBetween, &[180, 179, 34], 1163);
-                step(f, Op::MulQ, &[34, 33, 35], 1164);
-                step(f, Op::MulF, &[49, 48, 392], 1165);
-                step(f, Op::AddF, &[392, 57, 393], 1166);
-                step(f, Op::NegF, &[393, 394], 1167);
-                step(f, Op::MakeVector, &[680, 394, 680, 181], 1168);
-                step(f, Op::RotateVector, &[35, 181, 183], 1169);
-                step(f, Op::AddV, &[178, 183, 185], 1170);
-                step(f, Op::AddV, &[185, 175, 187], 1171);
-                step(f, Op::SubV, &[185, 175, 188], 1172);
-                step(f, Op::LineTrace, &[187, 188, 58, 191, 192, 396], 1173);
-                step(f, Op::BreakVector, &[191, 398, 399, 400], 1174);
-                step(f, Op::BreakVector, &[185, 404, 405, 406], 1175);
-                step(f, Op::SubF, &[400, 406, 410], 1176);
-                step(f, Op::Select(ValueType::Float), &[58, 410, 680, 412], 1177);
-                step(f, Op::AddF, &[53, 57, 395], 1178);
-                step(f, Op::MakeVector, &[680, 395, 680, 182], 1179);
-                step(f, Op::RotateVector, &[35, 182, 184], 1180);
-                step(f, Op::AddV, &[178, 184, 186], 1181);
-                step(f, Op::AddV, &[186, 175, 189], 1182);
-                step(f, Op::SubV, &[186, 175, 190], 1183);
-                step(f, Op::LineTrace, &[189, 190, 59, 193, 194, 397], 1184);
-                step(f, Op::BreakVector, &[193, 401, 402, 403], 1185);
-                step(f, Op::BreakVector, &[186, 407, 408, 409], 1186);
-                step(f, Op::SubF, &[403, 409, 411], 1187);
-                step(f, Op::Select(ValueType::Float), &[59, 411, 680, 413], 1188);
-                step(f, Op::MaxF, &[412, 413, 414], 1189);
-                step(f, Op::ClampF, &[414, 680, 56, 415], 1190);
-                step(f, Op::MakeVector, &[680, 680, 415, 195], 1191);
-                step(f, Op::AddV, &[178, 195, 196], 1192);
-                step(f, Op::MakeTransform, &[196, 35, 392, 49], 1193);
-                step(f, Op::Select(ValueType::Transform), &[57, 49, 47, 50], 1194);
-                step(f, Op::Copy(ValueType::Transform), &[50, 48], 1195);
-                step(f, Op::Jump, &[1196], 1196)
+            1159 => {
+                step(f, Op::Copy(ValueType::Float), &[405, 406], 1160);
+                step(f, Op::Copy(ValueType::Vec3), &[122, 124], 1161);
+                step(f, Op::Copy(ValueType::Float), &[429, 405], 1162);
+                step(f, Op::Copy(ValueType::Vec3), &[132, 122], 1163);
+                step(f, Op::Copy(ValueType::Vec3), &[133, 123], 1164);
+                step(f, Op::Copy(ValueType::Bool), &[98, 57], 1165);
+                step(f, Op::Jump, &[1172], 1166)
             }
-            1196 => {
-                step(f, Op::ArraySetAt(Elem::Transform), &[3, 53, 48], 1197);
-                step(f, Op::Jump, &[1302], 1198)
+            1166 => {
+                step(f, Op::LessF, &[429, 406, 62], 1167);
+                step(f, Op::And, &[58, 62, 63], 1168);
+                step(f, Op::JumpIfFalse, &[63, 1172], 1169)
             }
-            1198 => {
-                step(f, Op::ArrayAt(Elem::Transform), &[3, 53, 51], 1199);
-                step(f, Op::GreaterF, &[18, 680, 53], 1200);
-                step(f, Op::InterpolateTransform, &[2, 110, 19, 31], 1201);
-                step(f, Op::Select(ValueType::Transform), &[53, 31, 2, 32], 1202);
-                step(f, Op::MakeAbsolute, &[51, 32, 52], 1203);
-                step(f, Op::BreakTransform, &[52, 197, 36, 198], 1204);
-                step(f, Op::ArrayAt(Elem::Transform), &[1, 53, 39], 1205);
-                step(f, Op::BreakTransform, &[39, 142, 28, 143], 1206);
-                step(f, Op::ArrayAt(Elem::Float), &[2, 53, 348], 1207);
-                step(f, Op::SubF, &[682, 348, 361], 1208);
-                step(f, Op::MulF, &[8, 5, 362], 1209);
-                step(f, Op::MulF, &[361, 362, 363], 1210);
-                step(f, Op::ScaleV, &[2, 363, 144], 1211);
-                step(f, Op::AddV, &[142, 144, 145], 1212);
-                step(f, Op::ArrayAt(Elem::Transform), &[4, 53, 53], 1213);
-                step(f, Op::MakeAbsolute, &[53, 32, 54], 1214);
-                step(f, Op::BreakTransform, &[54, 199, 37, 200], 1215);
-                step(f, Op::ArrayAt(Elem::Float), &[3, 53, 416], 1216);
-                step(f, Op::SubF, &[348, 416, 417], 1217);
-                step(f, Op::DeltaTime, &[432], 1218);
-                step(f, Op::DivF, &[45, 432, 418], 1219);
-                step(f, Op::MulF, &[417, 418, 419], 1220);
-                step(f, Op::AddF, &[416, 419, 420], 1221);
-                step(f, Op::ClampF, &[420, 680, 682, 422], 1222);
-                step(f, Op::AddF, &[348, 419, 421], 1223);
-                step(f, Op::ClampF, &[421, 680, 682, 423], 1224);
-                step(f, Op::AddF, &[422, 423, 424], 1225);
-                step(f, Op::MulF, &[424, 681, 425], 1226);
-                step(f, Op::SubF, &[682, 425, 426], 1227);
-                step(f, Op::GreaterF, &[417, 680, 60], 1228);
-                step(f, Op::SubF, &[423, 422, 427], 1229);
-                step(f, Op::DivF, &[427, 417, 428], 1230);
-                step(f, Op::Select(ValueType::Float), &[60, 428, 682, 429], 1231);
-                step(f, Op::MulF, &[426, 429, 430], 1232);
-                step(f, Op::MulF, &[73, 430, 431], 1233);
-                step(f, Op::Copy(ValueType::Vec3), &[197, 201], 1234);
-                step(f, Op::Copy(ValueType::Vec3), &[145, 202], 1235);
-                step(f, Op::Copy(ValueType::Vec3), &[199, 203], 1236);
-                step(f, Op::Copy(ValueType::Float), &[431, 433], 1237);
-                step(f, Op::Copy(ValueType::Float), &[45, 434], 1238);
-                step(f, Op::Copy(ValueType::Vec3), &[391, 204], 1239);
-                step(f, Op::SubV, &[202, 203, 205], 1240);
-                step(f, Op::DeltaTime, &[435], 1241);
-                step(f, Op::DivF, &[434, 435, 436], 1242);
-                step(f, Op::ScaleV, &[205, 436, 206], 1243);
-                step(f, Op::AddV, &[202, 206, 207], 1244);
-                step(f, Op::AddV, &[203, 206, 208], 1245);
-                step(f, Op::SubV, &[201, 208, 209], 1246);
-                step(f, Op::FloatLerp, &[680, 682, 433, 437], 1247);
-                step(f, Op::SubF, &[682, 437, 438], 1248);
-                step(f, Op::ScaleV, &[209, 438, 210], 1249);
-                step(f, Op::AddV, &[207, 210, 212], 1250);
-                step(f, Op::MulF, &[433, 435, 439], 1251);
-                step(f, Op::GreaterF, &[439, 680, 61], 1252);
-                step(f, Op::DivF, &[437, 439, 440], 1253);
-                step(f, Op::Select(ValueType::Float), &[61, 440, 682, 441], 1254);
-                step(f, Op::ScaleV, &[205, 441, 211], 1255);
-                step(f, Op::SubV, &[212, 211, 213], 1256);
-                step(f, Op::Copy(ValueType::Vec3), &[213, 204], 1257);
-                step(f, Op::Jump, &[1258], 1258)
+            1169 => {
+                step(f, Op::Copy(ValueType::Float), &[429, 406], 1170);
+                step(f, Op::Copy(ValueType::Vec3), &[132, 124], 1171);
+                step(f, Op::Jump, &[1172], 1172)
             }
-            1258 => {
-                step(f, Op::MakeTransform, &[204, 28, 392, 56], 1259);
-                step(f, Op::Copy(ValueType::Transform), &[56, 57], 1260);
-                step(f, Op::Copy(ValueType::Transform), &[110, 58], 1261);
-                step(f, Op::BreakTransform, &[57, 214, 38, 215], 1262);
-                step(f, Op::MakeVector, &[680, 680, 51, 216], 1263);
-                step(f, Op::AddV, &[214, 216, 217], 1264);
-                step(f, Op::SubV, &[214, 216, 218], 1265);
-                step(f, Op::LineTrace, &[217, 218, 62, 219, 220, 442], 1266);
-                step(f, Op::RotateVector, &[38, 394, 221], 1267);
-                step(f, Op::FindQuatBetween, &[221, 220, 39], 1268);
-                step(f, Op::MulQ, &[39, 38, 40], 1269);
-                step(f, Op::MulF, &[49, 48, 443], 1270);
-                step(f, Op::AddF, &[443, 57, 444], 1271);
-                step(f, Op::NegF, &[444, 445], 1272);
-                step(f, Op::MakeVector, &[680, 445, 680, 222], 1273);
-                step(f, Op::RotateVector, &[40, 222, 224], 1274);
-                step(f, Op::AddV, &[219, 224, 226], 1275);
-                step(f, Op::AddV, &[226, 216, 228], 1276);
-                step(f, Op::SubV, &[226, 216, 229], 1277);
-                step(f, Op::LineTrace, &[228, 229, 63, 232, 233, 447], 1278);
-                step(f, Op::BreakVector, &[232, 449, 450, 451], 1279);
-                step(f, Op::BreakVector, &[226, 455, 456, 457], 1280);
-                step(f, Op::SubF, &[451, 457, 461], 1281);
-                step(f, Op::Select(ValueType::Float), &[63, 461, 680, 463], 1282);
-                step(f, Op::AddF, &[53, 57, 446], 1283);
-                step(f, Op::MakeVector, &[680, 446, 680, 223], 1284);
-                step(f, Op::RotateVector, &[40, 223, 225], 1285);
-                step(f, Op::AddV, &[219, 225, 227], 1286);
-                step(f, Op::AddV, &[227, 216, 230], 1287);
-                step(f, Op::SubV, &[227, 216, 231], 1288);
-                step(f, Op::LineTrace, &[230, 231, 64, 234, 235, 448], 1289);
-                step(f, Op::BreakVector, &[234, 452, 453, 454], 1290);
-                step(f, Op::BreakVector, &[227, 458, 459, 460], 1291);
-                step(f, Op::SubF, &[454, 460, 462], 1292);
-                step(f, Op::Select(ValueType::Float), &[64, 462, 680, 464], 1293);
-                step(f, Op::MaxF, &[463, 464, 465], 1294);
-                step(f, Op::ClampF, &[465, 680, 56, 466], 1295);
-                step(f, Op::MakeVector, &[680, 680, 466, 236], 1296);
-                step(f, Op::AddV, &[219, 236, 237], 1297);
-                step(f, Op::MakeTransform, &[237, 40, 392, 59], 1298);
-                step(f, Op::Select(ValueType::Transform), &[62, 59, 57, 60], 1299);
-                step(f, Op::Copy(ValueType::Transform), &[60, 58], 1300);
-                step(f, Op::Jump, &[1301], 1301)
+            1172 => {
+                step(f, Op::Jump, &[1125], 1173)
             }
-            1301 => {
-                step(f, Op::ArraySetAt(Elem::Transform), &[3, 53, 58], 1302);
-                1302
+            1173 => {
+                step(f, Op::JumpIfFalse, &[8, 1176], 1174)
             }
-            1302 => {
-                step(f, Op::ArrayAt(Elem::Float), &[2, 53, 348], 1303);
-                step(f, Op::GreaterEqualF, &[348, 682, 51], 1304);
-                step(f, Op::JumpIfFalse, &[51, 1381], 1305)
+            1174 => {
+                step(f, Op::DrawSphere, &[122, 52, 424], 1175);
+                step(f, Op::Jump, &[1176], 1176)
             }
-            1305 => {
-                step(f, Op::ArrayAt(Elem::Bool), &[0, 53, 50], 1306);
-                step(f, Op::JumpIfFalse, &[50, 1308], 1307)
+            1176 => {
+                step(f, Op::GreaterF, &[55, 804, 64], 1177);
+                step(f, Op::SubF, &[405, 406, 430], 1178);
+                step(f, Op::DivF, &[430, 55, 431], 1179);
+                step(f, Op::PowF, &[819, 431, 432], 1180);
+                step(f, Op::Select(ValueType::Float), &[64, 432, 804, 433], 1181);
+                step(f, Op::ScaleV, &[124, 433, 139], 1182);
+                step(f, Op::AddV, &[122, 139, 140], 1183);
+                step(f, Op::AddF, &[433, 806, 434], 1184);
+                step(f, Op::DivF, &[806, 434, 435], 1185);
+                step(f, Op::ScaleV, &[140, 435, 141], 1186);
+                step(f, Op::Copy(ValueType::Vec3), &[141, 120], 1187);
+                step(f, Op::Copy(ValueType::Vec3), &[123, 121], 1188);
+                step(f, Op::Copy(ValueType::Bool), &[57, 56], 1189);
+                step(f, Op::Jump, &[1190], 1190)
             }
-            1307 => {
-                step(f, Op::Jump, &[1361], 1308)
+            1190 => {
+                step(f, Op::ArrayAt(Elem::Transform), &[1, 47, 27], 1191);
+                step(f, Op::BreakTransform, &[27, 99, 21, 100], 1192);
+                step(f, Op::ArrayAt(Elem::Float), &[2, 47, 359], 1193);
+                step(f, Op::SubF, &[806, 359, 360], 1194);
+                step(f, Op::MaxF, &[360, 804, 361], 1195);
+                step(f, Op::MulF, &[8, 5, 362], 1196);
+                step(f, Op::MulF, &[361, 362, 363], 1197);
+                step(f, Op::ScaleV, &[2, 363, 85], 1198);
+                step(f, Op::SubV, &[120, 85, 98], 1199);
+                step(f, Op::Select(ValueType::Vec3), &[56, 98, 99, 101], 1200);
+                step(f, Op::ArrayAt(Elem::Transform), &[2, 47, 28], 1201);
+                step(f, Op::BreakTransform, &[28, 102, 23, 103], 1202);
+                step(f, Op::Copy(ValueType::Vec3), &[99, 104], 1203);
+                step(f, Op::Copy(ValueType::Vec3), &[101, 105], 1204);
+                step(f, Op::Copy(ValueType::Vec3), &[102, 106], 1205);
+                step(f, Op::Copy(ValueType::Float), &[45, 391], 1206);
+                step(f, Op::Copy(ValueType::Float), &[47, 392], 1207);
+                step(f, Op::Copy(ValueType::Vec3), &[420, 107], 1208);
+                step(f, Op::SubV, &[105, 106, 108], 1209);
+                step(f, Op::DeltaTime, &[393], 1210);
+                step(f, Op::DivF, &[392, 393, 394], 1211);
+                step(f, Op::ScaleV, &[108, 394, 109], 1212);
+                step(f, Op::AddV, &[105, 109, 110], 1213);
+                step(f, Op::AddV, &[106, 109, 111], 1214);
+                step(f, Op::SubV, &[104, 111, 112], 1215);
+                step(f, Op::FloatLerp, &[804, 806, 391, 395], 1216);
+                step(f, Op::SubF, &[806, 395, 396], 1217);
+                step(f, Op::ScaleV, &[112, 396, 113], 1218);
+                step(f, Op::AddV, &[110, 113, 115], 1219);
+                step(f, Op::MulF, &[391, 393, 397], 1220);
+                step(f, Op::GreaterF, &[397, 804, 55], 1221);
+                step(f, Op::DivF, &[395, 397, 398], 1222);
+                step(f, Op::Select(ValueType::Float), &[55, 398, 806, 399], 1223);
+                step(f, Op::ScaleV, &[108, 399, 114], 1224);
+                step(f, Op::SubV, &[115, 114, 116], 1225);
+                step(f, Op::Copy(ValueType::Vec3), &[116, 107], 1226);
+                step(f, Op::Jump, &[1227], 1227)
             }
-            1308 => {
-                step(f, Op::ArrayAt(Elem::Transform), &[3, 53, 61], 1309);
-                step(f, Op::BreakTransform, &[61, 238, 41, 239], 1310);
-                step(f, Op::Equals(Elem::Int), &[53, 65, 52], 1311);
-                step(f, Op::Select(ValueType::Int), &[52, 66, 65, 54], 1312);
-                step(f, Op::ArrayAt(Elem::Transform), &[5, 54, 40], 1313);
-                step(f, Op::BreakTransform, &[40, 146, 29, 147], 1314);
-                step(f, Op::SubF, &[682, 13, 364], 1315);
-                step(f, Op::MulF, &[12, 364, 365], 1316);
-                step(f, Op::FootAvoidance, &[238, 146, 365, 52, 74, 148], 1317);
-                step(f, Op::MakeTransform, &[148, 41, 392, 41], 1318);
-                step(f, Op::Copy(ValueType::Transform), &[41, 42], 1319);
-                step(f, Op::Copy(ValueType::Transform), &[110, 43], 1320);
-                step(f, Op::BreakTransform, &[42, 149, 30, 150], 1321);
-                step(f, Op::MakeVector, &[680, 680, 51, 151], 1322);
-                step(f, Op::AddV, &[149, 151, 152], 1323);
-                step(f, Op::SubV, &[149, 151, 153], 1324);
-                step(f, Op::LineTrace, &[152, 153, 54, 154, 155, 366], 1325);
-                step(f, Op::RotateVector, &[30, 394, 156], 1326);
-                step(f, Op::FindQuatBetween, &[156, 155, 31], 1327);
-                step(f, Op::MulQ, &[31, 30, 32], 1328);
-                step(f, Op::MulF, &[49, 48, 367], 1329);
-                step(f, Op::AddF, &[367, 57, 368], 1330);
-                step(f, Op::NegF, &[368, 369], 1331);
-                step(f, Op::MakeVector, &[680, 369, 680, 157], 1332);
-                step(f, Op::RotateVector, &[32, 157, 159], 1333);
-                step(f, Op::AddV, &[154, 159, 161], 1334);
-                step(f, Op::AddV, &[161, 151, 163], 1335);
-                step(f, Op::SubV, &[161, 151, 164], 1336);
-                step(f, Op::LineTrace, &[163, 164, 55, 167, 168, 371], 1337);
-                step(f, Op::BreakVector, &[167, 373, 374, 375], 1338);
-                step(f, Op::BreakVector, &[161, 379, 380, 381], 1339);
-                step(f, Op::SubF, &[375, 381, 385], 1340);
-                step(f, Op::Select(ValueType::Float), &[55, 385, 680, 387], 1341);
-                step(f, Op::AddF, &[53, 57, 370], 1342);
-                step(f, Op::MakeVector, &[680, 370, 680, 158], 1343);
-                step(f, Op::RotateVector, &[32, 158, 160], 1344);
-                step(f, Op::AddV, &[154, 160, 162], 1345);
-                step(f, Op::AddV, &[162, 151, 165], 1346);
-                step(f, Op::SubV, &[162, 151, 166], 1347);
-                step(f, Op::LineTrace, &[165, 166, 56, 169, 170, 372], 1348);
-                step(f, Op::BreakVector, &[169, 376, 377, 378], 1349);
-                step(f, Op::BreakVector, &[162, 382, 383, 384], 1350);
-                step(f, Op::SubF, &[378, 384, 386], 1351);
-                step(f, Op::Select(ValueType::Float), &[56, 386, 680, 388], 1352);
-                step(f, Op::MaxF, &[387, 388, 389], 1353);
-                step(f, Op::ClampF, &[389, 680, 56, 390], 1354);
-                step(f, Op::MakeVector, &[680, 680, 390, 171], 1355);
-                step(f, Op::AddV, &[154, 171, 172], 1356);
-                step(f, Op::MakeTransform, &[172, 32, 392, 44], 1357);
-                step(f, Op::Select(ValueType::Transform), &[54, 44, 42, 45], 1358);
-                step(f, Op::Copy(ValueType::Transform), &[45, 43], 1359);
-                step(f, Op::Jump, &[1360], 1360)
+            1227 => {
+                step(f, Op::BreakVector, &[107, 400, 401, 402], 1228);
+                step(f, Op::ClampF, &[402, 57, 58, 403], 1229);
+                step(f, Op::MakeVector, &[400, 401, 403, 117], 1230);
+                step(f, Op::RotationFromNormal, &[121, 389, 390, 19], 1231);
+                step(f, Op::PerFootRotationFactor, &[12, 94, 95, 386], 1232);
+                step(f, Op::MulF, &[12, 386, 387], 1233);
+                step(f, Op::SubF, &[806, 13, 368], 1234);
+                step(f, Op::MulF, &[387, 368, 388], 1235);
+                step(f, Op::QuatFromAxisAngle, &[423, 388, 18], 1236);
+                step(f, Op::MulQ, &[19, 18, 20], 1237);
+                step(f, Op::Select(ValueType::Quat), &[56, 20, 21, 22], 1238);
+                step(f, Op::MakeTransform, &[117, 22, 421, 30], 1239);
+                step(f, Op::ArraySetAt(Elem::Transform), &[1, 47, 30], 1240);
+                step(f, Op::ArrayAt(Elem::Float), &[2, 47, 359], 1241);
+                step(f, Op::SubF, &[806, 359, 360], 1242);
+                step(f, Op::MaxF, &[360, 804, 361], 1243);
+                step(f, Op::MulF, &[8, 5, 362], 1244);
+                step(f, Op::MulF, &[361, 362, 363], 1245);
+                step(f, Op::ScaleV, &[2, 363, 85], 1246);
+                step(f, Op::SubV, &[120, 85, 98], 1247);
+                step(f, Op::ArrayAt(Elem::Transform), &[1, 47, 27], 1248);
+                step(f, Op::BreakTransform, &[27, 99, 21, 100], 1249);
+                step(f, Op::Select(ValueType::Vec3), &[56, 98, 99, 101], 1250);
+                step(f, Op::MakeTransform, &[101, 92, 421, 29], 1251);
+                step(f, Op::ArraySetAt(Elem::Transform), &[2, 47, 29], 1252);
+                step(f, Op::JumpIfFalse, &[56, 1255], 1253)
             }
-            1360 => {
-                step(f, Op::ArraySetAt(Elem::Transform), &[0, 53, 43], 1361);
-                1361
+            1253 => {
+                step(f, Op::Copy(ValueType::Bool), &[98, 7], 1254);
+                step(f, Op::Jump, &[1255], 1255)
             }
-            1361 => {
-                step(f, Op::ArrayAt(Elem::Transform), &[7, 53, 35], 1362);
-                step(f, Op::BreakTransform, &[35, 134, 25, 135], 1363);
-                step(f, Op::ArrayAt(Elem::Transform), &[0, 53, 37], 1364);
-                step(f, Op::BreakTransform, &[37, 137, 27, 138], 1365);
-                step(f, Op::SubV, &[137, 134, 139], 1366);
-                step(f, Op::LengthV, &[139, 351], 1367);
-                step(f, Op::SubF, &[58, 59, 352], 1368);
-                step(f, Op::SubF, &[351, 352, 353], 1369);
-                step(f, Op::MulF, &[59, 685, 354], 1370);
-                step(f, Op::ClampF, &[353, 680, 354, 355], 1371);
-                step(f, Op::MulF, &[355, 355, 356], 1372);
-                step(f, Op::MulF, &[59, 692, 357], 1373);
-                step(f, Op::DivF, &[356, 357, 358], 1374);
-                step(f, Op::SubF, &[351, 358, 359], 1375);
-                step(f, Op::DivF, &[359, 351, 360], 1376);
-                step(f, Op::ScaleV, &[139, 360, 140], 1377);
-                step(f, Op::AddV, &[134, 140, 141], 1378);
-                step(f, Op::MakeTransform, &[141, 27, 392, 38], 1379);
-                step(f, Op::ArraySetAt(Elem::Transform), &[5, 53, 38], 1380);
-                step(f, Op::Jump, &[1588], 1381)
+            1255 => {
+                step(f, Op::Copy(ValueType::Int), &[3, 59], 1256);
+                step(f, Op::ArrayAt(Elem::Transform), &[0, 59, 33], 1257);
+                step(f, Op::GreaterF, &[19, 804, 68], 1258);
+                step(f, Op::InterpolateTransform, &[2, 111, 20, 31], 1259);
+                step(f, Op::Select(ValueType::Transform), &[68, 31, 2, 32], 1260);
+                step(f, Op::MakeAbsolute, &[33, 32, 34], 1261);
+                step(f, Op::BreakTransform, &[34, 142, 24, 143], 1262);
+                step(f, Op::ArrayAt(Elem::Transform), &[7, 59, 35], 1263);
+                step(f, Op::BreakTransform, &[35, 144, 25, 145], 1264);
+                step(f, Op::AddF, &[61, 62, 437], 1265);
+                step(f, Op::ClampSpatially, &[142, 144, 804, 437, 146], 1266);
+                step(f, Op::SubF, &[806, 13, 452], 1267);
+                step(f, Op::MulF, &[12, 452, 438], 1268);
+                step(f, Op::LimitRotationAroundZ, &[24, 438, 93, 26], 1269);
+                step(f, Op::MakeTransform, &[146, 26, 421, 36], 1270);
+                step(f, Op::ArraySetAt(Elem::Transform), &[0, 59, 36], 1271);
+                step(f, Op::ArrayAt(Elem::Bool), &[0, 59, 65], 1272);
+                step(f, Op::JumpIfFalse, &[65, 1326], 1273)
             }
-            1381 => {
-                step(f, Op::ArrayAt(Elem::Transform), &[7, 53, 35], 1382);
-                step(f, Op::BreakTransform, &[35, 134, 25, 135], 1383);
-                step(f, Op::ArrayAt(Elem::Transform), &[0, 53, 37], 1384);
-                step(f, Op::BreakTransform, &[37, 137, 27, 138], 1385);
-                step(f, Op::SubV, &[137, 134, 139], 1386);
-                step(f, Op::LengthV, &[139, 351], 1387);
-                step(f, Op::SubF, &[58, 59, 352], 1388);
-                step(f, Op::SubF, &[351, 352, 353], 1389);
-                step(f, Op::MulF, &[59, 685, 354], 1390);
-                step(f, Op::ClampF, &[353, 680, 354, 355], 1391);
-                step(f, Op::MulF, &[355, 355, 356], 1392);
-                step(f, Op::MulF, &[59, 692, 357], 1393);
-                step(f, Op::DivF, &[356, 357, 358], 1394);
-                step(f, Op::SubF, &[351, 358, 359], 1395);
-                step(f, Op::DivF, &[359, 351, 360], 1396);
-                step(f, Op::ScaleV, &[139, 360, 140], 1397);
-                step(f, Op::AddV, &[134, 140, 141], 1398);
-                step(f, Op::MakeTransform, &[141, 27, 392, 38], 1399);
-                step(f, Op::ArrayAt(Elem::Transform), &[3, 53, 61], 1400);
-                step(f, Op::ClampF, &[348, 680, 682, 467], 1401);
-                step(f, Op::Copy(ValueType::Transform), &[38, 66], 1402);
-                step(f, Op::Copy(ValueType::Transform), &[61, 67], 1403);
-                step(f, Op::Copy(ValueType::Float), &[467, 485], 1404);
-                step(f, Op::Copy(ValueType::Transform), &[110, 68], 1405);
-                step(f, Op::Copy(ValueType::Array(Elem::Vec3)), &[3, 2], 1406);
-                step(f, Op::ArrayReset(Elem::Vec3), &[2], 1407);
-                step(f, Op::BreakTransform, &[66, 256, 46, 257], 1408);
-                step(f, Op::ArrayAdd(Elem::Vec3), &[2, 256], 1409);
-                step(f, Op::BreakTransform, &[66, 256, 46, 257], 1410);
-                step(f, Op::UnitV, &[2, 255], 1411);
-                step(f, Op::LengthV, &[2, 486], 1412);
-                step(f, Op::RemapF, &[486, 680, 60, 680, 61, 79, 487], 1413);
-                step(f, Op::ScaleV, &[255, 487, 260], 1414);
-                step(f, Op::SubV, &[256, 260, 266], 1415);
-                step(f, Op::MakeVector, &[680, 680, 63, 264], 1416);
-                step(f, Op::AddV, &[266, 264, 268], 1417);
-                step(f, Op::ArrayAdd(Elem::Vec3), &[2, 268], 1418);
-                step(f, Op::BreakTransform, &[66, 256, 46, 257], 1419);
-                step(f, Op::UnitV, &[2, 255], 1420);
-                step(f, Op::LengthV, &[2, 486], 1421);
-                step(f, Op::RemapF, &[486, 680, 60, 680, 61, 79, 487], 1422);
-                step(f, Op::ScaleV, &[255, 487, 260], 1423);
-                step(f, Op::SubV, &[256, 260, 266], 1424);
-                step(f, Op::MakeVector, &[680, 680, 63, 264], 1425);
-                step(f, Op::AddV, &[266, 264, 268], 1426);
-                step(f, Op::RemapF, &[486, 680, 60, 680, 65, 79, 489], 1427);
-                step(f, Op::MakeVector, &[680, 680, 489, 262], 1428);
-                step(f, Op::AddV, &[268, 262, 272], 1429);
-                step(f, Op::BreakTransform, &[67, 258, 47, 259], 1430);
-                step(f, Op::BreakVector, &[258, 494, 495, 496], 1431);
-                step(f, Op::BreakVector, &[256, 491, 492, 493], 1432);
-                step(f, Op::SubF, &[496, 493, 497], 1433);
-                step(f, Op::MaxF, &[497, 680, 499], 1434);
-                step(f, Op::MulF, &[499, 67, 503], 1435);
-                step(f, Op::AbsF, &[497, 501], 1436);
-                step(f, Op::RemapF, &[501, 680, 70, 680, 69, 79, 502], 1437);
-                step(f, Op::AddF, &[503, 502, 505], 1438);
-                step(f, Op::MakeVector, &[680, 680, 505, 270], 1439);
-                step(f, Op::AddV, &[272, 270, 274], 1440);
-                step(f, Op::ArrayAdd(Elem::Vec3), &[2, 274], 1441);
-                step(f, Op::BreakTransform, &[66, 256, 46, 257], 1442);
-                step(f, Op::UnitV, &[2, 255], 1443);
-                step(f, Op::LengthV, &[2, 486], 1444);
-                step(f, Op::RemapF, &[486, 680, 60, 680, 61, 79, 487], 1445);
-                step(f, Op::ScaleV, &[255, 487, 260], 1446);
-                step(f, Op::SubV, &[256, 260, 266], 1447);
-                step(f, Op::MakeVector, &[680, 680, 63, 264], 1448);
-                step(f, Op::AddV, &[266, 264, 268], 1449);
-                step(f, Op::RemapF, &[486, 680, 60, 680, 65, 79, 489], 1450);
-                step(f, Op::MakeVector, &[680, 680, 489, 262], 1451);
-                step(f, Op::AddV, &[268, 262, 272], 1452);
-                step(f, Op::BreakTransform, &[67, 258, 47, 259], 1453);
-                step(f, Op::BreakVector, &[258, 494, 495, 496], 1454);
-                step(f, Op::BreakVector, &[256, 491, 492, 493], 1455);
-                step(f, Op::SubF, &[496, 493, 497], 1456);
-                step(f, Op::MaxF, &[497, 680, 499], 1457);
-                step(f, Op::MulF, &[499, 67, 503], 1458);
-                step(f, Op::AbsF, &[497, 501], 1459);
-                step(f, Op::RemapF, &[501, 680, 70, 680, 69, 79, 502], 1460);
-                step(f, Op::AddF, &[503, 502, 505], 1461);
-                step(f, Op::MakeVector, &[680, 680, 505, 270], 1462);
-                step(f, Op::AddV, &[272, 270, 274], 1463);
-                step(f, Op::RemapF, &[486, 680, 60, 680, 62, 79, 488], 1464);
-                step(f, Op::ScaleV, &[255, 488, 261], 1465);
-                step(f, Op::AddV, &[258, 261, 267], 1466);
-                step(f, Op::MakeVector, &[680, 680, 64, 265], 1467);
-                step(f, Op::AddV, &[267, 265, 269], 1468);
-                step(f, Op::RemapF, &[486, 680, 60, 680, 66, 79, 490], 1469);
-                step(f, Op::MakeVector, &[680, 680, 490, 263], 1470);
-                step(f, Op::AddV, &[269, 263, 273], 1471);
-                step(f, Op::NegF, &[497, 498], 1472);
-                step(f, Op::MaxF, &[498, 680, 500], 1473);
-                step(f, Op::MulF, &[500, 68, 504], 1474);
-                step(f, Op::AddF, &[504, 502, 506], 1475);
-                step(f, Op::MakeVector, &[680, 680, 506, 271], 1476);
-                step(f, Op::AddV, &[273, 271, 275], 1477);
-                step(f, Op::LerpV, &[274, 275, 681, 276], 1478);
-                step(f, Op::GetTransform, &[36, 65, 79, 69], 1479);
-                step(f, Op::BreakTransform, &[69, 277, 48, 278], 1480);
-                step(f, Op::BreakVector, &[277, 516, 517, 518], 1481);
-                step(f, Op::SubF, &[682, 13, 510], 1482);
-                step(f, Op::MulF, &[71, 510, 511], 1483);
-                step(f, Op::MulF, &[12, 511, 512], 1484);
-                step(f, Op::QuatFromAxisAngle, &[394, 512, 49], 1485);
-                step(f, Op::SubV, &[276, 277, 279], 1486);
-                step(f, Op::BreakVector, &[279, 507, 508, 509], 1487);
-                step(f, Op::MakeVector, &[507, 508, 680, 280], 1488);
-                step(f, Op::RotateVector, &[49, 280, 281], 1489);
-                step(f, Op::BreakVector, &[281, 513, 514, 515], 1490);
-                step(f, Op::AddF, &[516, 513, 522], 1491);
-                step(f, Op::AddF, &[517, 514, 523], 1492);
-                step(f, Op::BreakVector, &[276, 519, 520, 521], 1493);
-                step(f, Op::MakeVector, &[522, 523, 521, 282], 1494);
-                step(f, Op::DistanceV, &[256, 258, 524], 1495);
-                step(f, Op::RemapF, &[524, 685, 693, 680, 682, 79, 525], 1496);
-                step(f, Op::LerpV, &[276, 282, 525, 283], 1497);
-                step(f, Op::ArrayAdd(Elem::Vec3), &[2, 283], 1498);
-                step(f, Op::BreakTransform, &[67, 258, 47, 259], 1499);
-                step(f, Op::UnitV, &[2, 255], 1500);
-                step(f, Op::LengthV, &[2, 486], 1501);
-                step(f, Op::RemapF, &[486, 680, 60, 680, 62, 79, 488], 1502);
-                step(f, Op::ScaleV, &[255, 488, 261], 1503);
-                step(f, Op::AddV, &[258, 261, 267], 1504);
-                step(f, Op::MakeVector, &[680, 680, 64, 265], 1505);
-                step(f, Op::AddV, &[267, 265, 269], 1506);
-                step(f, Op::RemapF, &[486, 680, 60, 680, 66, 79, 490], 1507);
-                step(f, Op::MakeVector, &[680, 680, 490, 263], 1508);
-                step(f, Op::AddV, &[269, 263, 273], 1509);
-                step(f, Op::BreakVector, &[258, 494, 495, 496], 1510);
-                step(f, Op::BreakTransform, &[66, 256, 46, 257], 1511);
-                step(f, Op::BreakVector, &[256, 491, 492, 493], 1512);
-                step(f, Op::SubF, &[496, 493, 497], 1513);
-                step(f, Op::NegF, &[497, 498], 1514);
-                step(f, Op::MaxF, &[498, 680, 500], 1515);
-                step(f, Op::MulF, &[500, 68, 504], 1516);
-                step(f, Op::AbsF, &[497, 501], 1517);
-                step(f, Op::RemapF, &[501, 680, 70, 680, 69, 79, 502], 1518);
-                step(f, Op::AddF, &[504, 502, 506], 1519);
-                step(f, Op::MakeVector, &[680, 680, 506, 271], 1520);
-                step(f, Op::AddV, &[273, 271, 275], 1521);
-                step(f, Op::ArrayAdd(Elem::Vec3), &[2, 275], 1522);
-                step(f, Op::BreakTransform, &[67, 258, 47, 259], 1523);
-                step(f, Op::UnitV, &[2, 255], 1524);
-                step(f, Op::LengthV, &[2, 486], 1525);
-                step(f, Op::RemapF, &[486, 680, 60, 680, 62, 79, 488], 1526);
-                step(f, Op::ScaleV, &[255, 488, 261], 1527);
-                step(f, Op::AddV, &[258, 261, 267], 1528);
-                step(f, Op::MakeVector, &[680, 680, 64, 265], 1529);
-                step(f, Op::AddV, &[267, 265, 269], 1530);
-                step(f, Op::ArrayAdd(Elem::Vec3), &[2, 269], 1531);
-                step(f, Op::BreakTransform, &[67, 258, 47, 259], 1532);
-                step(f, Op::ArrayAdd(Elem::Vec3), &[2, 258], 1533);
-                step(f, Op::JumpIfFalse, &[8, 1536], 1534)
+            1273 => {
+                step(f, Op::ArrayAt(Elem::Transform), &[1, 59, 39], 1274);
+                step(f, Op::BreakTransform, &[39, 152, 28, 153], 1275);
+                step(f, Op::ArrayAt(Elem::Float), &[2, 59, 436], 1276);
+                step(f, Op::SubF, &[806, 436, 449], 1277);
+                step(f, Op::MulF, &[8, 5, 450], 1278);
+                step(f, Op::MulF, &[449, 450, 451], 1279);
+                step(f, Op::ScaleV, &[2, 451, 154], 1280);
+                step(f, Op::AddV, &[152, 154, 155], 1281);
+                step(f, Op::MakeTransform, &[155, 28, 421, 46], 1282);
+                step(f, Op::Copy(ValueType::Transform), &[46, 47], 1283);
+                step(f, Op::Copy(ValueType::Transform), &[111, 48], 1284);
+                step(f, Op::BreakTransform, &[47, 183, 33, 184], 1285);
+                step(f, Op::MakeVector, &[804, 804, 53, 185], 1286);
+                step(f, Op::AddV, &[183, 185, 186], 1287);
+                step(f, Op::SubV, &[183, 185, 187], 1288);
+                step(f, Op::LineTrace, &[186, 187, 72, 188, 189, 479], 1289);
+                step(f, Op::RotateVector, &[33, 423, 190], 1290);
+                step(f, Op::FindQuatBetween, &[190, 189, 34], 1291);
+                step(f, Op::MulQ, &[34, 33, 35], 1292);
+                step(f, Op::MulF, &[51, 50, 480], 1293);
+                step(f, Op::AddF, &[480, 60, 481], 1294);
+                step(f, Op::NegF, &[481, 482], 1295);
+                step(f, Op::MakeVector, &[804, 482, 804, 191], 1296);
+                step(f, Op::RotateVector, &[35, 191, 193], 1297);
+                step(f, Op::AddV, &[188, 193, 195], 1298);
+                step(f, Op::AddV, &[195, 185, 197], 1299);
+                step(f, Op::SubV, &[195, 185, 198], 1300);
+                step(f, Op::LineTrace, &[197, 198, 73, 201, 202, 484], 1301);
+                step(f, Op::BreakVector, &[201, 486, 487, 488], 1302);
+                step(f, Op::BreakVector, &[195, 492, 493, 494], 1303);
+                step(f, Op::SubF, &[488, 494, 498], 1304);
+                step(f, Op::Select(ValueType::Float), &[73, 498, 804, 500], 1305);
+                step(f, Op::AddF, &[56, 60, 483], 1306);
+                step(f, Op::MakeVector, &[804, 483, 804, 192], 1307);
+                step(f, Op::RotateVector, &[35, 192, 194], 1308);
+                step(f, Op::AddV, &[188, 194, 196], 1309);
+                step(f, Op::AddV, &[196, 185, 199], 1310);
+                step(f, Op::SubV, &[196, 185, 200], 1311);
+                step(f, Op::LineTrace, &[199, 200, 74, 203, 204, 485], 1312);
+                step(f, Op::BreakVector, &[203, 489, 490, 491], 1313);
+                step(f, Op::BreakVector, &[196, 495, 496, 497], 1314);
+                step(f, Op::SubF, &[491, 497, 499], 1315);
+                step(f, Op::Select(ValueType::Float), &[74, 499, 804, 501], 1316);
+                step(f, Op::MaxF, &[500, 501, 502], 1317);
+                step(f, Op::ClampF, &[502, 804, 59, 503], 1318);
+                step(f, Op::MakeVector, &[804, 804, 503, 205], 1319);
+                step(f, Op::AddV, &[188, 205, 206], 1320);
+                step(f, Op::MakeTransform, &[206, 35, 421, 49], 1321);
+                step(f, Op::Select(ValueType::Transform), &[72, 49, 47, 50], 1322);
+                step(f, Op::Copy(ValueType::Transform), &[50, 48], 1323);
+                step(f, Op::Jump, &[1324], 1324)
             }
-            1534 => {
-                step(f, Op::DrawSpline, &[2, 65, 68, 681, 396], 1535);
-                step(f, Op::Jump, &[1536], 1536)
+            1324 => {
+                step(f, Op::ArraySetAt(Elem::Transform), &[3, 59, 48], 1325);
+                step(f, Op::Jump, &[1430], 1326)
             }
-            1536 => {
-                step(f, Op::Spline, &[2, 485, 65, 284, 285], 1537);
-                step(f, Op::BreakTransform, &[66, 256, 46, 257], 1538);
-                step(f, Op::BreakTransform, &[67, 258, 47, 259], 1539);
-                step(f, Op::SlerpQ, &[46, 47, 485, 50], 1540);
-                step(f, Op::MulF, &[485, 694, 534], 1541);
-                step(f, Op::SinF, &[534, 535], 1542);
-                step(f, Op::Copy(ValueType::Float), &[485, 526], 1543);
-                step(f, Op::Copy(ValueType::Float), &[680, 527], 1544);
-                step(f, Op::DivF, &[526, 82, 528], 1545);
-                step(f, Op::ClampF, &[528, 680, 682, 529], 1546);
-                step(f, Op::MulF, &[529, 529, 530], 1547);
-                step(f, Op::MulF, &[529, 685, 531], 1548);
-                step(f, Op::SubF, &[686, 531, 532], 1549);
-                step(f, Op::MulF, &[530, 532, 533], 1550);
-                step(f, Op::Copy(ValueType::Float), &[533, 527], 1551);
-                step(f, Op::Jump, &[1552], 1552)
+            1326 => {
+                step(f, Op::ArrayAt(Elem::Transform), &[3, 59, 51], 1327);
+                step(f, Op::GreaterF, &[19, 804, 68], 1328);
+                step(f, Op::InterpolateTransform, &[2, 111, 20, 31], 1329);
+                step(f, Op::Select(ValueType::Transform), &[68, 31, 2, 32], 1330);
+                step(f, Op::MakeAbsolute, &[51, 32, 52], 1331);
+                step(f, Op::BreakTransform, &[52, 207, 36, 208], 1332);
+                step(f, Op::ArrayAt(Elem::Transform), &[1, 59, 39], 1333);
+                step(f, Op::BreakTransform, &[39, 152, 28, 153], 1334);
+                step(f, Op::ArrayAt(Elem::Float), &[2, 59, 436], 1335);
+                step(f, Op::SubF, &[806, 436, 449], 1336);
+                step(f, Op::MulF, &[8, 5, 450], 1337);
+                step(f, Op::MulF, &[449, 450, 451], 1338);
+                step(f, Op::ScaleV, &[2, 451, 154], 1339);
+                step(f, Op::AddV, &[152, 154, 155], 1340);
+                step(f, Op::ArrayAt(Elem::Transform), &[4, 59, 53], 1341);
+                step(f, Op::MakeAbsolute, &[53, 32, 54], 1342);
+                step(f, Op::BreakTransform, &[54, 209, 37, 210], 1343);
+                step(f, Op::ArrayAt(Elem::Float), &[3, 59, 504], 1344);
+                step(f, Op::SubF, &[436, 504, 505], 1345);
+                step(f, Op::DeltaTime, &[520], 1346);
+                step(f, Op::DivF, &[47, 520, 506], 1347);
+                step(f, Op::MulF, &[505, 506, 507], 1348);
+                step(f, Op::AddF, &[504, 507, 508], 1349);
+                step(f, Op::ClampF, &[508, 804, 806, 510], 1350);
+                step(f, Op::AddF, &[436, 507, 509], 1351);
+                step(f, Op::ClampF, &[509, 804, 806, 511], 1352);
+                step(f, Op::AddF, &[510, 511, 512], 1353);
+                step(f, Op::MulF, &[512, 805, 513], 1354);
+                step(f, Op::SubF, &[806, 513, 514], 1355);
+                step(f, Op::GreaterF, &[505, 804, 75], 1356);
+                step(f, Op::SubF, &[511, 510, 515], 1357);
+                step(f, Op::DivF, &[515, 505, 516], 1358);
+                step(f, Op::Select(ValueType::Float), &[75, 516, 806, 517], 1359);
+                step(f, Op::MulF, &[514, 517, 518], 1360);
+                step(f, Op::MulF, &[77, 518, 519], 1361);
+                step(f, Op::Copy(ValueType::Vec3), &[207, 211], 1362);
+                step(f, Op::Copy(ValueType::Vec3), &[155, 212], 1363);
+                step(f, Op::Copy(ValueType::Vec3), &[209, 213], 1364);
+                step(f, Op::Copy(ValueType::Float), &[519, 521], 1365);
+                step(f, Op::Copy(ValueType::Float), &[47, 522], 1366);
+                step(f, Op::Copy(ValueType::Vec3), &[420, 214], 1367);
+                step(f, Op::SubV, &[212, 213, 215], 1368);
+                step(f, Op::DeltaTime, &[523], 1369);
+                step(f, Op::DivF, &[522, 523, 524], 1370);
+                step(f, Op::ScaleV, &[215, 524, 216], 1371);
+                step(f, Op::AddV, &[212, 216, 217], 1372);
+                step(f, Op::AddV, &[213, 216, 218], 1373);
+                step(f, Op::SubV, &[211, 218, 219], 1374);
+                step(f, Op::FloatLerp, &[804, 806, 521, 525], 1375);
+                step(f, Op::SubF, &[806, 525, 526], 1376);
+                step(f, Op::ScaleV, &[219, 526, 220], 1377);
+                step(f, Op::AddV, &[217, 220, 222], 1378);
+                step(f, Op::MulF, &[521, 523, 527], 1379);
+                step(f, Op::GreaterF, &[527, 804, 76], 1380);
+                step(f, Op::DivF, &[525, 527, 528], 1381);
+                step(f, Op::Select(ValueType::Float), &[76, 528, 806, 529], 1382);
+                step(f, Op::ScaleV, &[215, 529, 221], 1383);
+                step(f, Op::SubV, &[222, 221, 223], 1384);
+                step(f, Op::Copy(ValueType::Vec3), &[223, 214], 1385);
+                step(f, Op::Jump, &[1386], 1386)
             }
-            1552 => {
-                step(f, Op::MulF, &[535, 527, 536], 1553);
-                step(f, Op::MulF, &[536, 72, 537], 1554);
-                step(f, Op::SlerpQ, &[50, 91, 537, 51], 1555);
-                step(f, Op::MakeTransform, &[284, 51, 392, 70], 1556);
-                step(f, Op::Copy(ValueType::Transform), &[70, 68], 1557);
-                step(f, Op::Jump, &[1558], 1558)
+            1386 => {
+                step(f, Op::MakeTransform, &[214, 28, 421, 56], 1387);
+                step(f, Op::Copy(ValueType::Transform), &[56, 57], 1388);
+                step(f, Op::Copy(ValueType::Transform), &[111, 58], 1389);
+                step(f, Op::BreakTransform, &[57, 224, 38, 225], 1390);
+                step(f, Op::MakeVector, &[804, 804, 53, 226], 1391);
+                step(f, Op::AddV, &[224, 226, 227], 1392);
+                step(f, Op::SubV, &[224, 226, 228], 1393);
+                step(f, Op::LineTrace, &[227, 228, 77, 229, 230, 530], 1394);
+                step(f, Op::RotateVector, &[38, 423, 231], 1395);
+                step(f, Op::FindQuatBetween, &[231, 230, 39], 1396);
+                step(f, Op::MulQ, &[39, 38, 40], 1397);
+                step(f, Op::MulF, &[51, 50, 531], 1398);
+                step(f, Op::AddF, &[531, 60, 532], 1399);
+                step(f, Op::NegF, &[532, 533], 1400);
+                step(f, Op::MakeVector, &[804, 533, 804, 232], 1401);
+                step(f, Op::RotateVector, &[40, 232, 234], 1402);
+                step(f, Op::AddV, &[229, 234, 236], 1403);
+                step(f, Op::AddV, &[236, 226, 238], 1404);
+                step(f, Op::SubV, &[236, 226, 239], 1405);
+                step(f, Op::LineTrace, &[238, 239, 78, 242, 243, 535], 1406);
+                step(f, Op::BreakVector, &[242, 537, 538, 539], 1407);
+                step(f, Op::BreakVector, &[236, 543, 544, 545], 1408);
+                step(f, Op::SubF, &[539, 545, 549], 1409);
+                step(f, Op::Select(ValueType::Float), &[78, 549, 804, 551], 1410);
+                step(f, Op::AddF, &[56, 60, 534], 1411);
+                step(f, Op::MakeVector, &[804, 534, 804, 233], 1412);
+                step(f, Op::RotateVector, &[40, 233, 235], 1413);
+                step(f, Op::AddV, &[229, 235, 237], 1414);
+                step(f, Op::AddV, &[237, 226, 240], 1415);
+                step(f, Op::SubV, &[237, 226, 241], 1416);
+                step(f, Op::LineTrace, &[240, 241, 79, 244, 245, 536], 1417);
+                step(f, Op::BreakVector, &[244, 540, 541, 542], 1418);
+                step(f, Op::BreakVector, &[237, 546, 547, 548], 1419);
+                step(f, Op::SubF, &[542, 548, 550], 1420);
+                step(f, Op::Select(ValueType::Float), &[79, 550, 804, 552], 1421);
+                step(f, Op::MaxF, &[551, 552, 553], 1422);
+                step(f, Op::ClampF, &[553, 804, 59, 554], 1423);
+                step(f, Op::MakeVector, &[804, 804, 554, 246], 1424);
+                step(f, Op::AddV, &[229, 246, 247], 1425);
+                step(f, Op::MakeTransform, &[247, 40, 421, 59], 1426);
+                step(f, Op::Select(ValueType::Transform), &[77, 59, 57, 60], 1427);
+                step(f, Op::Copy(ValueType::Transform), &[60, 58], 1428);
+                step(f, Op::Jump, &[1429], 1429)
             }
-            1558 => {
-                step(f, Op::BreakTransform, &[68, 240, 42, 241], 1559);
-                step(f, Op::Equals(Elem::Int), &[53, 65, 52], 1560);
-                step(f, Op::Select(ValueType::Int), &[52, 66, 65, 54], 1561);
-                step(f, Op::ArrayAt(Elem::Transform), &[5, 54, 40], 1562);
-                step(f, Op::BreakTransform, &[40, 146, 29, 147], 1563);
-                step(f, Op::SubF, &[682, 13, 364], 1564);
-                step(f, Op::MulF, &[12, 364, 365], 1565);
-                step(f, Op::ArrayAt(Elem::Bool), &[0, 54, 65], 1566);
-                step(f, Op::Select(ValueType::Float), &[65, 75, 680, 470], 1567);
-                step(f, Op::ArrayAt(Elem::Float), &[2, 53, 348], 1568);
-                step(f, Op::ClampF, &[348, 680, 682, 467], 1569);
-                step(f, Op::MulF, &[467, 694, 468], 1570);
-                step(f, Op::SinF, &[468, 469], 1571);
-                step(f, Op::MulF, &[469, 469, 471], 1572);
-                step(f, Op::MulF, &[470, 471, 472], 1573);
-                step(f, Op::AddF, &[74, 472, 473], 1574);
-                step(f, Op::FootAvoidance, &[240, 146, 365, 52, 473, 242], 1575);
-                step(f, Op::SubV, &[242, 240, 243], 1576);
-                step(f, Op::LengthV, &[243, 474], 1577);
-                step(f, Op::AddF, &[474, 472, 475], 1578);
-                step(f, Op::DivF, &[474, 475, 476], 1579);
-                step(f, Op::ScaleV, &[243, 476, 244], 1580);
-                step(f, Op::AddV, &[240, 244, 245], 1581);
-                step(f, Op::SubF, &[682, 114, 477], 1582);
-                step(f, Op::MulF, &[3, 477, 478], 1583);
-                step(f, Op::MulF, &[478, 471, 479], 1584);
-                step(f, Op::MakeVector, &[680, 680, 479, 246], 1585);
-                step(f, Op::AddV, &[245, 246, 247], 1586);
-                step(f, Op::MakeTransform, &[247, 42, 392, 62], 1587);
-                step(f, Op::ArraySetAt(Elem::Transform), &[5, 53, 62], 1588);
-                1588
+            1429 => {
+                step(f, Op::ArraySetAt(Elem::Transform), &[3, 59, 58], 1430);
+                1430
             }
-            1588 => {
-                step(f, Op::GreaterF, &[18, 680, 53], 1589);
-                step(f, Op::JumpIfFalse, &[53, 1606], 1590)
+            1430 => {
+                step(f, Op::ArrayAt(Elem::Float), &[2, 59, 436], 1431);
+                step(f, Op::GreaterEqualF, &[436, 806, 66], 1432);
+                step(f, Op::JumpIfFalse, &[66, 1509], 1433)
             }
-            1590 => {
-                step(f, Op::ArrayAt(Elem::Transform), &[5, 53, 63], 1591);
-                step(f, Op::BreakTransform, &[63, 248, 43, 249], 1592);
-                step(f, Op::ArrayAt(Elem::Transform), &[7, 53, 64], 1593);
-                step(f, Op::BreakTransform, &[64, 250, 44, 251], 1594);
-                step(f, Op::MulF, &[18, 18, 480], 1595);
-                step(f, Op::LerpV, &[248, 250, 480, 252], 1596);
-                step(f, Op::SubF, &[682, 18, 481], 1597);
-                step(f, Op::MulF, &[18, 481, 482], 1598);
-                step(f, Op::MulF, &[116, 685, 483], 1599);
-                step(f, Op::MulF, &[482, 483, 484], 1600);
-                step(f, Op::MakeVector, &[680, 680, 484, 253], 1601);
-                step(f, Op::AddV, &[252, 253, 254], 1602);
-                step(f, Op::SlerpQ, &[43, 44, 18, 45], 1603);
-                step(f, Op::MakeTransform, &[254, 45, 392, 65], 1604);
-                step(f, Op::ArraySetAt(Elem::Transform), &[5, 53, 65], 1605);
-                step(f, Op::Jump, &[1606], 1606)
+            1433 => {
+                step(f, Op::ArrayAt(Elem::Bool), &[0, 59, 65], 1434);
+                step(f, Op::JumpIfFalse, &[65, 1436], 1435)
             }
-            1606 => {
-                step(f, Op::ArrayAt(Elem::Float), &[2, 53, 348], 1607);
-                step(f, Op::GreaterEqualF, &[348, 682, 51], 1608);
-                step(f, Op::ArraySetAt(Elem::Bool), &[0, 53, 51], 1609);
-                step(f, Op::ArrayAt(Elem::Transform), &[1, 53, 39], 1610);
-                step(f, Op::BreakTransform, &[39, 142, 28, 143], 1611);
-                step(f, Op::ArrayAt(Elem::Float), &[2, 53, 348], 1612);
-                step(f, Op::SubF, &[682, 348, 361], 1613);
-                step(f, Op::MulF, &[8, 5, 362], 1614);
-                step(f, Op::MulF, &[361, 362, 363], 1615);
-                step(f, Op::ScaleV, &[2, 363, 144], 1616);
-                step(f, Op::AddV, &[142, 144, 145], 1617);
-                step(f, Op::MakeTransform, &[145, 91, 392, 55], 1618);
-                step(f, Op::ArraySetAt(Elem::Transform), &[4, 53, 55], 1619);
-                step(f, Op::Copy(ValueType::Bone), &[0, 17], 1620);
-                step(f, Op::Copy(ValueType::Int), &[3, 55], 1621);
-                step(f, Op::ArrayAt(Elem::Transform), &[5, 55, 71], 1622);
-                step(f, Op::BreakTransform, &[71, 286, 52, 287], 1623);
-                step(f, Op::MakeVector, &[680, 680, 46, 296], 1624);
-                step(f, Op::AddV, &[286, 296, 297], 1625);
-                step(f, Op::GetTransform, &[17, 65, 79, 73], 1626);
-                step(f, Op::BreakTransform, &[73, 291, 54, 292], 1627);
-                step(f, Op::MakeTransform, &[297, 54, 392, 75], 1628);
-                step(f, Op::ArrayAt(Elem::Bone), &[2, 55, 20], 1629);
-                step(f, Op::GetTransform, &[20, 65, 79, 74], 1630);
-                step(f, Op::BreakTransform, &[74, 293, 55, 294], 1631);
-                step(f, Op::SubV, &[293, 291, 295], 1632);
-                step(f, Op::AddV, &[297, 295, 298], 1633);
-                step(f, Op::FootPivots, &[297, 298, 48, 47, 46, 49, 299, 300, 301], 1634);
-                step(f, Op::GetParent, &[17, 18], 1635);
-                step(f, Op::GetParent, &[18, 19], 1636);
-                step(f, Op::GetTransform, &[19, 65, 80, 72], 1637);
-                step(f, Op::BreakTransform, &[72, 288, 53, 289], 1638);
-                step(f, Op::SubV, &[286, 288, 290], 1639);
-                step(f, Op::DotV, &[290, 395, 538], 1640);
-                step(f, Op::RemapF, &[538, 77, 76, 78, 680, 79, 541], 1641);
-                step(f, Op::LengthV, &[2, 539], 1642);
-                step(f, Op::RemapF, &[539, 680, 86, 680, 682, 79, 540], 1643);
-                step(f, Op::MulF, &[541, 540, 542], 1644);
-                step(f, Op::QuatFromAxisAngle, &[397, 542, 56], 1645);
-                step(f, Op::RotateAroundPoint, &[75, 299, 56, 76], 1646);
-                step(f, Op::ArrayAt(Elem::Float), &[2, 55, 543], 1647);
-                step(f, Op::Copy(ValueType::Float), &[543, 545], 1648);
-                step(f, Op::Copy(ValueType::Float), &[680, 546], 1649);
-                step(f, Op::DivF, &[545, 82, 547], 1650);
-                step(f, Op::ClampF, &[547, 680, 682, 548], 1651);
-                step(f, Op::MulF, &[548, 548, 549], 1652);
-                step(f, Op::MulF, &[548, 685, 550], 1653);
-                step(f, Op::SubF, &[686, 550, 551], 1654);
-                step(f, Op::MulF, &[549, 551, 552], 1655);
-                step(f, Op::Copy(ValueType::Float), &[552, 546], 1656);
-                step(f, Op::Jump, &[1657], 1657)
+            1435 => {
+                step(f, Op::Jump, &[1489], 1436)
             }
-            1657 => {
-                step(f, Op::SubF, &[682, 543, 544], 1658);
-                step(f, Op::Copy(ValueType::Float), &[544, 553], 1659);
-                step(f, Op::Copy(ValueType::Float), &[680, 554], 1660);
-                step(f, Op::DivF, &[553, 82, 555], 1661);
-                step(f, Op::ClampF, &[555, 680, 682, 556], 1662);
-                step(f, Op::MulF, &[556, 556, 557], 1663);
-                step(f, Op::MulF, &[556, 685, 558], 1664);
-                step(f, Op::SubF, &[686, 558, 559], 1665);
-                step(f, Op::MulF, &[557, 559, 560], 1666);
-                step(f, Op::Copy(ValueType::Float), &[560, 554], 1667);
-                step(f, Op::Jump, &[1668], 1668)
+            1436 => {
+                step(f, Op::ArrayAt(Elem::Transform), &[3, 59, 61], 1437);
+                step(f, Op::BreakTransform, &[61, 248, 41, 249], 1438);
+                step(f, Op::Equals(Elem::Int), &[59, 72, 67], 1439);
+                step(f, Op::Select(ValueType::Int), &[67, 73, 72, 60], 1440);
+                step(f, Op::ArrayAt(Elem::Transform), &[5, 60, 40], 1441);
+                step(f, Op::BreakTransform, &[40, 156, 29, 157], 1442);
+                step(f, Op::SubF, &[806, 13, 452], 1443);
+                step(f, Op::MulF, &[12, 452, 453], 1444);
+                step(f, Op::FootAvoidance, &[248, 156, 453, 67, 78, 158], 1445);
+                step(f, Op::MakeTransform, &[158, 41, 421, 41], 1446);
+                step(f, Op::Copy(ValueType::Transform), &[41, 42], 1447);
+                step(f, Op::Copy(ValueType::Transform), &[111, 43], 1448);
+                step(f, Op::BreakTransform, &[42, 159, 30, 160], 1449);
+                step(f, Op::MakeVector, &[804, 804, 53, 161], 1450);
+                step(f, Op::AddV, &[159, 161, 162], 1451);
+                step(f, Op::SubV, &[159, 161, 163], 1452);
+                step(f, Op::LineTrace, &[162, 163, 69, 164, 165, 454], 1453);
+                step(f, Op::RotateVector, &[30, 423, 166], 1454);
+                step(f, Op::FindQuatBetween, &[166, 165, 31], 1455);
+                step(f, Op::MulQ, &[31, 30, 32], 1456);
+                step(f, Op::MulF, &[51, 50, 455], 1457);
+                step(f, Op::AddF, &[455, 60, 456], 1458);
+                step(f, Op::NegF, &[456, 457], 1459);
+                step(f, Op::MakeVector, &[804, 457, 804, 167], 1460);
+                step(f, Op::RotateVector, &[32, 167, 169], 1461);
+                step(f, Op::AddV, &[164, 169, 171], 1462);
+                step(f, Op::AddV, &[171, 161, 173], 1463);
+                step(f, Op::SubV, &[171, 161, 174], 1464);
+                step(f, Op::LineTrace, &[173, 174, 70, 177, 178, 459], 1465);
+                step(f, Op::BreakVector, &[177, 461, 462, 463], 1466);
+                step(f, Op::BreakVector, &[171, 467, 468, 469], 1467);
+                step(f, Op::SubF, &[463, 469, 473], 1468);
+                step(f, Op::Select(ValueType::Float), &[70, 473, 804, 475], 1469);
+                step(f, Op::AddF, &[56, 60, 458], 1470);
+                step(f, Op::MakeVector, &[804, 458, 804, 168], 1471);
+                step(f, Op::RotateVector, &[32, 168, 170], 1472);
+                step(f, Op::AddV, &[164, 170, 172], 1473);
+                step(f, Op::AddV, &[172, 161, 175], 1474);
+                step(f, Op::SubV, &[172, 161, 176], 1475);
+                step(f, Op::LineTrace, &[175, 176, 71, 179, 180, 460], 1476);
+                step(f, Op::BreakVector, &[179, 464, 465, 466], 1477);
+                step(f, Op::BreakVector, &[172, 470, 471, 472], 1478);
+                step(f, Op::SubF, &[466, 472, 474], 1479);
+                step(f, Op::Select(ValueType::Float), &[71, 474, 804, 476], 1480);
+                step(f, Op::MaxF, &[475, 476, 477], 1481);
+                step(f, Op::ClampF, &[477, 804, 59, 478], 1482);
+                step(f, Op::MakeVector, &[804, 804, 478, 181], 1483);
+                step(f, Op::AddV, &[164, 181, 182], 1484);
+                step(f, Op::MakeTransform, &[182, 32, 421, 44], 1485);
+                step(f, Op::Select(ValueType::Transform), &[69, 44, 42, 45], 1486);
+                step(f, Op::Copy(ValueType::Transform), &[45, 43], 1487);
+                step(f, Op::Jump, &[1488], 1488)
             }
-            1668 => {
-                step(f, Op::MulF, &[546, 554, 561], 1669);
-                step(f, Op::LerpF, &[81, 682, 561, 562], 1670);
-                step(f, Op::MulF, &[542, 562, 563], 1671);
-                step(f, Op::QuatFromAxisAngle, &[397, 563, 57], 1672);
-                step(f, Op::SubV, &[300, 299, 302], 1673);
-                step(f, Op::RotateVector, &[57, 302, 303], 1674);
-                step(f, Op::AddV, &[299, 303, 304], 1675);
-                step(f, Op::RemapF, &[538, 79, 77, 80, 680, 79, 564], 1676);
-                step(f, Op::MulF, &[564, 540, 565], 1677);
-                step(f, Op::QuatFromAxisAngle, &[397, 565, 58], 1678);
-                step(f, Op::RotateAroundPoint, &[76, 304, 58, 77], 1679);
-                step(f, Op::RemapF, &[538, 83, 84, 680, 85, 79, 566], 1680);
-                step(f, Op::MulF, &[566, 540, 567], 1681);
-                step(f, Op::QuatFromAxisAngle, &[397, 567, 59], 1682);
-                step(f, Op::RotateAroundPoint, &[77, 301, 59, 78], 1683);
-                step(f, Op::SubF, &[682, 13, 568], 1684);
-                step(f, Op::MulF, &[12, 568, 569], 1685);
-                step(f, Op::LimitRotationAroundZ, &[52, 569, 87, 60], 1686);
-                step(f, Op::RotateAroundPoint, &[78, 286, 60, 79], 1687);
-                step(f, Op::ArraySetAt(Elem::Transform), &[6, 55, 79], 1688);
-                step(f, Op::JumpIfFalse, &[8, 1770], 1689)
+            1488 => {
+                step(f, Op::ArraySetAt(Elem::Transform), &[0, 59, 43], 1489);
+                1489
             }
-            1689 => {
-                step(f, Op::ArrayAt(Elem::Transform), &[5, 55, 71], 1690);
-                step(f, Op::BreakTransform, &[71, 286, 52, 287], 1691);
-                step(f, Op::MakeVector, &[680, 680, 46, 296], 1692);
-                step(f, Op::AddV, &[286, 296, 297], 1693);
-                step(f, Op::ArrayAt(Elem::Bone), &[2, 55, 20], 1694);
-                step(f, Op::GetTransform, &[20, 65, 79, 74], 1695);
-                step(f, Op::BreakTransform, &[74, 293, 55, 294], 1696);
-                step(f, Op::GetTransform, &[17, 65, 79, 73], 1697);
-                step(f, Op::BreakTransform, &[73, 291, 54, 292], 1698);
-                step(f, Op::SubV, &[293, 291, 295], 1699);
-                step(f, Op::AddV, &[297, 295, 298], 1700);
-                step(f, Op::FootPivots, &[297, 298, 48, 47, 46, 49, 299, 300, 301], 1701);
-                step(f, Op::DrawPoint, &[301, 686, 397], 1702);
-                step(f, Op::ArrayAt(Elem::Transform), &[5, 55, 71], 1703);
-                step(f, Op::BreakTransform, &[71, 286, 52, 287], 1704);
-                step(f, Op::MakeVector, &[680, 680, 46, 296], 1705);
-                step(f, Op::AddV, &[286, 296, 297], 1706);
-                step(f, Op::ArrayAt(Elem::Bone), &[2, 55, 20], 1707);
-                step(f, Op::GetTransform, &[20, 65, 79, 74], 1708);
-                step(f, Op::BreakTransform, &[74, 293, 55, 294], 1709);
-                step(f, Op::GetTransform, &[17, 65, 79, 73], 1710);
-                step(f, Op::BreakTransform, &[73, 291, 54, 292], 1711);
-                step(f, Op::SubV, &[293, 291, 295], 1712);
-                step(f, Op::AddV, &[297, 295, 298], 1713);
-                step(f, Op::FootPivots, &[297, 298, 48, 47, 46, 49, 299, 300, 301], 1714);
-                step(f, Op::DrawPoint, &[299, 686, 395], 1715);
-                step(f, Op::ArrayAt(Elem::Transform), &[5, 55, 71], 1716);
-                step(f, Op::BreakTransform, &[71, 286, 52, 287], 1717);
-                step(f, Op::MakeVector, &[680, 680, 46, 296], 1718);
-                step(f, Op::AddV, &[286, 296, 297], 1719);
-                step(f, Op::ArrayAt(Elem::Bone), &[2, 55, 20], 1720);
-                step(f, Op::GetTransform, &[20, 65, 79, 74], 1721);
-                step(f, Op::BreakTransform, &[74, 293, 55, 294], 1722);
-                step(f, Op::GetTransform, &[17, 65, 79, 73], 1723);
-                step(f, Op::BreakTransform, &[73, 291, 54, 292], 1724);
-                step(f, Op::SubV, &[293, 291, 295], 1725);
-                step(f, Op::AddV, &[297, 295, 298], 1726);
-                step(f, Op::FootPivots, &[297, 298, 48, 47, 46, 49, 299, 300, 301], 1727);
-                step(f, Op::GetParent, &[17, 18], 1728);
-                step(f, Op::GetParent, &[18, 19], 1729);
-                step(f, Op::GetTransform, &[19, 65, 80, 72], 1730);
-                step(f, Op::BreakTransform, &[72, 288, 53, 289], 1731);
-                step(f, Op::SubV, &[286, 288, 290], 1732);
-                step(f, Op::DotV, &[290, 395, 538], 1733);
-                step(f, Op::RemapF, &[538, 77, 76, 78, 680, 79, 541], 1734);
-                step(f, Op::LengthV, &[2, 539], 1735);
-                step(f, Op::RemapF, &[539, 680, 86, 680, 682, 79, 540], 1736);
-                step(f, Op::MulF, &[541, 540, 542], 1737);
-                step(f, Op::ArrayAt(Elem::Float), &[2, 55, 543], 1738);
-                step(f, Op::Copy(ValueType::Float), &[543, 545], 1739);
-                step(f, Op::Copy(ValueType::Float), &[680, 546], 1740);
-                step(f, Op::DivF, &[545, 82, 547], 1741);
-                step(f, Op::ClampF, &[547, 680, 682, 548], 1742);
-                step(f, Op::MulF, &[548, 548, 549], 1743);
-                step(f, Op::MulF, &[548, 685, 550], 1744);
-                step(f, Op::SubF, &[686, 550, 551], 1745);
-                step(f, Op::MulF, &[549, 551, 552], 1746);
-                step(f, Op::Copy(ValueType::Float), &[552, 546], 1747);
-                step(f, Op::Jump, &[1748], 1748)
+            1489 => {
+                step(f, Op::ArrayAt(Elem::Transform), &[7, 59, 35], 1490);
+                step(f, Op::BreakTransform, &[35, 144, 25, 145], 1491);
+                step(f, Op::ArrayAt(Elem::Transform), &[0, 59, 37], 1492);
+                step(f, Op::BreakTransform, &[37, 147, 27, 148], 1493);
+                step(f, Op::SubV, &[147, 144, 149], 1494);
+                step(f, Op::LengthV, &[149, 439], 1495);
+                step(f, Op::SubF, &[61, 62, 440], 1496);
+                step(f, Op::SubF, &[439, 440, 441], 1497);
+                step(f, Op::MulF, &[62, 809, 442], 1498);
+                step(f, Op::ClampF, &[441, 804, 442, 443], 1499);
+                step(f, Op::MulF, &[443, 443, 444], 1500);
+                step(f, Op::MulF, &[62, 820, 445], 1501);
+                step(f, Op::DivF, &[444, 445, 446], 1502);
+                step(f, Op::SubF, &[439, 446, 447], 1503);
+                step(f, Op::DivF, &[447, 439, 448], 1504);
+                step(f, Op::ScaleV, &[149, 448, 150], 1505);
+                step(f, Op::AddV, &[144, 150, 151], 1506);
+                step(f, Op::MakeTransform, &[151, 27, 421, 38], 1507);
+                step(f, Op::ArraySetAt(Elem::Transform), &[5, 59, 38], 1508);
+                step(f, Op::Jump, &[1718], 1509)
             }
-            1748 => {
-                step(f, Op::SubF, &[682, 543, 544], 1749);
-                step(f, Op::Copy(ValueType::Float), &[544, 553], 1750);
-                step(f, Op::Copy(ValueType::Float), &[680, 554], 1751);
-                step(f, Op::DivF, &[553, 82, 555], 1752);
-                step(f, Op::ClampF, &[555, 680, 682, 556], 1753);
-                step(f, Op::MulF, &[556, 556, 557], 1754);
-                step(f, Op::MulF, &[556, 685, 558], 1755);
-                step(f, Op::SubF, &[686, 558, 559], 1756);
-                step(f, Op::MulF, &[557, 559, 560], 1757);
-                step(f, Op::Copy(ValueType::Float), &[560, 554], 1758);
-                step(f, Op::Jump, &[1759], 1759)
+            1509 => {
+                step(f, Op::ArrayAt(Elem::Transform), &[7, 59, 35], 1510);
+                step(f, Op::BreakTransform, &[35, 144, 25, 145], 1511);
+                step(f, Op::ArrayAt(Elem::Transform), &[0, 59, 37], 1512);
+                step(f, Op::BreakTransform, &[37, 147, 27, 148], 1513);
+                step(f, Op::SubV, &[147, 144, 149], 1514);
+                step(f, Op::LengthV, &[149, 439], 1515);
+                step(f, Op::SubF, &[61, 62, 440], 1516);
+                step(f, Op::SubF, &[439, 440, 441], 1517);
+                step(f, Op::MulF, &[62, 809, 442], 1518);
+                step(f, Op::ClampF, &[441, 804, 442, 443], 1519);
+                step(f, Op::MulF, &[443, 443, 444], 1520);
+                step(f, Op::MulF, &[62, 820, 445], 1521);
+                step(f, Op::DivF, &[444, 445, 446], 1522);
+                step(f, Op::SubF, &[439, 446, 447], 1523);
+                step(f, Op::DivF, &[447, 439, 448], 1524);
+                step(f, Op::ScaleV, &[149, 448, 150], 1525);
+                step(f, Op::AddV, &[144, 150, 151], 1526);
+                step(f, Op::MakeTransform, &[151, 27, 421, 38], 1527);
+                step(f, Op::ArrayAt(Elem::Transform), &[3, 59, 61], 1528);
+                step(f, Op::ClampF, &[436, 804, 806, 555], 1529);
+                step(f, Op::Copy(ValueType::Transform), &[38, 66], 1530);
+                step(f, Op::Copy(ValueType::Transform), &[61, 67], 1531);
+                step(f, Op::Copy(ValueType::Float), &[555, 573], 1532);
+                step(f, Op::Copy(ValueType::Transform), &[111, 68], 1533);
+                step(f, Op::Copy(ValueType::Array(Elem::Vec3)), &[3, 2], 1534);
+                step(f, Op::ArrayReset(Elem::Vec3), &[2], 1535);
+                step(f, Op::BreakTransform, &[66, 266, 46, 267], 1536);
+                step(f, Op::ArrayAdd(Elem::Vec3), &[2, 266], 1537);
+                step(f, Op::BreakTransform, &[66, 266, 46, 267], 1538);
+                step(f, Op::UnitV, &[2, 265], 1539);
+                step(f, Op::LengthV, &[2, 574], 1540);
+                step(f, Op::RemapF, &[574, 804, 63, 804, 64, 98, 575], 1541);
+                step(f, Op::ScaleV, &[265, 575, 270], 1542);
+                step(f, Op::SubV, &[266, 270, 276], 1543);
+                step(f, Op::MakeVector, &[804, 804, 66, 274], 1544);
+                step(f, Op::AddV, &[276, 274, 278], 1545);
+                step(f, Op::ArrayAdd(Elem::Vec3), &[2, 278], 1546);
+                step(f, Op::BreakTransform, &[66, 266, 46, 267], 1547);
+                step(f, Op::UnitV, &[2, 265], 1548);
+                step(f, Op::LengthV, &[2, 574], 1549);
+                step(f, Op::RemapF, &[574, 804, 63, 804, 64, 98, 575], 1550);
+                step(f, Op::ScaleV, &[265, 575, 270], 1551);
+                step(f, Op::SubV, &[266, 270, 276], 1552);
+                step(f, Op::MakeVector, &[804, 804, 66, 274], 1553);
+                step(f, Op::AddV, &[276, 274, 278], 1554);
+                step(f, Op::RemapF, &[574, 804, 63, 804, 68, 98, 577], 1555);
+                step(f, Op::MakeVector, &[804, 804, 577, 272], 1556);
+                step(f, Op::AddV, &[278, 272, 282], 1557);
+                step(f, Op::BreakTransform, &[67, 268, 47, 269], 1558);
+                step(f, Op::BreakVector, &[268, 582, 583, 584], 1559);
+                step(f, Op::BreakVector, &[266, 579, 580, 581], 1560);
+                step(f, Op::SubF, &[584, 581, 585], 1561);
+                step(f, Op::MaxF, &[585, 804, 587], 1562);
+                step(f, Op::MulF, &[587, 70, 591], 1563);
+                step(f, Op::MinF, &[591, 71, 592], 1564);
+                step(f, Op::AbsF, &[585, 589], 1565);
+                step(f, Op::RemapF, &[589, 804, 74, 804, 73, 98, 590], 1566);
+                step(f, Op::AddF, &[592, 590, 594], 1567);
+                step(f, Op::MakeVector, &[804, 804, 594, 280], 1568);
+                step(f, Op::AddV, &[282, 280, 284], 1569);
+                step(f, Op::ArrayAdd(Elem::Vec3), &[2, 284], 1570);
+                step(f, Op::BreakTransform, &[66, 266, 46, 267], 1571);
+                step(f, Op::UnitV, &[2, 265], 1572);
+                step(f, Op::LengthV, &[2, 574], 1573);
+                step(f, Op::RemapF, &[574, 804, 63, 804, 64, 98, 575], 1574);
+                step(f, Op::ScaleV, &[265, 575, 270], 1575);
+                step(f, Op::SubV, &[266, 270, 276], 1576);
+                step(f, Op::MakeVector, &[804, 804, 66, 274], 1577);
+                step(f, Op::AddV, &[276, 274, 278], 1578);
+                step(f, Op::RemapF, &[574, 804, 63, 804, 68, 98, 577], 1579);
+                step(f, Op::MakeVector, &[804, 804, 577, 272], 1580);
+                step(f, Op::AddV, &[278, 272, 282], 1581);
+                step(f, Op::BreakTransform, &[67, 268, 47, 269], 1582);
+                step(f, Op::BreakVector, &[268, 582, 583, 584], 1583);
+                step(f, Op::BreakVector, &[266, 579, 580, 581], 1584);
+                step(f, Op::SubF, &[584, 581, 585], 1585);
+                step(f, Op::MaxF, &[585, 804, 587], 1586);
+                step(f, Op::MulF, &[587, 70, 591], 1587);
+                step(f, Op::MinF, &[591, 71, 592], 1588);
+                step(f, Op::AbsF, &[585, 589], 1589);
+                step(f, Op::RemapF, &[589, 804, 74, 804, 73, 98, 590], 1590);
+                step(f, Op::AddF, &[592, 590, 594], 1591);
+                step(f, Op::MakeVector, &[804, 804, 594, 280], 1592);
+                step(f, Op::AddV, &[282, 280, 284], 1593);
+                step(f, Op::RemapF, &[574, 804, 63, 804, 65, 98, 576], 1594);
+                step(f, Op::ScaleV, &[265, 576, 271], 1595);
+                step(f, Op::AddV, &[268, 271, 277], 1596);
+                step(f, Op::MakeVector, &[804, 804, 67, 275], 1597);
+                step(f, Op::AddV, &[277, 275, 279], 1598);
+                step(f, Op::RemapF, &[574, 804, 63, 804, 69, 98, 578], 1599);
+                step(f, Op::MakeVector, &[804, 804, 578, 273], 1600);
+                step(f, Op::AddV, &[279, 273, 283], 1601);
+                step(f, Op::NegF, &[585, 586], 1602);
+                step(f, Op::MaxF, &[586, 804, 588], 1603);
+                step(f, Op::MulF, &[588, 72, 593], 1604);
+                step(f, Op::AddF, &[593, 590, 595], 1605);
+                step(f, Op::MakeVector, &[804, 804, 595, 281], 1606);
+                step(f, Op::AddV, &[283, 281, 285], 1607);
+                step(f, Op::LerpV, &[284, 285, 805, 286], 1608);
+                step(f, Op::GetTransform, &[36, 72, 98, 69], 1609);
+                step(f, Op::BreakTransform, &[69, 287, 48, 288], 1610);
+                step(f, Op::BreakVector, &[287, 605, 606, 607], 1611);
+                step(f, Op::SubF, &[806, 13, 599], 1612);
+                step(f, Op::MulF, &[75, 599, 600], 1613);
+                step(f, Op::MulF, &[12, 600, 601], 1614);
+                step(f, Op::QuatFromAxisAngle, &[423, 601, 49], 1615);
+                step(f, Op::SubV, &[286, 287, 289], 1616);
+                step(f, Op::BreakVector, &[289, 596, 597, 598], 1617);
+                step(f, Op::MakeVector, &[596, 597, 804, 290], 1618);
+                step(f, Op::RotateVector, &[49, 290, 291], 1619);
+                step(f, Op::BreakVector, &[291, 602, 603, 604], 1620);
+                step(f, Op::AddF, &[605, 602, 611], 1621);
+                step(f, Op::AddF, &[606, 603, 612], 1622);
+                step(f, Op::BreakVector, &[286, 608, 609, 610], 1623);
+                step(f, Op::MakeVector, &[611, 612, 610, 292], 1624);
+                step(f, Op::DistanceV, &[266, 268, 613], 1625);
+                step(f, Op::RemapF, &[613, 809, 821, 804, 806, 98, 614], 1626);
+                step(f, Op::LerpV, &[286, 292, 614, 293], 1627);
+                step(f, Op::ArrayAdd(Elem::Vec3), &[2, 293], 1628);
+                step(f, Op::BreakTransform, &[67, 268, 47, 269], 1629);
+                step(f, Op::UnitV, &[2, 265], 1630);
+                step(f, Op::LengthV, &[2, 574], 1631);
+                step(f, Op::RemapF, &[574, 804, 63, 804, 65, 98, 576], 1632);
+                step(f, Op::ScaleV, &[265, 576, 271], 1633);
+                step(f, Op::AddV, &[268, 271, 277], 1634);
+                step(f, Op::MakeVector, &[804, 804, 67, 275], 1635);
+                step(f, Op::AddV, &[277, 275, 279], 1636);
+                step(f, Op::RemapF, &[574, 804, 63, 804, 69, 98, 578], 1637);
+                step(f, Op::MakeVector, &[804, 804, 578, 273], 1638);
+                step(f, Op::AddV, &[279, 273, 283], 1639);
+                step(f, Op::BreakVector, &[268, 582, 583, 584], 1640);
+                step(f, Op::BreakTransform, &[66, 266, 46, 267], 1641);
+                step(f, Op::BreakVector, &[266, 579, 580, 581], 1642);
+                step(f, Op::SubF, &[584, 581, 585], 1643);
+                step(f, Op::NegF, &[585, 586], 1644);
+                step(f, Op::MaxF, &[586, 804, 588], 1645);
+                step(f, Op::MulF, &[588, 72, 593], 1646);
+                step(f, Op::AbsF, &[585, 589], 1647);
+                step(f, Op::RemapF, &[589, 804, 74, 804, 73, 98, 590], 1648);
+                step(f, Op::AddF, &[593, 590, 595], 1649);
+                step(f, Op::MakeVector, &[804, 804, 595, 281], 1650);
+                step(f, Op::AddV, &[283, 281, 285], 1651);
+                step(f, Op::ArrayAdd(Elem::Vec3), &[2, 285], 1652);
+                step(f, Op::BreakTransform, &[67, 268, 47, 269], 1653);
+                step(f, Op::UnitV, &[2, 265], 1654);
+                step(f, Op::LengthV, &[2, 574], 1655);
+                step(f, Op::RemapF, &[574, 804, 63, 804, 65, 98, 576], 1656);
+                step(f, Op::ScaleV, &[265, 576, 271], 1657);
+                step(f, Op::AddV, &[268, 271, 277], 1658);
+                step(f, Op::MakeVector, &[804, 804, 67, 275], 1659);
+                step(f, Op::AddV, &[277, 275, 279], 1660);
+                step(f, Op::ArrayAdd(Elem::Vec3), &[2, 279], 1661);
+                step(f, Op::BreakTransform, &[67, 268, 47, 269], 1662);
+                step(f, Op::ArrayAdd(Elem::Vec3), &[2, 268], 1663);
+                step(f, Op::JumpIfFalse, &[8, 1666], 1664)
             }
-            1759 => {
-                step(f, Op::MulF, &[546, 554, 561], 1760);
-                step(f, Op::LerpF, &[81, 682, 561, 562], 1761);
-                step(f, Op::MulF, &[542, 562, 563], 1762);
-                step(f, Op::QuatFromAxisAngle, &[397, 563, 57], 1763);
-                step(f, Op::SubV, &[300, 299, 302], 1764);
-                step(f, Op::RotateVector, &[57, 302, 303], 1765);
-                step(f, Op::AddV, &[299, 303, 304], 1766);
-                step(f, Op::DrawPoint, &[304, 686, 394], 1767);
-                step(f, Op::ArrayAt(Elem::Transform), &[5, 55, 71], 1768);
-                step(f, Op::DrawTransform, &[71, 693, 681], 1769);
-                step(f, Op::Jump, &[1770], 1770)
+            1664 => {
+                step(f, Op::DrawSpline, &[2, 72, 75, 805, 425], 1665);
+                step(f, Op::Jump, &[1666], 1666)
             }
-            1770 => {
-                step(f, Op::Jump, &[961], 1771)
+            1666 => {
+                step(f, Op::Spline, &[2, 573, 72, 294, 295], 1667);
+                step(f, Op::BreakTransform, &[66, 266, 46, 267], 1668);
+                step(f, Op::BreakTransform, &[67, 268, 47, 269], 1669);
+                step(f, Op::SlerpQ, &[46, 47, 573, 50], 1670);
+                step(f, Op::MulF, &[573, 814, 623], 1671);
+                step(f, Op::SinF, &[623, 624], 1672);
+                step(f, Op::Copy(ValueType::Float), &[573, 615], 1673);
+                step(f, Op::Copy(ValueType::Float), &[804, 616], 1674);
+                step(f, Op::DivF, &[615, 86, 617], 1675);
+                step(f, Op::ClampF, &[617, 804, 806, 618], 1676);
+                step(f, Op::MulF, &[618, 618, 619], 1677);
+                step(f, Op::MulF, &[618, 809, 620], 1678);
+                step(f, Op::SubF, &[810, 620, 621], 1679);
+                step(f, Op::MulF, &[619, 621, 622], 1680);
+                step(f, Op::Copy(ValueType::Float), &[622, 616], 1681);
+                step(f, Op::Jump, &[1682], 1682)
             }
-            1771 => {
-                step(f, Op::Copy(ValueType::Array(Elem::Bone)), &[1, 5], 1772);
-                step(f, Op::Copy(ValueType::Int), &[65, 5], 1773);
-                1773
+            1682 => {
+                step(f, Op::MulF, &[624, 616, 625], 1683);
+                step(f, Op::MulF, &[625, 76, 626], 1684);
+                step(f, Op::SlerpQ, &[50, 92, 626, 51], 1685);
+                step(f, Op::MakeTransform, &[294, 51, 421, 70], 1686);
+                step(f, Op::Copy(ValueType::Transform), &[70, 68], 1687);
+                step(f, Op::Jump, &[1688], 1688)
             }
-            1773 => {
-                step(f, Op::ForEachNext(Elem::Bone), &[5, 5, 1, 6, 7, 1828], 1774)
+            1688 => {
+                step(f, Op::BreakTransform, &[68, 250, 42, 251], 1689);
+                step(f, Op::Equals(Elem::Int), &[59, 72, 67], 1690);
+                step(f, Op::Select(ValueType::Int), &[67, 73, 72, 60], 1691);
+                step(f, Op::ArrayAt(Elem::Transform), &[5, 60, 40], 1692);
+                step(f, Op::BreakTransform, &[40, 156, 29, 157], 1693);
+                step(f, Op::SubF, &[806, 13, 452], 1694);
+                step(f, Op::MulF, &[12, 452, 453], 1695);
+                step(f, Op::ArrayAt(Elem::Bool), &[0, 60, 80], 1696);
+                step(f, Op::Select(ValueType::Float), &[80, 79, 804, 558], 1697);
+                step(f, Op::ArrayAt(Elem::Float), &[2, 59, 436], 1698);
+                step(f, Op::ClampF, &[436, 804, 806, 555], 1699);
+                step(f, Op::MulF, &[555, 814, 556], 1700);
+                step(f, Op::SinF, &[556, 557], 1701);
+                step(f, Op::MulF, &[557, 557, 559], 1702);
+                step(f, Op::MulF, &[558, 559, 560], 1703);
+                step(f, Op::AddF, &[78, 560, 561], 1704);
+                step(f, Op::FootAvoidance, &[250, 156, 453, 67, 561, 252], 1705);
+                step(f, Op::SubV, &[252, 250, 253], 1706);
+                step(f, Op::LengthV, &[253, 562], 1707);
+                step(f, Op::AddF, &[562, 560, 563], 1708);
+                step(f, Op::DivF, &[562, 563, 564], 1709);
+                step(f, Op::ScaleV, &[253, 564, 254], 1710);
+                step(f, Op::AddV, &[250, 254, 255], 1711);
+                step(f, Op::SubF, &[806, 120, 565], 1712);
+                step(f, Op::MulF, &[3, 565, 566], 1713);
+                step(f, Op::MulF, &[566, 559, 567], 1714);
+                step(f, Op::MakeVector, &[804, 804, 567, 256], 1715);
+                step(f, Op::AddV, &[255, 256, 257], 1716);
+                step(f, Op::MakeTransform, &[257, 42, 421, 62], 1717);
+                step(f, Op::ArraySetAt(Elem::Transform), &[5, 59, 62], 1718);
+                1718
             }
-            1774 => {
-                step(f, Op::Copy(ValueType::Bone), &[1, 21], 1775);
-                step(f, Op::Copy(ValueType::Int), &[6, 56], 1776);
-                step(f, Op::GetParent, &[21, 22], 1777);
-                step(f, Op::GetParent, &[22, 23], 1778);
-                step(f, Op::GetParent, &[23, 24], 1779);
-                step(f, Op::GetTransform, &[24, 65, 80, 80], 1780);
-                step(f, Op::BreakTransform, &[80, 305, 61, 306], 1781);
-                step(f, Op::LengthV, &[1, 571], 1782);
-                step(f, Op::ClavicleOffset, &[10, 571, 92, 95, 572], 1783);
-                step(f, Op::MakeVector, &[680, 680, 572, 307], 1784);
-                step(f, Op::AddV, &[305, 307, 308], 1785);
-                step(f, Op::MakeTransform, &[308, 61, 392, 81], 1786);
-                step(f, Op::SetTransform, &[24, 81, 65, 79, 682], 1787);
-                step(f, Op::GetParent, &[21, 22], 1788);
-                step(f, Op::GetParent, &[22, 23], 1789);
-                step(f, Op::GetTransform, &[21, 65, 80, 82], 1790);
-                step(f, Op::GetTransform, &[23, 65, 80, 83], 1791);
-                step(f, Op::BreakTransform, &[83, 309, 63, 310], 1792);
-                step(f, Op::Equals(Elem::Int), &[56, 65, 66], 1793);
-                step(f, Op::Select(ValueType::Int), &[66, 66, 65, 57], 1794);
-                step(f, Op::ArrayAt(Elem::Float), &[0, 57, 570], 1795);
-                step(f, Op::ArmSwingRotation, &[570, 1, 0, 93, 688, 695, 682, 92, 90, 91, 688, 688, 682, 573], 1796);
-                step(f, Op::QuatFromAxisAngle, &[397, 573, 62], 1797);
-                step(f, Op::RotateAroundPoint, &[82, 309, 62, 84], 1798);
-                step(f, Op::BreakTransform, &[84, 311, 64, 312], 1799);
-                step(f, Op::LengthV, &[1, 571], 1800);
-                step(f, Op::RemapF, &[571, 680, 92, 680, 94, 79, 574], 1801);
-                step(f, Op::MakeVector, &[680, 680, 574, 313], 1802);
-                step(f, Op::AddV, &[311, 313, 314], 1803);
-                step(f, Op::MakeTransform, &[314, 64, 392, 85], 1804);
-                step(f, Op::Select(ValueType::Vec3), &[66, 398, 397, 316], 1805);
-                step(f, Op::Select(ValueType::Vec3), &[66, 395, 399, 317], 1806);
-                step(f, Op::ArrayAt(Elem::Vec3), &[1, 56, 315], 1807);
-                step(f, Op::TwoBoneIK, &[23, 22, 21, 85, 316, 317, 315, 65, 682, 80, 696, 697, 79, 67, 575], 1808);
-                step(f, Op::JumpIfFalse, &[8, 1827], 1809)
+            1718 => {
+                step(f, Op::GreaterF, &[19, 804, 68], 1719);
+                step(f, Op::JumpIfFalse, &[68, 1736], 1720)
             }
-            1809 => {
-                step(f, Op::GetParent, &[21, 22], 1810);
-                step(f, Op::GetParent, &[22, 23], 1811);
-                step(f, Op::GetTransform, &[23, 65, 80, 83], 1812);
-                step(f, Op::BreakTransform, &[83, 309, 63, 310], 1813);
-                step(f, Op::GetTransform, &[21, 65, 80, 82], 1814);
-                step(f, Op::Equals(Elem::Int), &[56, 65, 66], 1815);
-                step(f, Op::Select(ValueType::Int), &[66, 66, 65, 57], 1816);
-                step(f, Op::ArrayAt(Elem::Float), &[0, 57, 570], 1817);
-                step(f, Op::ArmSwingRotation, &[570, 1, 0, 93, 688, 695, 682, 92, 90, 91, 688, 688, 682, 573], 1818);
-                step(f, Op::QuatFromAxisAngle, &[397, 573, 62], 1819);
-                step(f, Op::RotateAroundPoint, &[82, 309, 62, 84], 1820);
-                step(f, Op::BreakTransform, &[84, 311, 64, 312], 1821);
-                step(f, Op::LengthV, &[1, 571], 1822);
-                step(f, Op::RemapF, &[571, 680, 92, 680, 94, 79, 574], 1823);
-                step(f, Op::MakeVector, &[680, 680, 574, 313], 1824);
-                step(f, Op::AddV, &[311, 313, 314], 1825);
-                step(f, Op::DrawLine, &[309, 314, 681, 395], 1826);
-                step(f, Op::Jump, &[1827], 1827)
+            1720 => {
+                step(f, Op::ArrayAt(Elem::Transform), &[5, 59, 63], 1721);
+                step(f, Op::BreakTransform, &[63, 258, 43, 259], 1722);
+                step(f, Op::ArrayAt(Elem::Transform), &[7, 59, 64], 1723);
+                step(f, Op::BreakTransform, &[64, 260, 44, 261], 1724);
+                step(f, Op::MulF, &[19, 19, 568], 1725);
+                step(f, Op::LerpV, &[258, 260, 568, 262], 1726);
+                step(f, Op::SubF, &[806, 19, 569], 1727);
+                step(f, Op::MulF, &[19, 569, 570], 1728);
+                step(f, Op::MulF, &[122, 809, 571], 1729);
+                step(f, Op::MulF, &[570, 571, 572], 1730);
+                step(f, Op::MakeVector, &[804, 804, 572, 263], 1731);
+                step(f, Op::AddV, &[262, 263, 264], 1732);
+                step(f, Op::SlerpQ, &[43, 44, 19, 45], 1733);
+                step(f, Op::MakeTransform, &[264, 45, 421, 65], 1734);
+                step(f, Op::ArraySetAt(Elem::Transform), &[5, 59, 65], 1735);
+                step(f, Op::Jump, &[1736], 1736)
             }
-            1827 => {
-                step(f, Op::Jump, &[1773], 1828)
+            1736 => {
+                step(f, Op::ArrayAt(Elem::Float), &[2, 59, 436], 1737);
+                step(f, Op::GreaterEqualF, &[436, 806, 66], 1738);
+                step(f, Op::ArraySetAt(Elem::Bool), &[0, 59, 66], 1739);
+                step(f, Op::ArrayAt(Elem::Transform), &[1, 59, 39], 1740);
+                step(f, Op::BreakTransform, &[39, 152, 28, 153], 1741);
+                step(f, Op::ArrayAt(Elem::Float), &[2, 59, 436], 1742);
+                step(f, Op::SubF, &[806, 436, 449], 1743);
+                step(f, Op::MulF, &[8, 5, 450], 1744);
+                step(f, Op::MulF, &[449, 450, 451], 1745);
+                step(f, Op::ScaleV, &[2, 451, 154], 1746);
+                step(f, Op::AddV, &[152, 154, 155], 1747);
+                step(f, Op::MakeTransform, &[155, 92, 421, 55], 1748);
+                step(f, Op::ArraySetAt(Elem::Transform), &[4, 59, 55], 1749);
+                step(f, Op::Copy(ValueType::Bone), &[0, 17], 1750);
+                step(f, Op::Copy(ValueType::Int), &[3, 61], 1751);
+                step(f, Op::ArrayAt(Elem::Transform), &[5, 61, 71], 1752);
+                step(f, Op::BreakTransform, &[71, 296, 52, 297], 1753);
+                step(f, Op::MakeVector, &[804, 804, 48, 306], 1754);
+                step(f, Op::AddV, &[296, 306, 307], 1755);
+                step(f, Op::GetTransform, &[17, 72, 98, 73], 1756);
+                step(f, Op::BreakTransform, &[73, 301, 54, 302], 1757);
+                step(f, Op::MakeTransform, &[307, 54, 421, 75], 1758);
+                step(f, Op::ArrayAt(Elem::Bone), &[2, 61, 20], 1759);
+                step(f, Op::GetTransform, &[20, 72, 98, 74], 1760);
+                step(f, Op::BreakTransform, &[74, 303, 55, 304], 1761);
+                step(f, Op::SubV, &[303, 301, 305], 1762);
+                step(f, Op::AddV, &[307, 305, 308], 1763);
+                step(f, Op::FootPivots, &[307, 308, 50, 49, 48, 51, 309, 310, 311], 1764);
+                step(f, Op::GetParent, &[17, 18], 1765);
+                step(f, Op::GetParent, &[18, 19], 1766);
+                step(f, Op::GetTransform, &[19, 72, 99, 72], 1767);
+                step(f, Op::BreakTransform, &[72, 298, 53, 299], 1768);
+                step(f, Op::SubV, &[296, 298, 300], 1769);
+                step(f, Op::DotV, &[300, 424, 627], 1770);
+                step(f, Op::RemapF, &[627, 81, 80, 82, 804, 98, 630], 1771);
+                step(f, Op::LengthV, &[2, 628], 1772);
+                step(f, Op::RemapF, &[628, 804, 92, 804, 806, 98, 629], 1773);
+                step(f, Op::MulF, &[630, 629, 631], 1774);
+                step(f, Op::QuatFromAxisAngle, &[426, 631, 56], 1775);
+                step(f, Op::RotateAroundPoint, &[75, 309, 56, 76], 1776);
+                step(f, Op::ArrayAt(Elem::Float), &[2, 61, 632], 1777);
+                step(f, Op::Copy(ValueType::Float), &[632, 634], 1778);
+                step(f, Op::Copy(ValueType::Float), &[804, 635], 1779);
+                step(f, Op::DivF, &[634, 86, 636], 1780);
+                step(f, Op::ClampF, &[636, 804, 806, 637], 1781);
+                step(f, Op::MulF, &[637, 637, 638], 1782);
+                step(f, Op::MulF, &[637, 809, 639], 1783);
+                step(f, Op::SubF, &[810, 639, 640], 1784);
+                step(f, Op::MulF, &[638, 640, 641], 1785);
+                step(f, Op::Copy(ValueType::Float), &[641, 635], 1786);
+                step(f, Op::Jump, &[1787], 1787)
             }
-            1828 => {
-                step(f, Op::Copy(ValueType::Float), &[680, 578], 1829);
-                step(f, Op::Copy(ValueType::Float), &[689, 579], 1830);
-                step(f, Op::Copy(ValueType::Bool), &[80, 68], 1831);
-                step(f, Op::Copy(ValueType::Array(Elem::Transform)), &[5, 10], 1832);
-                step(f, Op::Copy(ValueType::Int), &[65, 58], 1833);
-                step(f, Op::MakeVector, &[680, 680, 51, 320], 1834);
-                1834
+            1787 => {
+                step(f, Op::SubF, &[806, 632, 633], 1788);
+                step(f, Op::Copy(ValueType::Float), &[633, 642], 1789);
+                step(f, Op::Copy(ValueType::Float), &[804, 643], 1790);
+                step(f, Op::DivF, &[642, 86, 644], 1791);
+                step(f, Op::ClampF, &[644, 804, 806, 645], 1792);
+                step(f, Op::MulF, &[645, 645, 646], 1793);
+                step(f, Op::MulF, &[645, 809, 647], 1794);
+                step(f, Op::SubF, &[810, 647, 648], 1795);
+                step(f, Op::MulF, &[646, 648, 649], 1796);
+                step(f, Op::Copy(ValueType::Float), &[649, 643], 1797);
+                step(f, Op::Jump, &[1798], 1798)
             }
-            1834 => {
-                step(f, Op::ForEachNext(Elem::Transform), &[10, 58, 86, 59, 60, 1847], 1835)
+            1798 => {
+                step(f, Op::MulF, &[635, 643, 650], 1799);
+                step(f, Op::LerpF, &[85, 806, 650, 651], 1800);
+                step(f, Op::MulF, &[631, 651, 652], 1801);
+                step(f, Op::QuatFromAxisAngle, &[426, 652, 57], 1802);
+                step(f, Op::SubV, &[310, 309, 312], 1803);
+                step(f, Op::RotateVector, &[57, 312, 313], 1804);
+                step(f, Op::AddV, &[309, 313, 314], 1805);
+                step(f, Op::RemapF, &[627, 83, 81, 84, 804, 98, 653], 1806);
+                step(f, Op::MulF, &[653, 629, 654], 1807);
+                step(f, Op::QuatFromAxisAngle, &[426, 654, 58], 1808);
+                step(f, Op::RotateAroundPoint, &[76, 314, 58, 77], 1809);
+                step(f, Op::RemapF, &[627, 87, 88, 804, 89, 98, 655], 1810);
+                step(f, Op::RotateVector, &[52, 423, 315], 1811);
+                step(f, Op::BreakVector, &[315, 656, 657, 658], 1812);
+                step(f, Op::CosF, &[91, 660], 1813);
+                step(f, Op::CosF, &[90, 659], 1814);
+                step(f, Op::RemapF, &[658, 660, 659, 804, 806, 98, 661], 1815);
+                step(f, Op::MulF, &[629, 661, 662], 1816);
+                step(f, Op::MulF, &[655, 662, 663], 1817);
+                step(f, Op::QuatFromAxisAngle, &[426, 663, 59], 1818);
+                step(f, Op::RotateAroundPoint, &[77, 311, 59, 78], 1819);
+                step(f, Op::SubF, &[806, 13, 664], 1820);
+                step(f, Op::MulF, &[12, 664, 665], 1821);
+                step(f, Op::LimitRotationAroundZ, &[52, 665, 93, 60], 1822);
+                step(f, Op::RotateAroundPoint, &[78, 296, 60, 79], 1823);
+                step(f, Op::ArraySetAt(Elem::Transform), &[6, 61, 79], 1824);
+                step(f, Op::JumpIfFalse, &[8, 1906], 1825)
             }
-            1835 => {
-                step(f, Op::BreakTransform, &[86, 318, 65, 319], 1836);
-                step(f, Op::AddV, &[318, 320, 321], 1837);
-                step(f, Op::SubV, &[318, 320, 322], 1838);
-                step(f, Op::SphereTrace, &[321, 322, 50, 69, 323, 324, 580], 1839);
-                step(f, Op::BreakVector, &[323, 581, 582, 583], 1840);
-                step(f, Op::LessF, &[583, 579, 70], 1841);
-                step(f, Op::And, &[69, 70, 71], 1842);
-                step(f, Op::JumpIfFalse, &[71, 1846], 1843)
+            1825 => {
+                step(f, Op::ArrayAt(Elem::Transform), &[5, 61, 71], 1826);
+                step(f, Op::BreakTransform, &[71, 296, 52, 297], 1827);
+                step(f, Op::MakeVector, &[804, 804, 48, 306], 1828);
+                step(f, Op::AddV, &[296, 306, 307], 1829);
+                step(f, Op::ArrayAt(Elem::Bone), &[2, 61, 20], 1830);
+                step(f, Op::GetTransform, &[20, 72, 98, 74], 1831);
+                step(f, Op::BreakTransform, &[74, 303, 55, 304], 1832);
+                step(f, Op::GetTransform, &[17, 72, 98, 73], 1833);
+                step(f, Op::BreakTransform, &[73, 301, 54, 302], 1834);
+                step(f, Op::SubV, &[303, 301, 305], 1835);
+                step(f, Op::AddV, &[307, 305, 308], 1836);
+                step(f, Op::FootPivots, &[307, 308, 50, 49, 48, 51, 309, 310, 311], 1837);
+                step(f, Op::DrawPoint, &[311, 810, 426], 1838);
+                step(f, Op::ArrayAt(Elem::Transform), &[5, 61, 71], 1839);
+                step(f, Op::BreakTransform, &[71, 296, 52, 297], 1840);
+                step(f, Op::MakeVector, &[804, 804, 48, 306], 1841);
+                step(f, Op::AddV, &[296, 306, 307], 1842);
+                step(f, Op::ArrayAt(Elem::Bone), &[2, 61, 20], 1843);
+                step(f, Op::GetTransform, &[20, 72, 98, 74], 1844);
+                step(f, Op::BreakTransform, &[74, 303, 55, 304], 1845);
+                step(f, Op::GetTransform, &[17, 72, 98, 73], 1846);
+                step(f, Op::BreakTransform, &[73, 301, 54, 302], 1847);
+                step(f, Op::SubV, &[303, 301, 305], 1848);
+                step(f, Op::AddV, &[307, 305, 308], 1849);
+                step(f, Op::FootPivots, &[307, 308, 50, 49, 48, 51, 309, 310, 311], 1850);
+                step(f, Op::DrawPoint, &[309, 810, 424], 1851);
+                step(f, Op::ArrayAt(Elem::Transform), &[5, 61, 71], 1852);
+                step(f, Op::BreakTransform, &[71, 296, 52, 297], 1853);
+                step(f, Op::MakeVector, &[804, 804, 48, 306], 1854);
+                step(f, Op::AddV, &[296, 306, 307], 1855);
+                step(f, Op::ArrayAt(Elem::Bone), &[2, 61, 20], 1856);
+                step(f, Op::GetTransform, &[20, 72, 98, 74], 1857);
+                step(f, Op::BreakTransform, &[74, 303, 55, 304], 1858);
+                step(f, Op::GetTransform, &[17, 72, 98, 73], 1859);
+                step(f, Op::BreakTransform, &[73, 301, 54, 302], 1860);
+                step(f, Op::SubV, &[303, 301, 305], 1861);
+                step(f, Op::AddV, &[307, 305, 308], 1862);
+                step(f, Op::FootPivots, &[307, 308, 50, 49, 48, 51, 309, 310, 311], 1863);
+                step(f, Op::GetParent, &[17, 18], 1864);
+                step(f, Op::GetParent, &[18, 19], 1865);
+                step(f, Op::GetTransform, &[19, 72, 99, 72], 1866);
+                step(f, Op::BreakTransform, &[72, 298, 53, 299], 1867);
+                step(f, Op::SubV, &[296, 298, 300], 1868);
+                step(f, Op::DotV, &[300, 424, 627], 1869);
+                step(f, Op::RemapF, &[627, 81, 80, 82, 804, 98, 630], 1870);
+                step(f, Op::LengthV, &[2, 628], 1871);
+                step(f, Op::RemapF, &[628, 804, 92, 804, 806, 98, 629], 1872);
+                step(f, Op::MulF, &[630, 629, 631], 1873);
+                step(f, Op::ArrayAt(Elem::Float), &[2, 61, 632], 1874);
+                step(f, Op::Copy(ValueType::Float), &[632, 634], 1875);
+                step(f, Op::Copy(ValueType::Float), &[804, 635], 1876);
+                step(f, Op::DivF, &[634, 86, 636], 1877);
+                step(f, Op::ClampF, &[636, 804, 806, 637], 1878);
+                step(f, Op::MulF, &[637, 637, 638], 1879);
+                step(f, Op::MulF, &[637, 809, 639], 1880);
+                step(f, Op::SubF, &[810, 639, 640], 1881);
+                step(f, Op::MulF, &[638, 640, 641], 1882);
+                step(f, Op::Copy(ValueType::Float), &[641, 635], 1883);
+                step(f, Op::Jump, &[1884], 1884)
             }
-            1843 => {
-                step(f, Op::Copy(ValueType::Float), &[583, 579], 1844);
-                step(f, Op::Copy(ValueType::Bool), &[79, 68], 1845);
-                step(f, Op::Jump, &[1846], 1846)
+            1884 => {
+                step(f, Op::SubF, &[806, 632, 633], 1885);
+                step(f, Op::Copy(ValueType::Float), &[633, 642], 1886);
+                step(f, Op::Copy(ValueType::Float), &[804, 643], 1887);
+                step(f, Op::DivF, &[642, 86, 644], 1888);
+                step(f, Op::ClampF, &[644, 804, 806, 645], 1889);
+                step(f, Op::MulF, &[645, 645, 646], 1890);
+                step(f, Op::MulF, &[645, 809, 647], 1891);
+                step(f, Op::SubF, &[810, 647, 648], 1892);
+                step(f, Op::MulF, &[646, 648, 649], 1893);
+                step(f, Op::Copy(ValueType::Float), &[649, 643], 1894);
+                step(f, Op::Jump, &[1895], 1895)
             }
-            1846 => {
-                step(f, Op::Jump, &[1834], 1847)
+            1895 => {
+                step(f, Op::MulF, &[635, 643, 650], 1896);
+                step(f, Op::LerpF, &[85, 806, 650, 651], 1897);
+                step(f, Op::MulF, &[631, 651, 652], 1898);
+                step(f, Op::QuatFromAxisAngle, &[426, 652, 57], 1899);
+                step(f, Op::SubV, &[310, 309, 312], 1900);
+                step(f, Op::RotateVector, &[57, 312, 313], 1901);
+                step(f, Op::AddV, &[309, 313, 314], 1902);
+                step(f, Op::DrawPoint, &[314, 810, 423], 1903);
+                step(f, Op::ArrayAt(Elem::Transform), &[5, 61, 71], 1904);
+                step(f, Op::DrawTransform, &[71, 821, 805], 1905);
+                step(f, Op::Jump, &[1906], 1906)
             }
-            1847 => {
-                step(f, Op::Select(ValueType::Float), &[68, 579, 680, 584], 1848);
-                step(f, Op::ClampF, &[584, 54, 55, 585], 1849);
-                step(f, Op::Copy(ValueType::Float), &[585, 578], 1850);
-                step(f, Op::Jump, &[1851], 1851)
+            1906 => {
+                step(f, Op::Jump, &[1069], 1907)
             }
-            1851 => {
-                step(f, Op::SubF, &[682, 18, 577], 1852);
-                step(f, Op::MulF, &[578, 577, 586], 1853);
-                step(f, Op::FloatLerp, &[14, 586, 44, 587], 1854);
-                step(f, Op::Select(ValueType::Float), &[1, 586, 587, 588], 1855);
-                step(f, Op::Copy(ValueType::Float), &[588, 14], 1856);
-                step(f, Op::GetTransform, &[37, 65, 79, 91], 1857);
-                step(f, Op::BreakTransform, &[91, 337, 72, 338], 1858);
-                step(f, Op::PelvisLean, &[1, 97, 102, 103, 604, 605], 1859);
-                step(f, Op::LengthV, &[2, 576], 1860);
-                step(f, Op::RemapF, &[576, 680, 97, 680, 96, 79, 589], 1861);
-                step(f, Op::MulF, &[10, 698, 590], 1862);
-                step(f, Op::SinF, &[590, 591], 1863);
-                step(f, Op::MulF, &[589, 591, 592], 1864);
-                step(f, Op::MulF, &[592, 577, 593], 1865);
-                step(f, Op::AddF, &[593, 14, 594], 1866);
-                step(f, Op::MulF, &[3, 114, 595], 1867);
-                step(f, Op::SubF, &[594, 595, 596], 1868);
-                step(f, Op::MakeVector, &[680, 605, 596, 339], 1869);
-                step(f, Op::AddV, &[337, 339, 340], 1870);
-                step(f, Op::ArrayAt(Elem::Transform), &[6, 65, 87], 1871);
-                step(f, Op::BreakTransform, &[87, 325, 66, 326], 1872);
-                step(f, Op::BreakVector, &[325, 606, 607, 608], 1873);
-                step(f, Op::ArrayAt(Elem::Transform), &[6, 66, 88], 1874);
-                step(f, Op::BreakTransform, &[88, 327, 67, 328], 1875);
-                step(f, Op::BreakVector, &[327, 609, 610, 611], 1876);
-                step(f, Op::SubF, &[608, 611, 612], 1877);
-                step(f, Op::PelvisSideLean, &[612, 104, 105, 613], 1878);
-                step(f, Op::ArrayAt(Elem::Transform), &[5, 65, 89], 1879);
-                step(f, Op::BreakTransform, &[89, 331, 68, 332], 1880);
-                step(f, Op::ArrayAt(Elem::Transform), &[5, 66, 90], 1881);
-                step(f, Op::BreakTransform, &[90, 333, 69, 334], 1882);
-                step(f, Op::SlerpQ, &[68, 69, 681, 70], 1883);
-                step(f, Op::EulerFromQuat, &[70, 65, 335], 1884);
-                step(f, Op::BreakVector, &[335, 600, 601, 602], 1885);
-                step(f, Op::RemapF, &[576, 98, 97, 680, 99, 79, 598], 1886);
-                step(f, Op::SubV, &[325, 327, 329], 1887);
-                step(f, Op::RotateVector, &[0, 395, 330], 1888);
-                step(f, Op::DotV, &[329, 330, 597], 1889);
-                step(f, Op::MulF, &[598, 597, 599], 1890);
-                step(f, Op::AddF, &[602, 599, 603], 1891);
-                step(f, Op::MakeVector, &[604, 613, 603, 336], 1892);
-                step(f, Op::QuatFromEuler, &[336, 65, 71], 1893);
-                step(f, Op::MakeTransform, &[340, 71, 392, 92], 1894);
-                step(f, Op::SetTransform, &[38, 92, 65, 79, 682], 1895);
-                step(f, Op::GetTransform, &[39, 66, 79, 93], 1896);
-                step(f, Op::BreakTransform, &[93, 341, 76, 342], 1897);
-                step(f, Op::LengthV, &[2, 576], 1898);
-                step(f, Op::RemapF, &[576, 98, 97, 680, 99, 79, 598], 1899);
-                step(f, Op::ArrayAt(Elem::Transform), &[6, 65, 87], 1900);
-                step(f, Op::BreakTransform, &[87, 325, 66, 326], 1901);
-                step(f, Op::ArrayAt(Elem::Transform), &[6, 66, 88], 1902);
-                step(f, Op::BreakTransform, &[88, 327, 67, 328], 1903);
-                step(f, Op::SubV, &[325, 327, 329], 1904);
-                step(f, Op::RotateVector, &[0, 395, 330], 1905);
-                step(f, Op::DotV, &[329, 330, 597], 1906);
-                step(f, Op::MulF, &[598, 597, 599], 1907);
-                step(f, Op::QuatFromAxisAngle, &[394, 599, 73], 1908);
-                step(f, Op::DivF, &[100, 686, 614], 1909);
-                step(f, Op::QuatScale, &[73, 614, 74], 1910);
-                step(f, Op::MulQ, &[76, 74, 80], 1911);
-                step(f, Op::MakeTransform, &[341, 80, 392, 97], 1912);
-                step(f, Op::SetTransform, &[40, 97, 66, 79, 682], 1913);
-                step(f, Op::GetTransform, &[41, 66, 79, 94], 1914);
-                step(f, Op::BreakTransform, &[94, 343, 77, 344], 1915);
-                step(f, Op::LengthV, &[2, 576], 1916);
-                step(f, Op::RemapF, &[576, 98, 97, 680, 99, 79, 598], 1917);
-                step(f, Op::ArrayAt(Elem::Transform), &[6, 65, 87], 1918);
-                step(f, Op::BreakTransform, &[87, 325, 66, 326], 1919);
-                step(f, Op::ArrayAt(Elem::Transform), &[6, 66, 88], 1920);
-                step(f, Op::BreakTransform, &[88, 327, 67, 328], 1921);
-                step(f, Op::SubV, &[325, 327, 329], 1922);
-                step(f, Op::RotateVector, &[0, 395, 330], 1923);
-                step(f, Op::DotV, &[329, 330, 597], 1924);
-                step(f, Op::MulF, &[598, 597, 599], 1925);
-                step(f, Op::QuatFromAxisAngle, &[394, 599, 73], 1926);
-                step(f, Op::DivF, &[100, 686, 614], 1927);
-                step(f, Op::QuatScale, &[73, 614, 74], 1928);
-                step(f, Op::MulQ, &[77, 74, 81], 1929);
-                step(f, Op::MakeTransform, &[343, 81, 392, 98], 1930);
-                step(f, Op::SetTransform, &[42, 98, 66, 79, 682], 1931);
-                step(f, Op::GetTransform, &[43, 66, 79, 95], 1932);
-                step(f, Op::BreakTransform, &[95, 345, 78, 346], 1933);
-                step(f, Op::LengthV, &[2, 576], 1934);
-                step(f, Op::RemapF, &[576, 98, 97, 680, 99, 79, 598], 1935);
-                step(f, Op::ArrayAt(Elem::Transform), &[6, 65, 87], 1936);
-                step(f, Op::BreakTransform, &[87, 325, 66, 326], 1937);
-                step(f, Op::ArrayAt(Elem::Transform), &[6, 66, 88], 1938);
-                step(f, Op::BreakTransform, &[88, 327, 67, 328], 1939);
-                step(f, Op::SubV, &[325, 327, 329], 1940);
-                step(f, Op::RotateVector, &[0, 395, 330], 1941);
-                step(f, Op::DotV, &[329, 330, 597], 1942);
-                step(f, Op::MulF, &[598, 597, 599], 1943);
-                step(f, Op::QuatFromAxisAngle, &[394, 599, 73], 1944);
-                step(f, Op::DivF, &[100, 686, 614], 1945);
-                step(f, Op::QuatScale, &[73, 614, 74], 1946);
-                step(f, Op::MulQ, &[78, 74, 82], 1947);
-                step(f, Op::MakeTransform, &[345, 82, 392, 99], 1948);
-                step(f, Op::SetTransform, &[44, 99, 66, 79, 682], 1949);
-                step(f, Op::GetTransform, &[45, 66, 79, 96], 1950);
-                step(f, Op::BreakTransform, &[96, 347, 79, 348], 1951);
-                step(f, Op::LengthV, &[2, 576], 1952);
-                step(f, Op::RemapF, &[576, 98, 97, 680, 99, 79, 598], 1953);
-                step(f, Op::ArrayAt(Elem::Transform), &[6, 65, 87], 1954);
-                step(f, Op::BreakTransform, &[87, 325, 66, 326], 1955);
-                step(f, Op::ArrayAt(Elem::Transform), &[6, 66, 88], 1956);
-                step(f, Op::BreakTransform, &[88, 327, 67, 328], 1957);
-                step(f, Op::SubV, &[325, 327, 329], 1958);
-                step(f, Op::RotateVector, &[0, 395, 330], 1959);
-                step(f, Op::DotV, &[329, 330, 597], 1960);
-                step(f, Op::MulF, &[598, 597, 599], 1961);
-                step(f, Op::QuatFromAxisAngle, &[394, 599, 73], 1962);
-                step(f, Op::QuatScale, &[73, 101, 75], 1963);
-                step(f, Op::MulQ, &[79, 75, 83], 1964);
-                step(f, Op::MakeTransform, &[347, 83, 392, 100], 1965);
-                step(f, Op::SetTransform, &[46, 100, 66, 79, 682], 1966);
-                step(f, Op::Copy(ValueType::Float), &[680, 615], 1967);
-                step(f, Op::Copy(ValueType::Float), &[680, 616], 1968);
-                step(f, Op::Copy(ValueType::Array(Elem::Bone)), &[0, 15], 1969);
-                step(f, Op::Copy(ValueType::Int), &[65, 61], 1970);
+            1907 => {
+                step(f, Op::Copy(ValueType::Array(Elem::Bone)), &[1, 5], 1908);
+                step(f, Op::Copy(ValueType::Int), &[72, 5], 1909);
+                1909
+            }
+            1909 => {
+                step(f, Op::ForEachNext(Elem::Bone), &[5, 5, 1, 6, 7, 1964], 1910)
+            }
+            1910 => {
+                step(f, Op::Copy(ValueType::Bone), &[1, 21], 1911);
+                step(f, Op::Copy(ValueType::Int), &[6, 62], 1912);
+                step(f, Op::GetParent, &[21, 22], 1913);
+                step(f, Op::GetParent, &[22, 23], 1914);
+                step(f, Op::GetParent, &[23, 24], 1915);
+                step(f, Op::GetTransform, &[24, 72, 99, 80], 1916);
+                step(f, Op::BreakTransform, &[80, 316, 61, 317], 1917);
+                step(f, Op::LengthV, &[1, 667], 1918);
+                step(f, Op::ClavicleOffset, &[10, 667, 98, 101, 668], 1919);
+                step(f, Op::MakeVector, &[804, 804, 668, 318], 1920);
+                step(f, Op::AddV, &[316, 318, 319], 1921);
+                step(f, Op::MakeTransform, &[319, 61, 421, 81], 1922);
+                step(f, Op::SetTransform, &[24, 81, 72, 98, 806], 1923);
+                step(f, Op::GetParent, &[21, 22], 1924);
+                step(f, Op::GetParent, &[22, 23], 1925);
+                step(f, Op::GetTransform, &[21, 72, 99, 82], 1926);
+                step(f, Op::GetTransform, &[23, 72, 99, 83], 1927);
+                step(f, Op::BreakTransform, &[83, 320, 63, 321], 1928);
+                step(f, Op::Equals(Elem::Int), &[62, 72, 81], 1929);
+                step(f, Op::Select(ValueType::Int), &[81, 73, 72, 63], 1930);
+                step(f, Op::ArrayAt(Elem::Float), &[0, 63, 666], 1931);
+                step(f, Op::ArmSwingRotation, &[666, 1, 0, 99, 813, 822, 806, 98, 96, 97, 813, 813, 806, 669], 1932);
+                step(f, Op::QuatFromAxisAngle, &[426, 669, 62], 1933);
+                step(f, Op::RotateAroundPoint, &[82, 320, 62, 84], 1934);
+                step(f, Op::BreakTransform, &[84, 322, 64, 323], 1935);
+                step(f, Op::LengthV, &[1, 667], 1936);
+                step(f, Op::RemapF, &[667, 804, 98, 804, 100, 98, 670], 1937);
+                step(f, Op::MakeVector, &[804, 804, 670, 324], 1938);
+                step(f, Op::AddV, &[322, 324, 325], 1939);
+                step(f, Op::MakeTransform, &[325, 64, 421, 85], 1940);
+                step(f, Op::Select(ValueType::Vec3), &[81, 427, 426, 327], 1941);
+                step(f, Op::Select(ValueType::Vec3), &[81, 424, 428, 328], 1942);
+                step(f, Op::ArrayAt(Elem::Vec3), &[1, 62, 326], 1943);
+                step(f, Op::TwoBoneIK, &[23, 22, 21, 85, 327, 328, 326, 72, 806, 99, 823, 824, 98, 82, 671], 1944);
+                step(f, Op::JumpIfFalse, &[8, 1963], 1945)
+            }
+            1945 => {
+                step(f, Op::GetParent, &[21, 22], 1946);
+                step(f, Op::GetParent, &[22, 23], 1947);
+                step(f, Op::GetTransform, &[23, 72, 99, 83], 1948);
+                step(f, Op::BreakTransform, &[83, 320, 63, 321], 1949);
+                step(f, Op::GetTransform, &[21, 72, 99, 82], 1950);
+                step(f, Op::Equals(Elem::Int), &[62, 72, 81], 1951);
+                step(f, Op::Select(ValueType::Int), &[81, 73, 72, 63], 1952);
+                step(f, Op::ArrayAt(Elem::Float), &[0, 63, 666], 1953);
+                step(f, Op::ArmSwingRotation, &[666, 1, 0, 99, 813, 822, 806, 98, 96, 97, 813, 813, 806, 669], 1954);
+                step(f, Op::QuatFromAxisAngle, &[426, 669, 62], 1955);
+                step(f, Op::RotateAroundPoint, &[82, 320, 62, 84], 1956);
+                step(f, Op::BreakTransform, &[84, 322, 64, 323], 1957);
+                step(f, Op::LengthV, &[1, 667], 1958);
+                step(f, Op::RemapF, &[667, 804, 98, 804, 100, 98, 670], 1959);
+                step(f, Op::MakeVector, &[804, 804, 670, 324], 1960);
+                step(f, Op::AddV, &[322, 324, 325], 1961);
+                step(f, Op::DrawLine, &[320, 325, 805, 424], 1962);
+                step(f, Op::Jump, &[1963], 1963)
+            }
+            1963 => {
+                step(f, Op::Jump, &[1909], 1964)
+            }
+            1964 => {
+                step(f, Op::Copy(ValueType::Float), &[804, 674], 1965);
+                step(f, Op::Copy(ValueType::Float), &[811, 675], 1966);
+                step(f, Op::Copy(ValueType::Bool), &[99, 83], 1967);
+                step(f, Op::Copy(ValueType::Array(Elem::Transform)), &[5, 10], 1968);
+                step(f, Op::Copy(ValueType::Int), &[72, 64], 1969);
+                step(f, Op::MakeVector, &[804, 804, 53, 331], 1970);
                 1970
             }
             1970 => {
-                step(f, Op::ForEachNext(Elem::Bone), &[15, 61, 25, 62, 63, 2000], 1971)
+                step(f, Op::ForEachNext(Elem::Transform), &[10, 64, 86, 65, 66, 1983], 1971)
             }
             1971 => {
-                step(f, Op::GetParent, &[25, 26], 1972);
-                step(f, Op::GetParent, &[26, 27], 1973);
-                step(f, Op::GetTransform, &[27, 65, 80, 101], 1974);
-                step(f, Op::BreakTransform, &[101, 349, 84, 350], 1975);
-                step(f, Op::BreakVector, &[349, 617, 618, 619], 1976);
-                step(f, Op::ArrayAt(Elem::Transform), &[6, 62, 102], 1977);
-                step(f, Op::BreakTransform, &[102, 351, 85, 352], 1978);
-                step(f, Op::BreakVector, &[351, 620, 621, 622], 1979);
-                step(f, Op::ArrayAt(Elem::Float), &[1, 62, 626], 1980);
-                step(f, Op::MulF, &[626, 106, 627], 1981);
-                step(f, Op::MulF, &[627, 627, 628], 1982);
-                step(f, Op::SubF, &[617, 620, 623], 1983);
-                step(f, Op::SubF, &[618, 621, 624], 1984);
-                step(f, Op::MakeVector, &[623, 624, 680, 353], 1985);
-                step(f, Op::DotV, &[353, 353, 625], 1986);
-                step(f, Op::SubF, &[628, 625, 629], 1987);
-                step(f, Op::SqrtF, &[629, 630], 1988);
-                step(f, Op::AddF, &[622, 630, 631], 1989);
-                step(f, Op::SubF, &[619, 631, 632], 1990);
-                step(f, Op::ArrayAt(Elem::Bool), &[0, 62, 72], 1991);
-                step(f, Op::ArrayAt(Elem::Float), &[2, 62, 633], 1992);
-                step(f, Op::RemapF, &[633, 681, 682, 680, 682, 79, 634], 1993);
-                step(f, Op::RemapF, &[633, 680, 109, 682, 680, 79, 635], 1994);
-                step(f, Op::MaxF, &[634, 635, 636], 1995);
-                step(f, Op::Select(ValueType::Float), &[72, 682, 636, 637], 1996);
-                step(f, Op::MulF, &[632, 637, 638], 1997);
-                step(f, Op::MaxF, &[616, 638, 639], 1998);
-                step(f, Op::Copy(ValueType::Float), &[639, 616], 1999);
-                step(f, Op::Jump, &[1970], 2000)
+                step(f, Op::BreakTransform, &[86, 329, 65, 330], 1972);
+                step(f, Op::AddV, &[329, 331, 332], 1973);
+                step(f, Op::SubV, &[329, 331, 333], 1974);
+                step(f, Op::SphereTrace, &[332, 333, 52, 84, 334, 335, 676], 1975);
+                step(f, Op::BreakVector, &[334, 677, 678, 679], 1976);
+                step(f, Op::LessF, &[679, 675, 85], 1977);
+                step(f, Op::And, &[84, 85, 86], 1978);
+                step(f, Op::JumpIfFalse, &[86, 1982], 1979)
             }
-            2000 => {
-                step(f, Op::ClampF, &[616, 680, 107, 640], 2001);
-                step(f, Op::Copy(ValueType::Float), &[640, 615], 2002);
-                step(f, Op::Jump, &[2003], 2003)
+            1979 => {
+                step(f, Op::Copy(ValueType::Float), &[679, 675], 1980);
+                step(f, Op::Copy(ValueType::Bool), &[98, 83], 1981);
+                step(f, Op::Jump, &[1982], 1982)
             }
-            2003 => {
-                step(f, Op::MakeVector, &[15, 680, 680, 354], 2004);
-                step(f, Op::MakeVector, &[615, 680, 680, 355], 2005);
-                step(f, Op::MakeVector, &[16, 680, 680, 356], 2006);
-                step(f, Op::GreaterF, &[615, 15, 73], 2007);
-                step(f, Op::Select(ValueType::Float), &[73, 111, 108, 641], 2008);
-                step(f, Op::Copy(ValueType::Vec3), &[354, 357], 2009);
-                step(f, Op::Copy(ValueType::Vec3), &[355, 358], 2010);
-                step(f, Op::Copy(ValueType::Vec3), &[356, 359], 2011);
-                step(f, Op::Copy(ValueType::Float), &[641, 642], 2012);
-                step(f, Op::Copy(ValueType::Float), &[45, 643], 2013);
-                step(f, Op::Copy(ValueType::Vec3), &[391, 360], 2014);
-                step(f, Op::SubV, &[358, 359, 361], 2015);
-                step(f, Op::DeltaTime, &[644], 2016);
-                step(f, Op::DivF, &[643, 644, 645], 2017);
-                step(f, Op::ScaleV, &[361, 645, 362], 2018);
-                step(f, Op::AddV, &[358, 362, 363], 2019);
-                step(f, Op::AddV, &[359, 362, 364], 2020);
-                step(f, Op::SubV, &[357, 364, 365], 2021);
-                step(f, Op::FloatLerp, &[680, 682, 642, 646], 2022);
-                step(f, Op::SubF, &[682, 646, 647], 2023);
-                step(f, Op::ScaleV, &[365, 647, 366], 2024);
-                step(f, Op::AddV, &[363, 366, 368], 2025);
-                step(f, Op::MulF, &[642, 644, 648], 2026);
-                step(f, Op::GreaterF, &[648, 680, 74], 2027);
-                step(f, Op::DivF, &[646, 648, 649], 2028);
-                step(f, Op::Select(ValueType::Float), &[74, 649, 682, 650], 2029);
-                step(f, Op::ScaleV, &[361, 650, 367], 2030);
-                step(f, Op::SubV, &[368, 367, 369], 2031);
-                step(f, Op::Copy(ValueType::Vec3), &[369, 360], 2032);
-                step(f, Op::Jump, &[2033], 2033)
+            1982 => {
+                step(f, Op::Jump, &[1970], 1983)
             }
-            2033 => {
-                step(f, Op::BreakVector, &[360, 651, 652, 653], 2034);
-                step(f, Op::Select(ValueType::Float), &[1, 615, 651, 654], 2035);
-                step(f, Op::Copy(ValueType::Float), &[654, 15], 2036);
-                step(f, Op::Copy(ValueType::Float), &[615, 16], 2037);
-                step(f, Op::GetTransform, &[47, 65, 80, 103], 2038);
-                step(f, Op::BreakTransform, &[103, 370, 86, 371], 2039);
-                step(f, Op::MakeVector, &[680, 680, 15, 372], 2040);
-                step(f, Op::SubV, &[370, 372, 373], 2041);
-                step(f, Op::MakeTransform, &[373, 86, 392, 104], 2042);
-                step(f, Op::SetTransform, &[48, 104, 65, 79, 682], 2043);
-                step(f, Op::JumpIfFalse, &[8, 2051], 2044)
+            1983 => {
+                step(f, Op::Select(ValueType::Float), &[83, 675, 804, 680], 1984);
+                step(f, Op::ClampF, &[680, 57, 58, 681], 1985);
+                step(f, Op::Copy(ValueType::Float), &[681, 674], 1986);
+                step(f, Op::Jump, &[1987], 1987)
             }
-            2044 => {
-                step(f, Op::GetTransform, &[47, 65, 80, 103], 2045);
-                step(f, Op::BreakTransform, &[103, 370, 86, 371], 2046);
-                step(f, Op::MakeVector, &[680, 680, 15, 372], 2047);
-                step(f, Op::SubV, &[370, 372, 373], 2048);
-                step(f, Op::MakeTransform, &[373, 86, 392, 104], 2049);
-                step(f, Op::DrawTransform, &[104, 699, 681], 2050);
-                step(f, Op::Jump, &[2051], 2051)
+            1987 => {
+                step(f, Op::SubF, &[806, 19, 673], 1988);
+                step(f, Op::MulF, &[674, 673, 682], 1989);
+                step(f, Op::MakeVector, &[14, 804, 804, 336], 1990);
+                step(f, Op::MakeVector, &[682, 804, 804, 337], 1991);
+                step(f, Op::Select(ValueType::Float), &[2, 682, 15, 683], 1992);
+                step(f, Op::MakeVector, &[683, 804, 804, 338], 1993);
+                step(f, Op::Copy(ValueType::Vec3), &[336, 339], 1994);
+                step(f, Op::Copy(ValueType::Vec3), &[337, 340], 1995);
+                step(f, Op::Copy(ValueType::Vec3), &[338, 341], 1996);
+                step(f, Op::Copy(ValueType::Float), &[46, 684], 1997);
+                step(f, Op::Copy(ValueType::Float), &[47, 685], 1998);
+                step(f, Op::Copy(ValueType::Vec3), &[420, 342], 1999);
+                step(f, Op::SubV, &[340, 341, 343], 2000);
+                step(f, Op::DeltaTime, &[686], 2001);
+                step(f, Op::DivF, &[685, 686, 687], 2002);
+                step(f, Op::ScaleV, &[343, 687, 344], 2003);
+                step(f, Op::AddV, &[340, 344, 345], 2004);
+                step(f, Op::AddV, &[341, 344, 346], 2005);
+                step(f, Op::SubV, &[339, 346, 347], 2006);
+                step(f, Op::FloatLerp, &[804, 806, 684, 688], 2007);
+                step(f, Op::SubF, &[806, 688, 689], 2008);
+                step(f, Op::ScaleV, &[347, 689, 348], 2009);
+                step(f, Op::AddV, &[345, 348, 350], 2010);
+                step(f, Op::MulF, &[684, 686, 690], 2011);
+                step(f, Op::GreaterF, &[690, 804, 87], 2012);
+                step(f, Op::DivF, &[688, 690, 691], 2013);
+                step(f, Op::Select(ValueType::Float), &[87, 691, 806, 692], 2014);
+                step(f, Op::ScaleV, &[343, 692, 349], 2015);
+                step(f, Op::SubV, &[350, 349, 351], 2016);
+                step(f, Op::Copy(ValueType::Vec3), &[351, 342], 2017);
+                step(f, Op::Jump, &[2018], 2018)
             }
-            2051 => {
-                step(f, Op::Copy(ValueType::Array(Elem::Bone)), &[0, 6], 2052);
-                step(f, Op::Copy(ValueType::Int), &[65, 8], 2053);
-                2053
+            2018 => {
+                step(f, Op::BreakVector, &[342, 693, 694, 695], 2019);
+                step(f, Op::Select(ValueType::Float), &[1, 682, 693, 696], 2020);
+                step(f, Op::Copy(ValueType::Float), &[696, 14], 2021);
+                step(f, Op::Copy(ValueType::Float), &[682, 15], 2022);
+                step(f, Op::GetTransform, &[37, 72, 98, 91], 2023);
+                step(f, Op::BreakTransform, &[91, 364, 72, 365], 2024);
+                step(f, Op::PelvisLean, &[1, 103, 108, 109, 712, 713], 2025);
+                step(f, Op::LengthV, &[2, 672], 2026);
+                step(f, Op::RemapF, &[672, 804, 103, 804, 102, 98, 697], 2027);
+                step(f, Op::MulF, &[10, 825, 698], 2028);
+                step(f, Op::SinF, &[698, 699], 2029);
+                step(f, Op::MulF, &[697, 699, 700], 2030);
+                step(f, Op::MulF, &[700, 673, 701], 2031);
+                step(f, Op::AddF, &[701, 14, 702], 2032);
+                step(f, Op::MulF, &[3, 120, 703], 2033);
+                step(f, Op::SubF, &[702, 703, 704], 2034);
+                step(f, Op::MakeVector, &[804, 713, 704, 366], 2035);
+                step(f, Op::AddV, &[364, 366, 367], 2036);
+                step(f, Op::ArrayAt(Elem::Transform), &[6, 72, 87], 2037);
+                step(f, Op::BreakTransform, &[87, 352, 66, 353], 2038);
+                step(f, Op::BreakVector, &[352, 714, 715, 716], 2039);
+                step(f, Op::ArrayAt(Elem::Transform), &[6, 73, 88], 2040);
+                step(f, Op::BreakTransform, &[88, 354, 67, 355], 2041);
+                step(f, Op::BreakVector, &[354, 717, 718, 719], 2042);
+                step(f, Op::SubF, &[716, 719, 720], 2043);
+                step(f, Op::PelvisSideLean, &[720, 110, 111, 721], 2044);
+                step(f, Op::ArrayAt(Elem::Transform), &[5, 72, 89], 2045);
+                step(f, Op::BreakTransform, &[89, 358, 68, 359], 2046);
+                step(f, Op::ArrayAt(Elem::Transform), &[5, 73, 90], 2047);
+                step(f, Op::BreakTransform, &[90, 360, 69, 361], 2048);
+                step(f, Op::SlerpQ, &[68, 69, 805, 70], 2049);
+                step(f, Op::EulerFromQuat, &[70, 72, 362], 2050);
+                step(f, Op::BreakVector, &[362, 708, 709, 710], 2051);
+                step(f, Op::RemapF, &[672, 104, 103, 804, 105, 98, 706], 2052);
+                step(f, Op::SubV, &[352, 354, 356], 2053);
+                step(f, Op::RotateVector, &[0, 424, 357], 2054);
+                step(f, Op::DotV, &[356, 357, 705], 2055);
+                step(f, Op::MulF, &[706, 705, 707], 2056);
+                step(f, Op::AddF, &[710, 707, 711], 2057);
+                step(f, Op::MakeVector, &[712, 721, 711, 363], 2058);
+                step(f, Op::QuatFromEuler, &[363, 72, 71], 2059);
+                step(f, Op::MakeTransform, &[367, 71, 421, 92], 2060);
+                step(f, Op::SetTransform, &[38, 92, 72, 98, 806], 2061);
+                step(f, Op::GetTransform, &[39, 73, 98, 93], 2062);
+                step(f, Op::BreakTransform, &[93, 368, 76, 369], 2063);
+                step(f, Op::LengthV, &[2, 672], 2064);
+                step(f, Op::RemapF, &[672, 104, 103, 804, 105, 98, 706], 2065);
+                step(f, Op::ArrayAt(Elem::Transform), &[6, 72, 87], 2066);
+                step(f, Op::BreakTransform, &[87, 352, 66, 353], 2067);
+                step(f, Op::ArrayAt(Elem::Transform), &[6, 73, 88], 2068);
+                step(f, Op::BreakTransform, &[88, 354, 67, 355], 2069);
+                step(f, Op::SubV, &[352, 354, 356], 2070);
+                step(f, Op::RotateVector, &[0, 424, 357], 2071);
+                step(f, Op::DotV, &[356, 357, 705], 2072);
+                step(f, Op::MulF, &[706, 705, 707], 2073);
+                step(f, Op::QuatFromAxisAngle, &[423, 707, 73], 2074);
+                step(f, Op::DivF, &[106, 810, 722], 2075);
+                step(f, Op::QuatScale, &[73, 722, 74], 2076);
+                step(f, Op::MulQ, &[76, 74, 80], 2077);
+                step(f, Op::MakeTransform, &[368, 80, 421, 97], 2078);
+                step(f, Op::SetTransform, &[40, 97, 73, 98, 806], 2079);
+                step(f, Op::GetTransform, &[41, 73, 98, 94], 2080);
+                step(f, Op::BreakTransform, &[94, 370, 77, 371], 2081);
+                step(f, Op::LengthV, &[2, 672], 2082);
+                step(f, Op::RemapF, &[672, 104, 103, 804, 105, 98, 706], 2083);
+                step(f, Op::ArrayAt(Elem::Transform), &[6, 72, 87], 2084);
+                step(f, Op::BreakTransform, &[87, 352, 66, 353], 2085);
+                step(f, Op::ArrayAt(Elem::Transform), &[6, 73, 88], 2086);
+                step(f, Op::BreakTransform, &[88, 354, 67, 355], 2087);
+                step(f, Op::SubV, &[352, 354, 356], 2088);
+                step(f, Op::RotateVector, &[0, 424, 357], 2089);
+                step(f, Op::DotV, &[356, 357, 705], 2090);
+                step(f, Op::MulF, &[706, 705, 707], 2091);
+                step(f, Op::QuatFromAxisAngle, &[423, 707, 73], 2092);
+                step(f, Op::DivF, &[106, 810, 722], 2093);
+                step(f, Op::QuatScale, &[73, 722, 74], 2094);
+                step(f, Op::MulQ, &[77, 74, 81], 2095);
+                step(f, Op::MakeTransform, &[370, 81, 421, 98], 2096);
+                step(f, Op::SetTransform, &[42, 98, 73, 98, 806], 2097);
+                step(f, Op::GetTransform, &[43, 73, 98, 95], 2098);
+                step(f, Op::BreakTransform, &[95, 372, 78, 373], 2099);
+                step(f, Op::LengthV, &[2, 672], 2100);
+                step(f, Op::RemapF, &[672, 104, 103, 804, 105, 98, 706], 2101);
+                step(f, Op::ArrayAt(Elem::Transform), &[6, 72, 87], 2102);
+                step(f, Op::BreakTransform, &[87, 352, 66, 353], 2103);
+                step(f, Op::ArrayAt(Elem::Transform), &[6, 73, 88], 2104);
+                step(f, Op::BreakTransform, &[88, 354, 67, 355], 2105);
+                step(f, Op::SubV, &[352, 354, 356], 2106);
+                step(f, Op::RotateVector, &[0, 424, 357], 2107);
+                step(f, Op::DotV, &[356, 357, 705], 2108);
+                step(f, Op::MulF, &[706, 705, 707], 2109);
+                step(f, Op::QuatFromAxisAngle, &[423, 707, 73], 2110);
+                step(f, Op::DivF, &[106, 810, 722], 2111);
+                step(f, Op::QuatScale, &[73, 722, 74], 2112);
+                step(f, Op::MulQ, &[78, 74, 82], 2113);
+                step(f, Op::MakeTransform, &[372, 82, 421, 99], 2114);
+                step(f, Op::SetTransform, &[44, 99, 73, 98, 806], 2115);
+                step(f, Op::GetTransform, &[45, 73, 98, 96], 2116);
+                step(f, Op::BreakTransform, &[96, 374, 79, 375], 2117);
+                step(f, Op::LengthV, &[2, 672], 2118);
+                step(f, Op::RemapF, &[672, 104, 103, 804, 105, 98, 706], 2119);
+                step(f, Op::ArrayAt(Elem::Transform), &[6, 72, 87], 2120);
+                step(f, Op::BreakTransform, &[87, 352, 66, 353], 2121);
+                step(f, Op::ArrayAt(Elem::Transform), &[6, 73, 88], 2122);
+                step(f, Op::BreakTransform, &[88, 354, 67, 355], 2123);
+                step(f, Op::SubV, &[352, 354, 356], 2124);
+                step(f, Op::RotateVector, &[0, 424, 357], 2125);
+                step(f, Op::DotV, &[356, 357, 705], 2126);
+                step(f, Op::MulF, &[706, 705, 707], 2127);
+                step(f, Op::QuatFromAxisAngle, &[423, 707, 73], 2128);
+                step(f, Op::QuatScale, &[73, 107, 75], 2129);
+                step(f, Op::MulQ, &[79, 75, 83], 2130);
+                step(f, Op::MakeTransform, &[374, 83, 421, 100], 2131);
+                step(f, Op::SetTransform, &[46, 100, 73, 98, 806], 2132);
+                step(f, Op::Or, &[1, 2, 93], 2133);
+                step(f, Op::Copy(ValueType::Float), &[804, 723], 2134);
+                step(f, Op::Copy(ValueType::Float), &[804, 724], 2135);
+                step(f, Op::Copy(ValueType::Array(Elem::Bone)), &[0, 15], 2136);
+                step(f, Op::Copy(ValueType::Int), &[72, 67], 2137);
+                step(f, Op::SubF, &[806, 13, 756], 2138);
+                2138
             }
-            2053 => {
-                step(f, Op::ForEachNext(Elem::Bone), &[6, 8, 2, 9, 10, 2113], 2054)
+            2138 => {
+                step(f, Op::ForEachNext(Elem::Bone), &[15, 67, 25, 68, 69, 2186], 2139)
             }
-            2054 => {
-                step(f, Op::Copy(ValueType::Bone), &[2, 28], 2055);
-                step(f, Op::Copy(ValueType::Int), &[9, 64], 2056);
-                step(f, Op::GetParent, &[28, 29], 2057);
-                step(f, Op::GetParent, &[29, 30], 2058);
-                step(f, Op::GetTransform, &[30, 65, 80, 105], 2059);
-                step(f, Op::BreakTransform, &[105, 374, 87, 375], 2060);
-                step(f, Op::ArrayAt(Elem::Transform), &[6, 64, 106], 2061);
-                step(f, Op::BreakTransform, &[106, 376, 88, 377], 2062);
-                step(f, Op::SubV, &[376, 374, 378], 2063);
-                step(f, Op::LengthV, &[378, 670], 2064);
-                step(f, Op::ArrayAt(Elem::Float), &[1, 64, 655], 2065);
-                step(f, Op::MulF, &[655, 117, 656], 2066);
-                step(f, Op::ArrayAt(Elem::Bool), &[0, 64, 75], 2067);
-                step(f, Op::ArrayAt(Elem::Float), &[2, 64, 657], 2068);
-                step(f, Op::ClampF, &[657, 680, 682, 658], 2069);
-                step(f, Op::LessF, &[658, 681, 76], 2070);
-                step(f, Op::RemapF, &[658, 119, 120, 680, 682, 79, 661], 2071);
-                step(f, Op::MulF, &[661, 661, 662], 2072);
-                step(f, Op::MulF, &[661, 685, 663], 2073);
-                step(f, Op::SubF, &[686, 663, 664], 2074);
-                step(f, Op::MulF, &[662, 664, 665], 2075);
-                step(f, Op::MulF, &[658, 694, 659], 2076);
-                step(f, Op::SinF, &[659, 660], 2077);
-                step(f, Op::MaxF, &[665, 660, 666], 2078);
-                step(f, Op::Select(ValueType::Float), &[76, 666, 660, 667], 2079);
-                step(f, Op::MulF, &[667, 118, 668], 2080);
-                step(f, Op::Select(ValueType::Float), &[75, 680, 668, 669], 2081);
-                step(f, Op::SubF, &[656, 669, 671], 2082);
-                step(f, Op::SubF, &[670, 671, 672], 2083);
-                step(f, Op::MaxF, &[672, 680, 673], 2084);
-                step(f, Op::MulF, &[673, 673, 674], 2085);
-                step(f, Op::AddF, &[673, 669, 675], 2086);
-                step(f, Op::DivF, &[674, 675, 676], 2087);
-                step(f, Op::SubF, &[670, 676, 677], 2088);
-                step(f, Op::DivF, &[677, 670, 678], 2089);
-                step(f, Op::ScaleV, &[378, 678, 379], 2090);
-                step(f, Op::AddV, &[374, 379, 380], 2091);
-                step(f, Op::ClampSpatially, &[380, 374, 680, 656, 381], 2092);
-                step(f, Op::MakeTransform, &[381, 88, 392, 107], 2093);
-                step(f, Op::Equals(Elem::Int), &[64, 65, 77], 2094);
-                step(f, Op::Select(ValueType::Vec3), &[77, 398, 397, 386], 2095);
-                step(f, Op::Select(ValueType::Vec3), &[77, 395, 399, 387], 2096);
-                step(f, Op::ArrayAt(Elem::Transform), &[5, 64, 108], 2097);
-                step(f, Op::BreakTransform, &[108, 382, 89, 383], 2098);
-                step(f, Op::ArrayAt(Elem::Vec3), &[0, 64, 384], 2099);
-                step(f, Op::KneeVector, &[89, 0, 384, 121, 122, 385], 2100);
-                step(f, Op::TwoBoneIK, &[30, 29, 28, 107, 386, 387, 385, 65, 682, 80, 696, 697, 79, 78, 679], 2101);
-                step(f, Op::JumpIfFalse, &[8, 2112], 2102)
+            2139 => {
+                step(f, Op::ArrayAt(Elem::Bool), &[0, 68, 88], 2140);
+                step(f, Op::GetParent, &[25, 26], 2141);
+                step(f, Op::GetParent, &[26, 27], 2142);
+                step(f, Op::GetTransform, &[27, 72, 99, 101], 2143);
+                step(f, Op::BreakTransform, &[101, 376, 84, 377], 2144);
+                step(f, Op::BreakVector, &[376, 725, 726, 727], 2145);
+                step(f, Op::ArrayAt(Elem::Transform), &[6, 68, 102], 2146);
+                step(f, Op::BreakTransform, &[102, 378, 85, 379], 2147);
+                step(f, Op::BreakVector, &[378, 728, 729, 730], 2148);
+                step(f, Op::ArrayAt(Elem::Float), &[1, 68, 734], 2149);
+                step(f, Op::MulF, &[734, 112, 735], 2150);
+                step(f, Op::MulF, &[735, 735, 736], 2151);
+                step(f, Op::SubF, &[725, 728, 731], 2152);
+                step(f, Op::SubF, &[726, 729, 732], 2153);
+                step(f, Op::MakeVector, &[731, 732, 804, 380], 2154);
+                step(f, Op::DotV, &[380, 380, 733], 2155);
+                step(f, Op::SubF, &[736, 733, 737], 2156);
+                step(f, Op::SqrtF, &[737, 738], 2157);
+                step(f, Op::AddF, &[730, 738, 739], 2158);
+                step(f, Op::SubF, &[727, 739, 740], 2159);
+                step(f, Op::ArrayAt(Elem::Transform), &[3, 68, 103], 2160);
+                step(f, Op::BreakTransform, &[103, 381, 86, 382], 2161);
+                step(f, Op::BreakVector, &[381, 741, 742, 743], 2162);
+                step(f, Op::AddF, &[743, 48, 744], 2163);
+                step(f, Op::MinF, &[730, 744, 745], 2164);
+                step(f, Op::AddF, &[745, 738, 746], 2165);
+                step(f, Op::SubF, &[727, 746, 747], 2166);
+                step(f, Op::Equals(Elem::Int), &[68, 72, 89], 2167);
+                step(f, Op::Select(ValueType::Int), &[89, 73, 72, 70], 2168);
+                step(f, Op::ArrayAt(Elem::Bool), &[0, 70, 90], 2169);
+                step(f, Op::ArrayAt(Elem::Float), &[2, 70, 751], 2170);
+                step(f, Op::RemapF, &[751, 805, 806, 804, 806, 98, 752], 2171);
+                step(f, Op::RemapF, &[751, 804, 115, 806, 804, 98, 753], 2172);
+                step(f, Op::MaxF, &[752, 753, 754], 2173);
+                step(f, Op::Select(ValueType::Float), &[90, 806, 754, 755], 2174);
+                step(f, Op::MulF, &[755, 756, 757], 2175);
+                step(f, Op::LerpF, &[740, 747, 757, 758], 2176);
+                step(f, Op::ArrayAt(Elem::Float), &[2, 68, 748], 2177);
+                step(f, Op::RemapF, &[748, 805, 806, 804, 806, 98, 749], 2178);
+                step(f, Op::MulF, &[758, 749, 759], 2179);
+                step(f, Op::RemapF, &[748, 804, 115, 806, 804, 98, 750], 2180);
+                step(f, Op::MulF, &[740, 750, 760], 2181);
+                step(f, Op::MaxF, &[759, 760, 761], 2182);
+                step(f, Op::Select(ValueType::Float), &[88, 740, 761, 762], 2183);
+                step(f, Op::MaxF, &[724, 762, 763], 2184);
+                step(f, Op::Copy(ValueType::Float), &[763, 724], 2185);
+                step(f, Op::Jump, &[2138], 2186)
             }
-            2102 => {
-                step(f, Op::GetParent, &[28, 29], 2103);
-                step(f, Op::GetTransform, &[29, 65, 80, 109], 2104);
-                step(f, Op::BreakTransform, &[109, 388, 90, 389], 2105);
-                step(f, Op::ArrayAt(Elem::Transform), &[5, 64, 108], 2106);
-                step(f, Op::BreakTransform, &[108, 382, 89, 383], 2107);
-                step(f, Op::ArrayAt(Elem::Vec3), &[0, 64, 384], 2108);
-                step(f, Op::KneeVector, &[89, 0, 384, 121, 122, 385], 2109);
-                step(f, Op::AddV, &[388, 385, 390], 2110);
-                step(f, Op::DrawLine, &[388, 390, 681, 400], 2111);
-                step(f, Op::Jump, &[2112], 2112)
+            2186 => {
+                step(f, Op::ClampF, &[724, 804, 113, 764], 2187);
+                step(f, Op::Copy(ValueType::Float), &[764, 723], 2188);
+                step(f, Op::Jump, &[2189], 2189)
             }
-            2112 => {
-                step(f, Op::Jump, &[2053], 2113)
+            2189 => {
+                step(f, Op::MakeVector, &[16, 804, 804, 383], 2190);
+                step(f, Op::MakeVector, &[723, 804, 804, 384], 2191);
+                step(f, Op::MakeVector, &[17, 804, 804, 385], 2192);
+                step(f, Op::GreaterF, &[723, 16, 91], 2193);
+                step(f, Op::Select(ValueType::Float), &[91, 117, 114, 765], 2194);
+                step(f, Op::Copy(ValueType::Vec3), &[383, 386], 2195);
+                step(f, Op::Copy(ValueType::Vec3), &[384, 387], 2196);
+                step(f, Op::Copy(ValueType::Vec3), &[385, 388], 2197);
+                step(f, Op::Copy(ValueType::Float), &[765, 766], 2198);
+                step(f, Op::Copy(ValueType::Float), &[47, 767], 2199);
+                step(f, Op::Copy(ValueType::Vec3), &[420, 389], 2200);
+                step(f, Op::SubV, &[387, 388, 390], 2201);
+                step(f, Op::DeltaTime, &[768], 2202);
+                step(f, Op::DivF, &[767, 768, 769], 2203);
+                step(f, Op::ScaleV, &[390, 769, 391], 2204);
+                step(f, Op::AddV, &[387, 391, 392], 2205);
+                step(f, Op::AddV, &[388, 391, 393], 2206);
+                step(f, Op::SubV, &[386, 393, 394], 2207);
+                step(f, Op::FloatLerp, &[804, 806, 766, 770], 2208);
+                step(f, Op::SubF, &[806, 770, 771], 2209);
+                step(f, Op::ScaleV, &[394, 771, 395], 2210);
+                step(f, Op::AddV, &[392, 395, 397], 2211);
+                step(f, Op::MulF, &[766, 768, 772], 2212);
+                step(f, Op::GreaterF, &[772, 804, 92], 2213);
+                step(f, Op::DivF, &[770, 772, 773], 2214);
+                step(f, Op::Select(ValueType::Float), &[92, 773, 806, 774], 2215);
+                step(f, Op::ScaleV, &[390, 774, 396], 2216);
+                step(f, Op::SubV, &[397, 396, 398], 2217);
+                step(f, Op::Copy(ValueType::Vec3), &[398, 389], 2218);
+                step(f, Op::Jump, &[2219], 2219)
             }
-            2113 => {
-                step(f, Op::End, &[], 2114)
+            2219 => {
+                step(f, Op::BreakVector, &[389, 775, 776, 777], 2220);
+                step(f, Op::Select(ValueType::Float), &[93, 723, 775, 778], 2221);
+                step(f, Op::Copy(ValueType::Float), &[778, 16], 2222);
+                step(f, Op::Copy(ValueType::Float), &[723, 17], 2223);
+                step(f, Op::GetTransform, &[47, 72, 99, 104], 2224);
+                step(f, Op::BreakTransform, &[104, 399, 87, 400], 2225);
+                step(f, Op::MakeVector, &[804, 804, 16, 401], 2226);
+                step(f, Op::SubV, &[399, 401, 402], 2227);
+                step(f, Op::MakeTransform, &[402, 87, 421, 105], 2228);
+                step(f, Op::SetTransform, &[48, 105, 72, 98, 806], 2229);
+                step(f, Op::JumpIfFalse, &[8, 2237], 2230)
+            }
+            2230 => {
+                step(f, Op::GetTransform, &[47, 72, 99, 104], 2231);
+                step(f, Op::BreakTransform, &[104, 399, 87, 400], 2232);
+                step(f, Op::MakeVector, &[804, 804, 16, 401], 2233);
+                step(f, Op::SubV, &[399, 401, 402], 2234);
+                step(f, Op::MakeTransform, &[402, 87, 421, 105], 2235);
+                step(f, Op::DrawTransform, &[105, 826, 805], 2236);
+                step(f, Op::Jump, &[2237], 2237)
+            }
+            2237 => {
+                step(f, Op::Copy(ValueType::Array(Elem::Bone)), &[0, 6], 2238);
+                step(f, Op::Copy(ValueType::Int), &[72, 8], 2239);
+                2239
+            }
+            2239 => {
+                step(f, Op::ForEachNext(Elem::Bone), &[6, 8, 2, 9, 10, 2299], 2240)
+            }
+            2240 => {
+                step(f, Op::Copy(ValueType::Bone), &[2, 28], 2241);
+                step(f, Op::Copy(ValueType::Int), &[9, 71], 2242);
+                step(f, Op::GetParent, &[28, 29], 2243);
+                step(f, Op::GetParent, &[29, 30], 2244);
+                step(f, Op::GetTransform, &[30, 72, 99, 106], 2245);
+                step(f, Op::BreakTransform, &[106, 403, 88, 404], 2246);
+                step(f, Op::ArrayAt(Elem::Transform), &[6, 71, 107], 2247);
+                step(f, Op::BreakTransform, &[107, 405, 89, 406], 2248);
+                step(f, Op::SubV, &[405, 403, 407], 2249);
+                step(f, Op::LengthV, &[407, 794], 2250);
+                step(f, Op::ArrayAt(Elem::Float), &[1, 71, 779], 2251);
+                step(f, Op::MulF, &[779, 123, 780], 2252);
+                step(f, Op::ArrayAt(Elem::Bool), &[0, 71, 94], 2253);
+                step(f, Op::ArrayAt(Elem::Float), &[2, 71, 781], 2254);
+                step(f, Op::ClampF, &[781, 804, 806, 782], 2255);
+                step(f, Op::LessF, &[782, 805, 95], 2256);
+                step(f, Op::RemapF, &[782, 125, 126, 804, 806, 98, 785], 2257);
+                step(f, Op::MulF, &[785, 785, 786], 2258);
+                step(f, Op::MulF, &[785, 809, 787], 2259);
+                step(f, Op::SubF, &[810, 787, 788], 2260);
+                step(f, Op::MulF, &[786, 788, 789], 2261);
+                step(f, Op::MulF, &[782, 814, 783], 2262);
+                step(f, Op::SinF, &[783, 784], 2263);
+                step(f, Op::MaxF, &[789, 784, 790], 2264);
+                step(f, Op::Select(ValueType::Float), &[95, 790, 784, 791], 2265);
+                step(f, Op::MulF, &[791, 124, 792], 2266);
+                step(f, Op::Select(ValueType::Float), &[94, 804, 792, 793], 2267);
+                step(f, Op::SubF, &[780, 793, 795], 2268);
+                step(f, Op::SubF, &[794, 795, 796], 2269);
+                step(f, Op::MaxF, &[796, 804, 797], 2270);
+                step(f, Op::MulF, &[797, 797, 798], 2271);
+                step(f, Op::AddF, &[797, 793, 799], 2272);
+                step(f, Op::DivF, &[798, 799, 800], 2273);
+                step(f, Op::SubF, &[794, 800, 801], 2274);
+                step(f, Op::DivF, &[801, 794, 802], 2275);
+                step(f, Op::ScaleV, &[407, 802, 408], 2276);
+                step(f, Op::AddV, &[403, 408, 409], 2277);
+                step(f, Op::ClampSpatially, &[409, 403, 804, 780, 410], 2278);
+                step(f, Op::MakeTransform, &[410, 89, 421, 108], 2279);
+                step(f, Op::Equals(Elem::Int), &[71, 72, 96], 2280);
+                step(f, Op::Select(ValueType::Vec3), &[96, 427, 426, 415], 2281);
+                step(f, Op::Select(ValueType::Vec3), &[96, 424, 428, 416], 2282);
+                step(f, Op::ArrayAt(Elem::Transform), &[5, 71, 109], 2283);
+                step(f, Op::BreakTransform, &[109, 411, 90, 412], 2284);
+                step(f, Op::ArrayAt(Elem::Vec3), &[0, 71, 413], 2285);
+                step(f, Op::KneeVector, &[90, 0, 413, 127, 128, 414], 2286);
+                step(f, Op::TwoBoneIK, &[30, 29, 28, 108, 415, 416, 414, 72, 806, 99, 823, 824, 98, 97, 803], 2287);
+                step(f, Op::JumpIfFalse, &[8, 2298], 2288)
+            }
+            2288 => {
+                step(f, Op::GetParent, &[28, 29], 2289);
+                step(f, Op::GetTransform, &[29, 72, 99, 110], 2290);
+                step(f, Op::BreakTransform, &[110, 417, 91, 418], 2291);
+                step(f, Op::ArrayAt(Elem::Transform), &[5, 71, 109], 2292);
+                step(f, Op::BreakTransform, &[109, 411, 90, 412], 2293);
+                step(f, Op::ArrayAt(Elem::Vec3), &[0, 71, 413], 2294);
+                step(f, Op::KneeVector, &[90, 0, 413, 127, 128, 414], 2295);
+                step(f, Op::AddV, &[417, 414, 419], 2296);
+                step(f, Op::DrawLine, &[417, 419, 805, 429], 2297);
+                step(f, Op::Jump, &[2298], 2298)
+            }
+            2298 => {
+                step(f, Op::Jump, &[2239], 2299)
+            }
+            2299 => {
+                step(f, Op::End, &[], 2300)
             }
             _ => return,
         } };
