@@ -10,17 +10,18 @@
 //! allocation.
 
 // Implementing `GlobalAlloc` is an `unsafe impl`; each method only forwards the caller's
-// arguments, unchanged, to the system allocator, whose contract the caller upholds. No
+// arguments, unchanged, to mimalloc, whose contract the caller upholds. No
 // allocation crate offers a counter that is switched on for a time span across threads
 // without also replacing the allocator, so this is written here.
 #![allow(unsafe_code)]
 
-use std::alloc::{GlobalAlloc, Layout, System};
+use mimalloc::MiMalloc;
+use std::alloc::{GlobalAlloc, Layout};
 use std::cell::Cell;
 use std::sync::atomic::{AtomicBool, AtomicU64, AtomicUsize, Ordering};
 
-/// The system allocator, counting allocations while `strider bench` times frames. Install
-/// it as the binary's `#[global_allocator]`.
+/// mimalloc, counting allocations while `strider bench` times frames. Install it as the
+/// binary's `#[global_allocator]`.
 pub struct CountingAllocator;
 
 static COUNTING: AtomicBool = AtomicBool::new(false);
@@ -52,24 +53,24 @@ unsafe impl GlobalAlloc for CountingAllocator {
     unsafe fn alloc(&self, layout: Layout) -> *mut u8 {
         note();
         // SAFETY: forwarded unchanged from the caller, who upholds `alloc`'s contract.
-        unsafe { System.alloc(layout) }
+        unsafe { MiMalloc.alloc(layout) }
     }
 
     unsafe fn alloc_zeroed(&self, layout: Layout) -> *mut u8 {
         note();
         // SAFETY: as above.
-        unsafe { System.alloc_zeroed(layout) }
+        unsafe { MiMalloc.alloc_zeroed(layout) }
     }
 
     unsafe fn realloc(&self, ptr: *mut u8, layout: Layout, new_size: usize) -> *mut u8 {
         note();
-        // SAFETY: as above; `ptr` was allocated by this allocator, i.e. by `System`.
-        unsafe { System.realloc(ptr, layout, new_size) }
+        // SAFETY: as above; `ptr` was allocated by this allocator, i.e. by `MiMalloc`.
+        unsafe { MiMalloc.realloc(ptr, layout, new_size) }
     }
 
     unsafe fn dealloc(&self, ptr: *mut u8, layout: Layout) {
         // SAFETY: as above.
-        unsafe { System.dealloc(ptr, layout) }
+        unsafe { MiMalloc.dealloc(ptr, layout) }
     }
 }
 

@@ -238,6 +238,12 @@ pub(crate) fn run(args: &BenchArgs) -> anyhow::Result<ExitCode> {
                 .context("cannot start the worker threads")
         })
         .collect::<anyhow::Result<_>>()?;
+    // A pool's threads start on their own time, and each allocates its job queue as it
+    // starts: wait until every worker of every pool has run a job, so none is still starting
+    // while frames are counted (the one-thread row runs outside the pools, alongside them).
+    for pool in &pools {
+        pool.broadcast(|_| ());
+    }
 
     // Warm-up: both crowds run the same frames, so they stay in step.
     let warm_up = args.warm_up.unwrap_or(track.inputs.len() as u32);
