@@ -1,72 +1,24 @@
 //! Sphere traces against the shipped scenario worlds: `World::sphere_trace` (bounding-box
 //! culling, closed-form ball sweeps) against parry3d's general cast of the same ball over
-//! the same shapes, built here from the world's descriptions — the baseline, measured in the
-//! same run. 64 traces per iteration, each a 3 cm ball swept from 50 cm above the ground to
+//! the same shapes (`ShapeDesc::collision_shapes`) — the baseline, measured in the same
+//! run. 64 traces per iteration, each a 3 cm ball swept from 50 cm above the ground to
 //! 50 cm below it at points spread over the scenario's walk, as a foot's landing grid
 //! traces them.
 //!
 //! Run: `cargo bench --bench traces` (see docs/performance.md).
 
 use criterion::{Criterion, criterion_group, criterion_main};
-use glam::{Quat, Vec3};
+use glam::Vec3;
 use parry3d::math::Pose;
 use parry3d::query::{ShapeCastOptions, cast_shapes};
-use parry3d::shape::{Ball, SharedShape, TriMesh};
+use parry3d::shape::{Ball, SharedShape};
 use std::hint::black_box;
 use strider::WorldQuery;
 use strider::host::scenario::Scenario;
-use strider::host::world::{ShapeDesc, World};
+use strider::host::world::World;
 
 /// Ball radius of the landing traces, cm.
 const RADIUS: f32 = 3.0;
-
-/// The parry3d shapes of a description, placed in the world.
-fn parry_shapes(desc: &ShapeDesc) -> Vec<(Pose, SharedShape)> {
-    match desc {
-        ShapeDesc::Ground { height } => vec![(
-            Pose::from_translation(Vec3::new(0.0, 0.0, *height)),
-            SharedShape::halfspace(Vec3::Z),
-        )],
-        ShapeDesc::Ramp { start, yaw, .. } => {
-            let hull = SharedShape::convex_hull(&desc.ramp_corners().expect("a ramp"))
-                .expect("a ramp's hull");
-            let pose = Pose::from_parts(
-                Vec3::new(start.0, start.1, start.2),
-                Quat::from_rotation_z(yaw.to_radians()),
-            );
-            vec![(pose, hull)]
-        }
-        ShapeDesc::Heightfield { cells, .. } => {
-            let (nx, ny) = *cells;
-            let mut vertices = Vec::new();
-            for j in 0..=ny {
-                for i in 0..=nx {
-                    vertices.extend(desc.heightfield_vertex(i, j));
-                }
-            }
-            let mut indices = Vec::new();
-            for j in 0..ny {
-                for i in 0..nx {
-                    let v00 = j * (nx + 1) + i;
-                    indices.push([v00, v00 + 1, v00 + nx + 2]);
-                    indices.push([v00, v00 + nx + 2, v00 + nx + 1]);
-                }
-            }
-            let mesh = TriMesh::new(vertices, indices).expect("a heightfield mesh");
-            vec![(Pose::IDENTITY, SharedShape::new(mesh))]
-        }
-        _ => desc
-            .solid_boxes()
-            .map(|b| {
-                let h = b.half_extents;
-                (
-                    Pose::from_parts(b.center, b.rotation),
-                    SharedShape::cuboid(h.x, h.y, h.z),
-                )
-            })
-            .collect(),
-    }
-}
 
 /// The nearest hit of a ball swept over every shape with parry3d's cast: the baseline.
 fn parry_sweep(shapes: &[(Pose, SharedShape)], start: Vec3, end: Vec3) -> Option<f32> {
@@ -107,7 +59,7 @@ fn traces(c: &mut Criterion) {
             .world
             .shapes
             .iter()
-            .flat_map(parry_shapes)
+            .flat_map(|desc| desc.collision_shapes().expect("a shipped shape builds"))
             .collect();
         // 64 sweeps over the first 10 m along +Y, 0–35 cm to the side.
         let sweeps: Vec<(Vec3, Vec3)> = (0..64)

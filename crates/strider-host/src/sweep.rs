@@ -134,7 +134,7 @@ fn box_normal(at: Vec3, half: Vec3) -> Vec3 {
 
 /// A ball of `radius` swept from `start` along `dir` for `length`, against the two-sided
 /// triangle `corners`.
-pub(crate) fn ball_triangle_sweep(
+fn ball_triangle_sweep(
     start: Vec3,
     dir: Vec3,
     length: f32,
@@ -191,8 +191,20 @@ pub(crate) fn ball_hull_sweep(
     }
     // From outside, the ball meets the hull's surface first; the triangles' edges inside a
     // face (its diagonals) lie within the grown hull, so they never come first.
+    ball_triangles_sweep(start, dir, length, radius, triangles.iter().copied())
+}
+
+/// A ball of `radius` swept from `start` along `dir` for `length`, against each of
+/// `triangles` (two-sided): the nearest hit (the first of equals), or an overlap with any.
+pub(crate) fn ball_triangles_sweep(
+    start: Vec3,
+    dir: Vec3,
+    length: f32,
+    radius: f32,
+    triangles: impl IntoIterator<Item = [Vec3; 3]>,
+) -> BallSweep {
     let mut nearest = BallSweep::Miss;
-    for &corners in triangles {
+    for corners in triangles {
         match ball_triangle_sweep(start, dir, length, radius, corners) {
             BallSweep::Overlap => return BallSweep::Overlap,
             BallSweep::Hit { distance, normal } => {

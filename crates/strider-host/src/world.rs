@@ -51,7 +51,7 @@ use serde::de::{self, Deserializer, SeqAccess, Visitor};
 use strider_core::{TraceHit, WorldQuery};
 
 use crate::sweep::{
-    BallSweep, ball_box_sweep, ball_half_space_sweep, ball_hull_sweep, ball_triangle_sweep,
+    BallSweep, ball_box_sweep, ball_half_space_sweep, ball_hull_sweep, ball_triangles_sweep,
 };
 
 /// How far [`World::ground_height`] looks below its start point, centimetres.
@@ -325,6 +325,59 @@ impl ShapeDesc {
             .unwrap_or(0.0);
         let z = origin.2 + explicit + wave_height(waves, (origin.0, origin.1), x, y);
         Some(Vec3::new(x, y, z))
+    }
+
+    /// The parry3d shapes this description collides as, placed in world space (cm): a
+    /// half-space for the ground, a cuboid per solid box (a stair flight's steps, a
+    /// platform), a convex hull for a ramp, a triangle mesh for a heightfield (two triangles
+    /// per cell, counter-clockwise seen from above, so normals point up). An error message
+    /// when parry3d cannot build one (a degenerate ramp).
+    pub fn collision_shapes(&self) -> Result<Vec<(Pose, SharedShape)>, String> {
+        let shapes = match self {
+            ShapeDesc::Ground { height } => vec![(
+                Pose::from_translation(Vec3::new(0.0, 0.0, *height)),
+                SharedShape::halfspace(Vec3::Z),
+            )],
+            ShapeDesc::Box { .. } | ShapeDesc::Stairs { .. } | ShapeDesc::Platform { .. } => self
+                .solid_boxes()
+                .map(|b| {
+                    let h = b.half_extents;
+                    (
+                        Pose::from_parts(b.center, b.rotation),
+                        SharedShape::cuboid(h.x, h.y, h.z),
+                    )
+                })
+                .collect(),
+            ShapeDesc::Ramp { start, yaw, .. } => {
+                let local = self.ramp_corners().unwrap_or_default();
+                let shape = SharedShape::convex_hull(&local)
+                    .ok_or("the ramp is degenerate (check length, width and angle)")?;
+                vec![(pose(v3(*start), *yaw), shape)]
+            }
+            ShapeDesc::Heightfield { cells, .. } => {
+                let (nx, ny) = (cells.0 as usize, cells.1 as usize);
+                let mut vertices = Vec::with_capacity((nx + 1) * (ny + 1));
+                for j in 0..=cells.1 {
+                    for i in 0..=cells.0 {
+                        vertices.extend(self.heightfield_vertex(i, j));
+                    }
+                }
+                let mut indices = Vec::with_capacity(nx * ny * 2);
+                for j in 0..ny {
+                    for i in 0..nx {
+                        let v00 = (j * (nx + 1) + i) as u32;
+                        let v10 = v00 + 1;
+                        let v01 = v00 + nx as u32 + 1;
+                        let v11 = v01 + 1;
+                        indices.push([v00, v10, v11]);
+                        indices.push([v00, v11, v01]);
+                    }
+                }
+                let mesh = TriMesh::new(vertices, indices).map_err(|e| format!("{e:?}"))?;
+                vec![(Pose::IDENTITY, SharedShape::new(mesh))]
+            }
+        };
+        Ok(shapes)
     }
 
     /// The variant's name as written in RON.
@@ -654,41 +707,27 @@ impl Collider {
                 .map(|distance| SweepHit { distance, normal }),
             ),
             &Form::Box { half } => {
-                let local_start = self.pose.inverse_transform_point(start);
-                let local_dir = self.pose.rotation.inverse() * dir;
+                let (local_start, local_dir) = self.to_local(start, dir);
                 self.found(ball_box_sweep(local_start, local_dir, length, radius, half))
             }
             Form::Mesh => {
                 let mesh = self.shape.as_trimesh()?;
-                let local_start = self.pose.inverse_transform_point(start);
-                let local_dir = self.pose.rotation.inverse() * dir;
-                let local_end = local_start + local_dir * length;
-                let reach = Aabb::new(
-                    local_start.min(local_end) - radius,
-                    local_start.max(local_end) + radius,
-                );
-                let mut nearest = BallSweep::Miss;
-                for i in mesh.bvh().intersect_aabb(&reach) {
+                let (local_start, local_dir) = self.to_local(start, dir);
+                let reach = ball_reach(local_start, local_start + local_dir * length, radius);
+                let near = mesh.bvh().intersect_aabb(&reach).map(|i| {
                     let t = mesh.triangle(i);
-                    match ball_triangle_sweep(
-                        local_start,
-                        local_dir,
-                        length,
-                        radius,
-                        [t.a, t.b, t.c],
-                    ) {
-                        BallSweep::Overlap => return None,
-                        BallSweep::Hit { distance, .. } if matches!(nearest, BallSweep::Hit { distance: d, .. } if d <= distance) =>
-                            {}
-                        hit @ BallSweep::Hit { .. } => nearest = hit,
-                        BallSweep::Miss => {}
-                    }
-                }
-                self.found(nearest)
+                    [t.a, t.b, t.c]
+                });
+                self.found(ball_triangles_sweep(
+                    local_start,
+                    local_dir,
+                    length,
+                    radius,
+                    near,
+                ))
             }
             Form::Hull { triangles, planes } => {
-                let local_start = self.pose.inverse_transform_point(start);
-                let local_dir = self.pose.rotation.inverse() * dir;
+                let (local_start, local_dir) = self.to_local(start, dir);
                 self.found(ball_hull_sweep(
                     local_start,
                     local_dir,
@@ -700,6 +739,15 @@ impl Collider {
             }
             Form::Other => None,
         }
+    }
+
+    /// A world-space point and unit direction in this shape's own frame.
+    #[inline]
+    fn to_local(&self, point: Vec3, dir: Vec3) -> (Vec3, Vec3) {
+        (
+            self.pose.inverse_transform_point(point),
+            self.pose.rotation.inverse() * dir,
+        )
     }
 
     /// A closed-form answer in this shape's frame as a world-space hit; `None` for an
@@ -714,6 +762,11 @@ impl Collider {
             BallSweep::Overlap => None,
         }
     }
+}
+
+/// The box a ball of `radius` sweeps through moving from `start` to `end`.
+fn ball_reach(start: Vec3, end: Vec3, radius: f32) -> Aabb {
+    Aabb::new(start.min(end) - radius, start.max(end) + radius)
 }
 
 /// The closed-form description of a convex hull from its surface triangles (its own frame):
@@ -793,11 +846,15 @@ impl World {
                     kind: shape.kind(),
                     message,
                 })?;
-            build_shape(shape, &mut shapes).map_err(|message| WorldError::Geometry {
-                index,
-                kind: shape.kind(),
-                message,
-            })?;
+            shapes.extend(
+                shape
+                    .collision_shapes()
+                    .map_err(|message| WorldError::Geometry {
+                        index,
+                        kind: shape.kind(),
+                        message,
+                    })?,
+            );
         }
         Ok(World::with_shapes(desc.clone(), shapes))
     }
@@ -850,13 +907,11 @@ impl World {
         let mut shapes = Vec::new();
         let mut kept = Vec::new();
         for shape in &desc.shapes {
-            if shape.validate().is_ok() {
-                let before = shapes.len();
-                if build_shape(shape, &mut shapes).is_ok() {
-                    kept.push(shape.clone());
-                } else {
-                    shapes.truncate(before);
-                }
+            if shape.validate().is_ok()
+                && let Ok(built) = shape.collision_shapes()
+            {
+                shapes.extend(built);
+                kept.push(shape.clone());
             }
         }
         World::with_shapes(WorldDesc { shapes: kept }, shapes)
@@ -934,7 +989,7 @@ impl World {
         };
         let end = start + delta;
         let reach = if let Some(radius) = ball_radius {
-            Aabb::new(start.min(end) - radius, start.max(end) + radius)
+            ball_reach(start, end, radius)
         } else {
             let local = shape.compute_local_aabb();
             Aabb::new(start + local.mins, start + local.maxs)
@@ -1016,57 +1071,6 @@ pub(crate) fn describe_ron_error(code: &ron::Error) -> (String, String) {
         }
     };
     (message, help)
-}
-
-/// Appends the collision shapes of one description.
-fn build_shape(desc: &ShapeDesc, out: &mut Vec<(Pose, SharedShape)>) -> Result<(), String> {
-    match desc {
-        ShapeDesc::Ground { height } => {
-            out.push((
-                Pose::from_translation(Vec3::new(0.0, 0.0, *height)),
-                SharedShape::halfspace(Vec3::Z),
-            ));
-        }
-        ShapeDesc::Box { .. } | ShapeDesc::Stairs { .. } | ShapeDesc::Platform { .. } => {
-            for b in desc.solid_boxes() {
-                let h = b.half_extents;
-                out.push((
-                    Pose::from_parts(b.center, b.rotation),
-                    SharedShape::cuboid(h.x, h.y, h.z),
-                ));
-            }
-        }
-        ShapeDesc::Ramp { start, yaw, .. } => {
-            let local = desc.ramp_corners().unwrap_or_default();
-            let shape = SharedShape::convex_hull(&local)
-                .ok_or("the ramp is degenerate (check length, width and angle)")?;
-            out.push((pose(v3(*start), *yaw), shape));
-        }
-        ShapeDesc::Heightfield { cells, .. } => {
-            let (nx, ny) = (cells.0 as usize, cells.1 as usize);
-            let mut vertices = Vec::with_capacity((nx + 1) * (ny + 1));
-            for j in 0..=cells.1 {
-                for i in 0..=cells.0 {
-                    vertices.extend(desc.heightfield_vertex(i, j));
-                }
-            }
-            let mut indices = Vec::with_capacity(nx * ny * 2);
-            for j in 0..ny {
-                for i in 0..nx {
-                    let v00 = (j * (nx + 1) + i) as u32;
-                    let v10 = v00 + 1;
-                    let v01 = v00 + nx as u32 + 1;
-                    let v11 = v01 + 1;
-                    // Counter-clockwise seen from above: normals point up.
-                    indices.push([v00, v10, v11]);
-                    indices.push([v00, v11, v01]);
-                }
-            }
-            let mesh = TriMesh::new(vertices, indices).map_err(|e| format!("{e:?}"))?;
-            out.push((Pose::IDENTITY, SharedShape::new(mesh)));
-        }
-    }
-    Ok(())
 }
 
 impl WorldQuery for World {
