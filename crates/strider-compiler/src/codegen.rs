@@ -1033,4 +1033,76 @@ mod tests {
         assert_eq!(get("Sum"), Value::Float(1200.0));
         assert_eq!(get("Last"), Value::Float(402.0));
     }
+
+    /// A mutating node edits only its array target in place: a scalar it reads, from a
+    /// pure node or a variable, ends no kept value, so invariant values are hoisted out of
+    /// a loop whose body edits an array, and kept after it.
+    const HOIST_PAST_EDITS: &str = r#"Graph(
+        version: 1,
+        name: "hoist_past_edits",
+        variables: {
+            "Arr": (type: FloatArray, default: [0.0, 0.0, 0.0]),
+            "Scale": (type: Float, default: 2.0),
+            "Out": (type: Float),
+            "First": (type: Float),
+        },
+        nodes: {
+            "probe": SphereTrace(start: (0.0, 0.0, 100.0), end: (0.0, 0.0, -100.0), radius: 5.0),
+            "step": Multiply(a: "probe.distance", b: var("Scale")),
+            "k": ToFloat(value: "i"),
+            "value": Add(a: "k", b: "step"),
+            "half": Multiply(a: "step", b: 0.5),
+            "first": At(array: var("Arr"), index: 0),
+        },
+        events: {
+            forward: [
+                Set("First", "first"),
+                For(count: 3, index: "i", body: [
+                    SetAt(array: var("Arr"), index: "i", value: "value"),
+                ]),
+                Set("Out", "half"),
+                Set("First", "first"),
+            ],
+        },
+    )"#;
+
+    #[test]
+    fn array_edits_end_only_the_values_that_read_the_array() {
+        use strider_nodes::Op;
+        let program = crate::compile_str(Path::new("hoist_past_edits.ron"), HOIST_PAST_EDITS)
+            .expect("compiles");
+        let code = program.code();
+        let trace = code.iter().position(|i| i.op == Op::SphereTrace);
+        let head = code.iter().position(|i| i.op == Op::ForNext);
+        assert_eq!(
+            code.iter().filter(|i| i.op == Op::SphereTrace).count(),
+            1,
+            "traced once: before the loop, and kept after it"
+        );
+        assert!(trace < head, "{trace:?} {head:?}");
+        // `first` reads the array the loop edits: read again after it.
+        assert_eq!(
+            code.iter()
+                .filter(|i| i.op == Op::ArrayAt(strider_nodes::Elem::Float))
+                .count(),
+            2
+        );
+        let mut instance = Instance::new(Arc::new(program.clone()), skeleton()).expect("instance");
+        instance.run_forward(&FrameInput::default(), &EmptyWorld, false);
+        let get = |name: &str| instance.variable(program.variable_id(name).expect(name));
+        // A miss reports the trace's length, 200; step = 400; the elements 400, 401, 402.
+        assert_eq!(
+            get("Arr"),
+            Value::Array(
+                strider_nodes::Elem::Float,
+                vec![
+                    Value::Float(400.0),
+                    Value::Float(401.0),
+                    Value::Float(402.0)
+                ]
+            )
+        );
+        assert_eq!(get("Out"), Value::Float(200.0));
+        assert_eq!(get("First"), Value::Float(400.0));
+    }
 }

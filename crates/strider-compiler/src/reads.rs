@@ -116,13 +116,14 @@ impl Writes {
                         let node = &body.nodes[*n];
                         match node.kind {
                             NodeKind::Builtin(op) => {
-                                for a in &node.inputs {
+                                // Only arrays are edited in place (a node's `target` pins,
+                                // which the checker requires to be variables); a scalar
+                                // input is only read.
+                                for a in node.inputs.iter().filter(|a| a.ty.is_array()) {
                                     match a.src {
                                         Src::Global(g) => self.vars.push(VarRef::Global(g)),
                                         Src::Local(l) => self.vars.push(VarRef::Local(l)),
-                                        Src::Node { .. } if a.ty.elem().is_some() => {
-                                            self.everything = true;
-                                        }
+                                        Src::Node { .. } => self.everything = true,
                                         _ => {}
                                     }
                                 }
