@@ -14,9 +14,15 @@
 //!   gives position `k` (every access asserts its bound in debug builds, where the test
 //!   suite runs every op).
 //!
+//! Instructions and their operand windows are fetched without bounds checks too:
+//! `ProgramBuilder::finish` makes sure every jump target and event entry is an
+//! instruction, that the last instruction cannot fall through past the end, and pads the
+//! operand list by `MAX_OPERANDS` past every instruction's first operand.
+//!
 //! Array slots, bones, names and the elements of arrays keep their bounds checks.
 
-// Unchecked slot access (see above) is this module's only unsafe code.
+// Unchecked slot access and instruction fetch (see above) are this module's only unsafe
+// code.
 #![allow(unsafe_code)]
 
 use crate::program::{Instr, Program};
@@ -721,7 +727,9 @@ fn run_loop<const PROFILE: bool>(
     loop {
         #[cfg(feature = "profile")]
         let here = pc;
-        let Instr { op, args } = code[pc];
+        // SAFETY: `pc` is an instruction: the entry and every jump target are (checked by
+        // `ProgramBuilder::finish`), and the last instruction cannot fall through.
+        let Instr { op, args } = unsafe { *code.get_unchecked(pc) };
         pc += 1;
         macro_rules! jump {
             ($target:expr) => {
@@ -738,12 +746,14 @@ fn run_loop<const PROFILE: bool>(
                 return;
             }};
         }
-        // A window of constant length (the operand list is padded at its end): one bounds
-        // check here instead of one per operand read.
+        // A window of constant length: the operand list is padded at its end by
+        // `MAX_OPERANDS`, past every instruction's first operand.
         let args = args as usize;
+        debug_assert!(args + MAX_OPERANDS <= operands.len());
         execute!(
             op,
-            &operands[args..args + MAX_OPERANDS],
+            // SAFETY: in bounds by the padding (above).
+            unsafe { operands.get_unchecked(args..args + MAX_OPERANDS) },
             &mut *s,
             cx,
             jump,

@@ -55,8 +55,6 @@ mod tests {
     fn slot_operands_past_the_end_get_slots() {
         // Scalar slots are indexed unchecked: `finish` must give every slot operand a slot,
         // even one a hand-built program names without allocating it.
-        use std::sync::Arc;
-        use strider_core::{Bone, Skeleton, Transform};
         use strider_nodes::{Op, Value};
         let mut pb = ProgramBuilder::new("past_the_end");
         let two = pb.constant(&Value::Float(2.0), "");
@@ -70,17 +68,69 @@ mod tests {
         let program = pb.finish();
         assert_eq!(program.initial_slots().floats.len(), 41);
         assert_eq!(program.initial_slots().vec3s.len(), 10);
-        let skeleton = Skeleton::new(vec![Bone {
-            name: "root".to_string(),
-            parent: None,
-            rest_local: Transform::IDENTITY,
-        }])
-        .expect("valid skeleton");
         let mut instance =
-            Instance::new(Arc::new(program), Arc::new(skeleton)).expect("instantiates");
+            Instance::new(std::sync::Arc::new(program), one_bone()).expect("instantiates");
         instance.run_forward(&FrameInput::default(), &EmptyWorld, false);
         assert_eq!(instance.slots().floats[40], 5.0);
         assert_eq!(instance.slots().vec3s[9], glam::Vec3::new(2.0, 3.0, 5.0));
+    }
+
+    fn one_bone() -> std::sync::Arc<strider_core::Skeleton> {
+        use strider_core::{Bone, Skeleton, Transform};
+        std::sync::Arc::new(
+            Skeleton::new(vec![Bone {
+                name: "root".to_string(),
+                parent: None,
+                rest_local: Transform::IDENTITY,
+            }])
+            .expect("valid skeleton"),
+        )
+    }
+
+    #[test]
+    fn a_program_that_could_run_past_its_end_gets_an_end() {
+        // Instructions are fetched unchecked: `finish` must end every program with an
+        // instruction that cannot fall through, including an empty one.
+        use strider_nodes::{Op, Value};
+        let empty = ProgramBuilder::new("empty").finish();
+        assert_eq!(empty.code().len(), 1);
+        assert_eq!(empty.code()[0].op, Op::End);
+
+        let mut pb = ProgramBuilder::new("falls_through");
+        let two = pb.constant(&Value::Float(2.0), "");
+        let sum = pb.alloc(strider_nodes::ValueType::Float);
+        pb.set_forward_entry(pb.here());
+        pb.emit(Op::AddF, &[two, two, sum]);
+        let program = pb.finish();
+        assert_eq!(program.code().len(), 2);
+        assert_eq!(program.code()[1].op, Op::End);
+        let mut instance =
+            Instance::new(std::sync::Arc::new(program), one_bone()).expect("instantiates");
+        instance.run_forward(&FrameInput::default(), &EmptyWorld, false);
+        assert_eq!(instance.slots().floats[sum as usize], 4.0);
+
+        // A program already ending in `End` or `Jump` is left as it is.
+        let mut pb = ProgramBuilder::new("ends");
+        pb.emit(Op::Jump, &[0]);
+        assert_eq!(pb.finish().code().len(), 1);
+    }
+
+    #[test]
+    #[should_panic(expected = "jumps to 7, past the 2 instructions")]
+    fn a_jump_past_the_end_is_refused() {
+        use strider_nodes::Op;
+        let mut pb = ProgramBuilder::new("bad_jump");
+        pb.emit(Op::Jump, &[7]);
+        pb.emit(Op::End, &[]);
+        let _ = pb.finish();
+    }
+
+    #[test]
+    #[should_panic(expected = "the forward entry 5 is not one of the 1 instructions")]
+    fn an_entry_past_the_end_is_refused() {
+        let mut pb = ProgramBuilder::new("bad_entry");
+        pb.set_forward_entry(5);
+        let _ = pb.finish();
     }
 
     #[test]

@@ -478,24 +478,47 @@ impl ProgramBuilder {
     /// type, adding zeroed slots if an operand names one past the end (the compiler's
     /// programs never do).
     ///
+    /// The executor also fetches instructions without bounds checks, so a program whose
+    /// last instruction could fall through past its end (anything but `End` or `Jump`, or
+    /// no instruction at all) gets an `End` appended.
+    ///
     /// # Panics
     /// If an instruction's op has no operand layout (an op no node compiles to and the
-    /// compiler does not emit): a program built that way could not be run safely.
+    /// compiler does not emit), or a jump target or an event's entry is not an instruction
+    /// of the program: a program built that way could not be run safely.
     #[must_use]
     pub fn finish(mut self) -> Program {
+        if !matches!(
+            self.program.code.last().map(|i| i.op),
+            Some(Op::End | Op::Jump)
+        ) {
+            self.emit(Op::End, &[]);
+        }
         // The executor reads every instruction's operands as a window of MAX_OPERANDS.
         let p = &mut self.program;
         p.operands
             .extend(std::iter::repeat_n(0, strider_nodes::MAX_OPERANDS));
-        for instr in &p.code {
+        let len = p.code.len();
+        for (name, entry) in [("construction", p.construction), ("forward", p.forward)] {
+            assert!(
+                (entry as usize) < len,
+                "the {name} entry {entry} is not one of the {len} instructions"
+            );
+        }
+        for (pc, instr) in p.code.iter().enumerate() {
             let layout = instr
                 .op
                 .operands()
                 .unwrap_or_else(|| panic!("{:?} has no operand layout", instr.op));
             for (k, operand) in layout.into_iter().enumerate() {
-                if let Operand::Slot(ty) = operand {
-                    p.initial
-                        .cover_slot(ty, p.operands[instr.args as usize + k]);
+                let value = p.operands[instr.args as usize + k];
+                match operand {
+                    Operand::Slot(ty) => p.initial.cover_slot(ty, value),
+                    Operand::Target => assert!(
+                        (value as usize) < len,
+                        "instruction {pc} ({:?}) jumps to {value}, past the {len} instructions",
+                        instr.op
+                    ),
                 }
             }
         }
