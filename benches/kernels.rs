@@ -26,7 +26,7 @@ fn mannequin() -> Arc<Skeleton> {
 }
 
 /// Scalar and vector math kernels with fallbacks (division, trigonometry in degrees,
-/// remap, clamps).
+/// remap, smooth step, clamps).
 fn math(c: &mut Criterion) {
     let mut g = c.benchmark_group("math");
     let (a, b) = (black_box(37.5_f32), black_box(-12.25_f32));
@@ -38,6 +38,9 @@ fn math(c: &mut Criterion) {
     });
     g.bench_function("remap", |x| {
         x.iter(|| k::remap(black_box(a), 0.0, 100.0, -1.0, 1.0, true))
+    });
+    g.bench_function("smooth_step", |x| {
+        x.iter(|| k::smooth_step(black_box(a), 20.0, 60.0))
     });
     g.bench_function("unit_v", |x| x.iter(|| k::unit_v(black_box(v))));
     g.bench_function("clamp_length", |x| {

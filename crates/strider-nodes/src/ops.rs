@@ -123,6 +123,8 @@ pub enum Op {
     LerpF,
     /// Linear remap.
     RemapF,
+    /// Smooth Hermite step.
+    SmoothStepF,
     /// Float → Int, truncating.
     ToInt,
     /// Int → Float.

@@ -609,6 +609,23 @@ fn build() -> Vec<NodeSpec> {
             vec![output("result", F, "The mapped value.")],
         )],
     );
+    b.pure(
+        "SmoothStep",
+        "Eases from 0 to 1 as `value` goes from `min` to `max`: `t²·(3 − 2t)` with `t` the \
+         clamped linear position in the range (GLSL's `smoothstep`), so the result and its \
+         slope have no step at either end. `min > max` runs it backwards; a zero-width \
+         range or a NaN gives 0.",
+        r#""ease": SmoothStep(value: "alpha", min: 0.0, max: 0.3),"#,
+        vec![ov(
+            Op::SmoothStepF,
+            vec![
+                input("value", F, "The value to ease."),
+                opt("min", f0(), "Where the result starts rising from 0."),
+                opt("max", Value::Float(1.0), "Where the result reaches 1."),
+            ],
+            vec![output("result", F, "The eased weight, 0..1.")],
+        )],
+    );
 
     b.category = "Logic";
     for (name, op, doc, example) in [

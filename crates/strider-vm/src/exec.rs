@@ -232,6 +232,7 @@ macro_rules! execute {
             Op::RoundF => f!(1) = f!(0).round(),
             Op::LerpF => f!(3) = f!(0) + (f!(1) - f!(0)) * f!(2),
             Op::RemapF => f!(6) = k::remap(f!(0), f!(1), f!(2), f!(3), f!(4), b!(5)),
+            Op::SmoothStepF => f!(3) = k::smooth_step(f!(0), f!(1), f!(2)),
             Op::ToInt => i!(1) = k::to_int(f!(0)),
 
             Op::AddI => i!(2) = i!(0).wrapping_add(i!(1)),

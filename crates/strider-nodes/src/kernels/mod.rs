@@ -88,6 +88,22 @@ pub fn remap(value: f32, in_min: f32, in_max: f32, out_min: f32, out_max: f32, c
     out_min + (out_max - out_min) * t
 }
 
+/// Smooth Hermite step of `value` over `[min, max]`: with `t = clamp((value − min) /
+/// (max − min), 0, 1)`, returns `t²·(3 − 2t)` — 0 at and below `min`, 1 at and above
+/// `max`, with zero slope at both ends (GLSL's `smoothstep`). `min > max` runs the ramp
+/// backwards; a zero-width range gives 0 (as [`remap`] gives its output start), and so
+/// does a NaN anywhere (`t` is clamped as [`clamp_f`] clamps). Unitless.
+#[must_use]
+#[inline]
+pub fn smooth_step(value: f32, min: f32, max: f32) -> f32 {
+    let width = max - min;
+    if width == 0.0 {
+        return 0.0;
+    }
+    let t = clamp_f((value - min) / width, 0.0, 1.0);
+    (t * t) * (3.0 - t * 2.0)
+}
+
 /// Sine of degrees.
 #[must_use]
 #[inline]
@@ -337,6 +353,26 @@ mod tests {
         assert_eq!(fract(1.25), 0.25);
         assert_eq!(fract(-0.25), 0.75);
         assert!(fract(-1e-9) < 1.0);
+    }
+
+    #[test]
+    fn smooth_step_by_hand() {
+        // t²(3 − 2t): t = 1/4 → 1/16 · 5/2 = 5/32; t = 3/4 → 9/16 · 3/2 = 27/32 (exact).
+        assert_eq!(smooth_step(0.25, 0.0, 1.0), 0.156_25);
+        assert_eq!(smooth_step(0.5, 0.0, 1.0), 0.5);
+        assert_eq!(smooth_step(30.0, 20.0, 60.0), 0.156_25);
+        assert_eq!(smooth_step(50.0, 20.0, 60.0), 0.843_75);
+        // Clamped outside the range; backwards when min > max.
+        assert_eq!(smooth_step(-5.0, 20.0, 60.0), 0.0);
+        assert_eq!(smooth_step(75.0, 20.0, 60.0), 1.0);
+        assert_eq!(smooth_step(30.0, 60.0, 20.0), 0.843_75);
+        // Zero slope at both ends: a step of 1e-3 of the range moves it by about 3e-6.
+        assert!(smooth_step(20.04, 20.0, 60.0) < 4e-6);
+        assert!(1.0 - smooth_step(59.96, 20.0, 60.0) < 4e-6);
+        // A zero-width range gives 0, and so does a NaN.
+        assert_eq!(smooth_step(5.0, 1.0, 1.0), 0.0);
+        assert_eq!(smooth_step(f32::NAN, 0.0, 1.0), 0.0);
+        assert_eq!(smooth_step(0.5, f32::NAN, 1.0), 0.0);
     }
 
     #[test]
