@@ -332,15 +332,11 @@ fn sphere_traces_onto_the_ground_agree_with_parry3d() {
     // the independent reference, on 2000 random sweeps (some start inside the ground, some
     // move away from it, some stop short of it).
     use parry3d::math::Pose;
-    use parry3d::query::{ShapeCastOptions, cast_shapes};
-    use parry3d::shape::{Ball, HalfSpace};
+    use parry3d::shape::HalfSpace;
     let height = 12.5;
     let w = world("(shapes: [Ground(height: 12.5)])");
-    let mut seed = 0x2545_f491_u32;
-    let mut next = || {
-        seed = seed.wrapping_mul(1_664_525).wrapping_add(1_013_904_223);
-        (seed >> 8) as f32 / (1u32 << 24) as f32
-    };
+    let ground = Pose::from_translation(Vec3::new(0.0, 0.0, height));
+    let mut next = uniform(0x2545_f491);
     let mut hits = 0;
     for _ in 0..2000 {
         let start = Vec3::new(
@@ -358,21 +354,7 @@ fn sphere_traces_onto_the_ground_agree_with_parry3d() {
         let ours = w.sphere_trace(start, end, radius);
         let delta = end - start;
         let length = delta.length();
-        let reference = cast_shapes(
-            &Pose::from_translation(start),
-            delta / length,
-            &Ball::new(radius),
-            &Pose::from_translation(Vec3::new(0.0, 0.0, height)),
-            Vec3::ZERO,
-            &HalfSpace::new(Vec3::Z),
-            ShapeCastOptions {
-                max_time_of_impact: length,
-                target_distance: 0.0,
-                stop_at_penetration: true,
-                compute_impact_geometry_on_penetration: true,
-            },
-        )
-        .expect("supported pair");
+        let reference = parry_ball_cast(start, end, radius, &ground, &HalfSpace::new(Vec3::Z));
         match (ours, reference) {
             (Some(hit), Some(r)) => {
                 hits += 1;
@@ -404,6 +386,37 @@ fn uniform(seed: u32) -> impl FnMut() -> f32 {
     }
 }
 
+/// parry3d's cast of a ball of `radius` from `start` to `end` against `shape` at `pose`,
+/// stopping at a penetration: the independent reference for the world's sphere traces.
+fn parry_ball_cast(
+    start: Vec3,
+    end: Vec3,
+    radius: f32,
+    pose: &parry3d::math::Pose,
+    shape: &dyn parry3d::shape::Shape,
+) -> Option<parry3d::query::ShapeCastHit> {
+    use parry3d::math::Pose;
+    use parry3d::query::{ShapeCastOptions, cast_shapes};
+    use parry3d::shape::Ball;
+    let delta = end - start;
+    let length = delta.length();
+    cast_shapes(
+        &Pose::from_translation(start),
+        delta / length,
+        &Ball::new(radius),
+        pose,
+        Vec3::ZERO,
+        shape,
+        ShapeCastOptions {
+            max_time_of_impact: length,
+            target_distance: 0.0,
+            stop_at_penetration: true,
+            compute_impact_geometry_on_penetration: true,
+        },
+    )
+    .expect("supported pair")
+}
+
 /// Compares the world's sphere traces with parry3d's cast of a ball against `reference`
 /// (placed at `pose`) on `count` random sweeps from `start_box` (centre, half size) moved by
 /// up to `reach`. Both must agree on hit or miss. parry3d's cast is iterative: it stops
@@ -424,9 +437,6 @@ fn agree_with_parry(
     seed: u32,
     min_hits: usize,
 ) {
-    use parry3d::math::Pose;
-    use parry3d::query::{ShapeCastOptions, cast_shapes};
-    use parry3d::shape::Ball;
     let mut next = uniform(seed);
     let mut hits = 0;
     for _ in 0..count {
@@ -437,21 +447,7 @@ fn agree_with_parry(
         let ours = w.sphere_trace(start, end, radius);
         let delta = end - start;
         let length = delta.length();
-        let cast = cast_shapes(
-            &Pose::from_translation(start),
-            delta / length,
-            &Ball::new(radius),
-            pose,
-            Vec3::ZERO,
-            reference,
-            ShapeCastOptions {
-                max_time_of_impact: length,
-                target_distance: 0.0,
-                stop_at_penetration: true,
-                compute_impact_geometry_on_penetration: true,
-            },
-        )
-        .expect("supported pair");
+        let cast = parry_ball_cast(start, end, radius, pose, reference);
         match (ours, cast) {
             (Some(hit), Some(r)) => {
                 hits += 1;
