@@ -164,11 +164,64 @@ struct Frame {
     body: Option<usize>,
     node_out: Vec<Vec<u32>>,
     node_state: Vec<Vec<u32>>,
+    /// Where the body reads each input: its own slot, or the argument's slot at the call
+    /// being emitted (see [`Gen::node_code`]).
     inputs: Vec<u32>,
+    /// The inputs' own slots, which a call copies its arguments into.
+    own_inputs: Vec<u32>,
     outputs: Vec<u32>,
+    /// Where the body reads each local: its own slot, or its default's constant slot for a
+    /// local the body never writes.
     locals: Vec<u32>,
     loops: Vec<LoopSlots>,
     callees: FxHashMap<usize, usize>,
+    /// The pin table entries of the inputs and locals (functions only), in that order.
+    pins: Vec<usize>,
+}
+
+/// What a function's body does with its locals and outputs, for the code of a call.
+struct CallFacts {
+    /// Per local: some step sets it or a mutating node edits it in place.
+    local_written: Vec<bool>,
+    /// Per output: every way out of the body returns a value for it (the body ends in a
+    /// `Return` and every `Return` gives it), so a call need not zero it first.
+    output_always_returned: Vec<bool>,
+}
+
+impl CallFacts {
+    fn of(body: &Body) -> Self {
+        let mut writes = Writes::default();
+        writes.collect(body, &body.exec);
+        let local_written = (0..body.locals.len())
+            .map(|l| writes.vars.contains(&VarRef::Local(l)))
+            .collect();
+        let ends_in_return = matches!(body.exec.last(), Some(CStep::Return(_)));
+        let mut returns: Vec<&[(usize, Arg)]> = Vec::new();
+        let mut lists: Vec<&[CStep]> = vec![&body.exec];
+        while let Some(list) = lists.pop() {
+            for step in list {
+                match step {
+                    CStep::Return(values) => returns.push(values),
+                    CStep::Branch {
+                        then, otherwise, ..
+                    } => {
+                        lists.push(then);
+                        lists.push(otherwise);
+                    }
+                    CStep::ForEach { body: b, .. } | CStep::For { body: b, .. } => lists.push(b),
+                    CStep::Sequence(blocks) => lists.extend(blocks.iter().map(Vec::as_slice)),
+                    CStep::Set { .. } | CStep::Exec(_) => {}
+                }
+            }
+        }
+        let output_always_returned = (0..body.outputs.len())
+            .map(|o| ends_in_return && returns.iter().all(|r| r.iter().any(|(i, _)| *i == o)))
+            .collect();
+        Self {
+            local_written,
+            output_always_returned,
+        }
+    }
 }
 
 struct Gen<'a> {
@@ -192,6 +245,12 @@ struct Gen<'a> {
     avail: Vec<FxHashSet<usize>>,
     /// What each pure node's value depends on.
     reads: ReadsTable,
+    /// Per function (as `checked.functions`): what its calls may leave out.
+    call_facts: Vec<CallFacts>,
+    /// The slots of graph variables and of every function local, by type: an argument held
+    /// in one is copied into the function's input (a variable may be set again while the
+    /// body runs, or later in the frame, where the inspector would show its new value).
+    variable_slots: FxHashSet<(ValueType, u32)>,
 }
 
 pub(crate) fn generate(loaded: &LoadedGraph, checked: &Checked) -> Program {
@@ -245,9 +304,12 @@ pub(crate) fn generate(loaded: &LoadedGraph, checked: &Checked) -> Program {
         node_origins: FxHashMap::default(),
         avail: Vec::new(),
         reads: ReadsTable::default(),
+        call_facts: checked.functions.iter().map(CallFacts::of).collect(),
+        variable_slots: FxHashSet::default(),
     };
     for v in &checked.globals {
         let slot = g.pb.alloc(v.ty);
+        g.variable_slots.insert((v.ty, slot));
         g.pb.write(slot, &v.default, &v.location);
         g.globals.push(slot);
         g.pb.variable(VariableInfo {
@@ -279,10 +341,7 @@ pub(crate) fn generate(loaded: &LoadedGraph, checked: &Checked) -> Program {
         }
         let mut rets = Vec::new();
         g.steps(top, steps, doc, &mut rets);
-        let end = g.pb.here();
-        for r in rets {
-            g.pb.patch(r, 0, end);
-        }
+        g.patch_returns(rets);
         let origin = g.pb.intern_origin(InstrOrigin {
             kind: OriginKind::Step,
             node_id: None,
@@ -419,7 +478,8 @@ impl<'a> Gen<'a> {
             }
         }
         for (owner, pin, ty, slot) in entries {
-            self.pb.pin_slot(PinSlot {
+            let is_variable = matches!(owner, PinOwner::FunctionInput | PinOwner::Local);
+            let index = self.pb.pin_slot(PinSlot {
                 call_path: path.to_vec(),
                 function: function.clone(),
                 owner,
@@ -427,6 +487,9 @@ impl<'a> Gen<'a> {
                 ty,
                 slot,
             });
+            if is_variable {
+                self.frames[frame].pins.push(index);
+            }
         }
     }
 
@@ -437,13 +500,18 @@ impl<'a> Gen<'a> {
             None => &self.checked.graph,
             Some(f) => &self.checked.functions[f],
         };
-        let inputs = body.inputs.iter().map(|&t| self.pb.alloc(t)).collect();
+        let inputs: Vec<u32> = body.inputs.iter().map(|&t| self.pb.alloc(t)).collect();
         let outputs = body.outputs.iter().map(|&t| self.pb.alloc(t)).collect();
-        let locals = body
+        let locals: Vec<u32> = body
             .locals
             .iter()
             .map(|(t, _, _)| self.pb.alloc(*t))
             .collect();
+        if function.is_some() {
+            for (&(t, _, _), &slot) in body.locals.iter().zip(&locals) {
+                self.variable_slots.insert((t, slot));
+            }
+        }
         let loops = body
             .loops
             .iter()
@@ -463,11 +531,13 @@ impl<'a> Gen<'a> {
             body: function,
             node_out: Vec::new(),
             node_state: Vec::new(),
+            own_inputs: inputs.clone(),
             inputs,
             outputs,
             locals,
             loops,
             callees: FxHashMap::default(),
+            pins: Vec::new(),
         });
         let node_count = body.nodes.len();
         let mut node_out = Vec::with_capacity(node_count);
@@ -641,20 +711,42 @@ impl<'a> Gen<'a> {
             }
             NodeKind::Call(f) => {
                 let callee = self.frames[frame].callees[&n];
-                let fbody = &self.checked.functions[f];
+                let checked = self.checked;
+                let fbody = &checked.functions[f];
+                // An input reads its argument's slot in place unless that slot is a variable
+                // (see `variable_slots`); nothing else the caller holds can change while the
+                // body runs, and the body cannot write its inputs.
                 for (i, &s) in ins.iter().enumerate() {
-                    let to = self.frames[callee].inputs[i];
-                    self.pb.emit(Op::Copy(fbody.inputs[i]), &[s, to]);
+                    let ty = fbody.inputs[i];
+                    let read = if self.variable_slots.contains(&(ty, s)) {
+                        let own = self.frames[callee].own_inputs[i];
+                        self.pb.emit(Op::Copy(ty), &[s, own]);
+                        own
+                    } else {
+                        s
+                    };
+                    self.frames[callee].inputs[i] = read;
+                    let pin = self.frames[callee].pins[i];
+                    self.pb.move_pin_slot(pin, read);
                 }
                 for (i, &ty) in fbody.outputs.iter().enumerate() {
-                    let zero = self.constant(&ty.zero(), "");
-                    let to = self.frames[callee].outputs[i];
-                    self.pb.emit(Op::Copy(ty), &[zero, to]);
+                    if !self.call_facts[f].output_always_returned[i] {
+                        let zero = self.constant(&ty.zero(), "");
+                        let to = self.frames[callee].outputs[i];
+                        self.pb.emit(Op::Copy(ty), &[zero, to]);
+                    }
                 }
+                // A local the body never writes reads its default's constant in place.
                 for (i, (ty, default, location)) in fbody.locals.iter().enumerate() {
                     let from = self.constant(default, location);
-                    let to = self.frames[callee].locals[i];
-                    self.pb.emit(Op::Copy(*ty), &[from, to]);
+                    if self.call_facts[f].local_written[i] {
+                        let to = self.frames[callee].locals[i];
+                        self.pb.emit(Op::Copy(*ty), &[from, to]);
+                    } else {
+                        self.frames[callee].locals[i] = from;
+                        let pin = self.frames[callee].pins[fbody.inputs.len() + i];
+                        self.pb.move_pin_slot(pin, from);
+                    }
                 }
                 // The inputs were just copied: nothing of an earlier run of the body holds.
                 self.avail[callee].clear();
@@ -662,11 +754,23 @@ impl<'a> Gen<'a> {
                 let exec = &self.checked.functions[f].exec;
                 let doc = &self.fn_decls[f].exec;
                 self.steps(callee, exec, doc, &mut rets);
-                let end = self.pb.here();
-                for r in rets {
-                    self.pb.patch(r, 0, end);
-                }
+                self.patch_returns(rets);
             }
+        }
+    }
+
+    /// Points the jumps of a body's `Return`s (`rets`, in emission order) past its end. A
+    /// body ending in a `Return` would jump to the very next instruction: that jump is
+    /// dropped (it is the last instruction, and nothing was emitted after it that could
+    /// target the position past it).
+    fn patch_returns(&mut self, mut rets: Vec<u32>) {
+        if rets.last().is_some_and(|&r| r + 1 == self.pb.here()) {
+            self.pb.drop_last();
+            rets.pop();
+        }
+        let end = self.pb.here();
+        for r in rets {
+            self.pb.patch(r, 0, end);
         }
     }
 
@@ -910,6 +1014,63 @@ mod tests {
         );
         assert_eq!(read(&[], PinOwner::NodeOutput(3), "z"), Value::Float(3.0));
         assert_eq!(read(&[1], PinOwner::Local, "scratch"), Value::Float(1.5));
+    }
+
+    /// `Bump` sets the variable it may be given; `Maybe` returns a value on one path only.
+    const CALLS: &str = r#"Graph(
+        version: 1,
+        name: "calls",
+        variables: {
+            "A": (type: Float, default: 7.0), "Flag": (type: Bool, default: true),
+            "Seen": (type: Float), "Got": (type: Float),
+        },
+        functions: {
+            "Bump": (
+                inputs: { "x": Float },
+                outputs: { "y": Float },
+                nodes: { "plus": Add(a: "x", b: 1.0) },
+                exec: [ Set("A", 100.0), Return(y: "plus") ],
+            ),
+            "Maybe": (
+                inputs: { "flag": Bool },
+                outputs: { "v": Float },
+                exec: [ Branch(condition: "flag", then: [ Return(v: 5.0) ]) ],
+            ),
+        },
+        nodes: { "bump": Bump(x: var("A")), "maybe": Maybe(flag: var("Flag")) },
+        events: { forward: [ Run("bump"), Set("Seen", "bump.y"), Set("Got", "maybe.v") ] },
+    )"#;
+
+    #[test]
+    fn calls_copy_only_what_the_body_could_see_change() {
+        use strider_nodes::Op;
+        // `Twice` never writes its local and returns on its only path; its first call's
+        // argument is a constant, its second a variable: only the variable is copied in,
+        // besides the two `Return`s and the two `Set`s. Neither call jumps to its end.
+        let program = crate::compile_str(Path::new("pins.ron"), GRAPH).expect("compiles");
+        let copies = program
+            .code()
+            .iter()
+            .filter(|i| matches!(i.op, Op::Copy(_)))
+            .count();
+        assert_eq!(copies, 5, "{:?}", program.code());
+        assert!(!program.code().iter().any(|i| i.op == Op::Jump));
+
+        let program =
+            Arc::new(crate::compile_str(Path::new("calls.ron"), CALLS).expect("compiles"));
+        let mut instance = Instance::new(program.clone(), skeleton()).expect("instance");
+        let var = |name: &str| program.variable_id(name).expect("variable");
+        instance.run_forward(&FrameInput::default(), &EmptyWorld, false);
+        // The body saw A = 7 although it set A to 100 before reading its input.
+        assert_eq!(instance.variable(var("Seen")), Value::Float(8.0));
+        assert_eq!(instance.variable(var("A")), Value::Float(100.0));
+        assert_eq!(instance.variable(var("Got")), Value::Float(5.0));
+        // Leaving without a `Return` gives the output's zero, not the last call's value.
+        instance
+            .set_variable(var("Flag"), &Value::Bool(false))
+            .expect("set");
+        instance.run_forward(&FrameInput::default(), &EmptyWorld, false);
+        assert_eq!(instance.variable(var("Got")), Value::Float(0.0));
     }
 
     /// Pure values are kept between steps only while what they read is unchanged.

@@ -431,6 +431,17 @@ impl ProgramBuilder {
         (self.program.code.len() - 1) as u32
     }
 
+    /// Removes the last instruction emitted (with its operands and origin). Sound only when
+    /// no jump targets the position past it: one that targets its own position lands on
+    /// whatever is emitted next.
+    pub fn drop_last(&mut self) {
+        let p = self.p();
+        if let Some(last) = p.code.pop() {
+            p.operands.truncate(last.args as usize);
+            p.instr_origins.pop();
+        }
+    }
+
     /// The id of `origin` in the program's origin table, adding it if new.
     pub fn intern_origin(&mut self, origin: InstrOrigin) -> OriginId {
         if let Some(&id) = self.origin_ids.get(&origin) {
@@ -449,9 +460,18 @@ impl ProgramBuilder {
     }
 
     /// Records where a pin's value lives (see [`Program::pin_slots`]); never read by the
-    /// executor.
-    pub fn pin_slot(&mut self, entry: PinSlot) {
-        self.p().pin_slots.push(entry);
+    /// executor. Returns the entry's index, for [`ProgramBuilder::move_pin_slot`].
+    pub fn pin_slot(&mut self, entry: PinSlot) -> usize {
+        let pins = &mut self.p().pin_slots;
+        pins.push(entry);
+        pins.len() - 1
+    }
+
+    /// Points pin entry `index` (as returned by [`ProgramBuilder::pin_slot`]) at `slot` of
+    /// the same type: the compiler lets a function input or local read another slot that
+    /// holds the same value instead of a copy of it.
+    pub fn move_pin_slot(&mut self, index: usize, slot: u32) {
+        self.p().pin_slots[index].slot = slot;
     }
 
     /// Sets operand `index` of instruction `at` (used to patch jump targets).
