@@ -14,1866 +14,1949 @@ use strider_vm::native::{Frame, NativeProgram, step};
 /// The forward event of `locomotion`, compiled ahead of time.
 pub static NATIVE: NativeProgram = NativeProgram {
     name: "locomotion",
-    fingerprint: 0x1e548faabcffbc45,
+    fingerprint: 0x3d45f7f7459c763c,
     forward,
 };
 
 fn forward(f: &mut Frame<'_>) {
-    let mut pc: usize = 103;
+    let mut pc: usize = 105;
     loop {
         // SAFETY: each `step` is an instruction of the program this code was generated
         // from, with its own operands; `NATIVE` runs only on that program (fingerprint).
         pc = unsafe { match pc {
-            103 => {
-                step(f, Op::Not, &[0, 9], 104);
-                step(f, Op::Copy(ValueType::Bool), &[9, 1], 105);
-                step(f, Op::WorldTransform, &[12], 106);
-                step(f, Op::BreakTransform, &[12, 33, 7, 34], 107);
-                step(f, Op::Select(ValueType::Transform), &[0, 0, 12, 13], 108);
-                step(f, Op::BreakTransform, &[13, 35, 8, 36], 109);
-                step(f, Op::SubV, &[33, 35, 37], 110);
-                step(f, Op::LengthV, &[37, 142], 111);
-                step(f, Op::GreaterF, &[142, 35, 10], 112);
-                step(f, Op::Copy(ValueType::Bool), &[10, 2], 113);
-                step(f, Op::MakeRelative, &[13, 12, 17], 114);
-                step(f, Op::Select(ValueType::Transform), &[10, 115, 17, 18], 115);
-                step(f, Op::Copy(ValueType::Transform), &[18, 2], 116);
-                step(f, Op::InverseT, &[13, 15], 117);
-                step(f, Op::MulT, &[12, 15, 16], 118);
-                step(f, Op::Copy(ValueType::Transform), &[16, 1], 119);
-                step(f, Op::TransformVector, &[2, 0, 42], 120);
-                step(f, Op::InverseT, &[12, 14], 121);
-                step(f, Op::DeltaTime, &[141], 122);
-                step(f, Op::DivF, &[847, 141, 143], 123);
-                step(f, Op::ScaleV, &[37, 143, 38], 124);
-                step(f, Op::TransformVector, &[14, 38, 39], 125);
-                step(f, Op::BreakVector, &[39, 144, 145, 146], 126);
-                step(f, Op::MakeVector, &[144, 145, 845, 40], 127);
-                step(f, Op::LengthV, &[40, 147], 128);
-                step(f, Op::MulF, &[147, 123, 148], 129);
-                step(f, Op::NegF, &[148, 149], 130);
-                step(f, Op::ClampF, &[146, 149, 148, 150], 131);
-                step(f, Op::MakeVector, &[144, 145, 150, 41], 132);
-                step(f, Op::Select(ValueType::Vec3), &[2, 42, 41, 44], 133);
-                step(f, Op::VectorLerp, &[42, 44, 36, 845, 45], 134);
-                step(f, Op::Copy(ValueType::Vec3), &[45, 0], 135);
-                step(f, Op::TransformVector, &[2, 1, 43], 136);
-                step(f, Op::TransformVector, &[2, 0, 42], 137);
-                step(f, Op::Select(ValueType::Vec3), &[2, 42, 41, 44], 138);
-                step(f, Op::VectorLerp, &[43, 44, 37, 845, 46], 139);
-                step(f, Op::Copy(ValueType::Vec3), &[46, 1], 140);
-                step(f, Op::LengthV, &[44, 157], 141);
-                step(f, Op::Copy(ValueType::Float), &[157, 0], 142);
-                step(f, Op::BreakVector, &[37, 151, 152, 153], 143);
-                step(f, Op::MulF, &[150, 141, 154], 144);
-                step(f, Op::SubF, &[153, 154, 155], 145);
-                step(f, Op::Select(ValueType::Float), &[10, 845, 155, 156], 146);
-                step(f, Op::Copy(ValueType::Float), &[156, 1], 147);
-                step(f, Op::JumpIfFalse, &[2, 162], 148)
-            }
-            148 => {
-                step(f, Op::Copy(ValueType::Array(Elem::Bone)), &[0, 12], 149);
-                step(f, Op::Copy(ValueType::Int), &[71, 17], 150);
-                150
+            105 => {
+                step(f, Op::Not, &[0, 9], 106);
+                step(f, Op::Copy(ValueType::Bool), &[9, 1], 107);
+                step(f, Op::WorldTransform, &[12], 108);
+                step(f, Op::BreakTransform, &[12, 33, 7, 34], 109);
+                step(f, Op::Select(ValueType::Transform), &[0, 0, 12, 13], 110);
+                step(f, Op::BreakTransform, &[13, 35, 8, 36], 111);
+                step(f, Op::SubV, &[33, 35, 37], 112);
+                step(f, Op::LengthV, &[37, 149], 113);
+                step(f, Op::GreaterF, &[149, 35, 10], 114);
+                step(f, Op::Copy(ValueType::Bool), &[10, 2], 115);
+                step(f, Op::MakeRelative, &[13, 12, 17], 116);
+                step(f, Op::Select(ValueType::Transform), &[10, 121, 17, 18], 117);
+                step(f, Op::Copy(ValueType::Transform), &[18, 2], 118);
+                step(f, Op::InverseT, &[13, 15], 119);
+                step(f, Op::MulT, &[12, 15, 16], 120);
+                step(f, Op::Copy(ValueType::Transform), &[16, 1], 121);
+                step(f, Op::TransformVector, &[2, 0, 42], 122);
+                step(f, Op::InverseT, &[12, 14], 123);
+                step(f, Op::DeltaTime, &[148], 124);
+                step(f, Op::DivF, &[888, 148, 150], 125);
+                step(f, Op::ScaleV, &[37, 150, 38], 126);
+                step(f, Op::TransformVector, &[14, 38, 39], 127);
+                step(f, Op::BreakVector, &[39, 151, 152, 153], 128);
+                step(f, Op::MakeVector, &[151, 152, 886, 40], 129);
+                step(f, Op::LengthV, &[40, 154], 130);
+                step(f, Op::MulF, &[154, 130, 155], 131);
+                step(f, Op::NegF, &[155, 156], 132);
+                step(f, Op::ClampF, &[153, 156, 155, 157], 133);
+                step(f, Op::MakeVector, &[151, 152, 157, 41], 134);
+                step(f, Op::Select(ValueType::Vec3), &[2, 42, 41, 44], 135);
+                step(f, Op::VectorLerp, &[42, 44, 36, 886, 45], 136);
+                step(f, Op::Copy(ValueType::Vec3), &[45, 0], 137);
+                step(f, Op::TransformVector, &[2, 1, 43], 138);
+                step(f, Op::TransformVector, &[2, 0, 42], 139);
+                step(f, Op::Select(ValueType::Vec3), &[2, 42, 41, 44], 140);
+                step(f, Op::VectorLerp, &[43, 44, 37, 886, 46], 141);
+                step(f, Op::Copy(ValueType::Vec3), &[46, 1], 142);
+                step(f, Op::LengthV, &[44, 164], 143);
+                step(f, Op::Copy(ValueType::Float), &[164, 0], 144);
+                step(f, Op::BreakVector, &[37, 158, 159, 160], 145);
+                step(f, Op::MulF, &[157, 148, 161], 146);
+                step(f, Op::SubF, &[160, 161, 162], 147);
+                step(f, Op::Select(ValueType::Float), &[10, 886, 162, 163], 148);
+                step(f, Op::Copy(ValueType::Float), &[163, 1], 149);
+                step(f, Op::JumpIfFalse, &[2, 164], 150)
             }
             150 => {
-                step(f, Op::ForEachNext(Elem::Bone), &[12, 17, 13, 18, 19, 160], 151)
+                step(f, Op::Copy(ValueType::Array(Elem::Bone)), &[0, 12], 151);
+                step(f, Op::Copy(ValueType::Int), &[71, 17], 152);
+                152
             }
-            151 => {
-                step(f, Op::ArrayAt(Elem::Transform), &[8, 18, 20], 152);
-                step(f, Op::ArraySetAt(Elem::Transform), &[0, 18, 20], 153);
-                step(f, Op::ArraySetAt(Elem::Transform), &[1, 18, 20], 154);
-                step(f, Op::ArraySetAt(Elem::Transform), &[2, 18, 20], 155);
-                step(f, Op::ArraySetAt(Elem::Transform), &[5, 18, 20], 156);
-                step(f, Op::ArraySetAt(Elem::Transform), &[6, 18, 20], 157);
-                step(f, Op::ArraySetAt(Elem::Transform), &[3, 18, 20], 158);
-                step(f, Op::ArraySetAt(Elem::Transform), &[4, 18, 20], 159);
-                step(f, Op::Jump, &[150], 160)
+            152 => {
+                step(f, Op::ForEachNext(Elem::Bone), &[12, 17, 13, 18, 19, 162], 153)
             }
-            160 => {
-                step(f, Op::Copy(ValueType::Float), &[845, 16], 161);
-                step(f, Op::Jump, &[162], 162)
+            153 => {
+                step(f, Op::ArrayAt(Elem::Transform), &[8, 18, 20], 154);
+                step(f, Op::ArraySetAt(Elem::Transform), &[0, 18, 20], 155);
+                step(f, Op::ArraySetAt(Elem::Transform), &[1, 18, 20], 156);
+                step(f, Op::ArraySetAt(Elem::Transform), &[2, 18, 20], 157);
+                step(f, Op::ArraySetAt(Elem::Transform), &[5, 18, 20], 158);
+                step(f, Op::ArraySetAt(Elem::Transform), &[6, 18, 20], 159);
+                step(f, Op::ArraySetAt(Elem::Transform), &[3, 18, 20], 160);
+                step(f, Op::ArraySetAt(Elem::Transform), &[4, 18, 20], 161);
+                step(f, Op::Jump, &[152], 162)
             }
             162 => {
-                step(f, Op::Copy(ValueType::Transform), &[12, 0], 163);
-                step(f, Op::Copy(ValueType::Bool), &[122, 0], 164);
-                step(f, Op::JumpIfFalse, &[8, 171], 165)
+                step(f, Op::Copy(ValueType::Float), &[886, 16], 163);
+                step(f, Op::Jump, &[164], 164)
             }
-            165 => {
-                step(f, Op::GetTransform, &[33, 71, 122, 19], 166);
-                step(f, Op::BreakTransform, &[19, 47, 9, 48], 167);
-                step(f, Op::ScaleV, &[0, 848, 49], 168);
-                step(f, Op::AddV, &[47, 49, 50], 169);
-                step(f, Op::DrawArrow, &[47, 50, 846, 467], 170);
-                step(f, Op::Jump, &[171], 171)
+            164 => {
+                step(f, Op::Copy(ValueType::Transform), &[12, 0], 165);
+                step(f, Op::Copy(ValueType::Bool), &[125, 0], 166);
+                step(f, Op::JumpIfFalse, &[8, 173], 167)
             }
-            171 => {
-                step(f, Op::Copy(ValueType::Float), &[845, 158], 172);
-                step(f, Op::Copy(ValueType::Float), &[847, 159], 173);
-                step(f, Op::Copy(ValueType::Bool), &[123, 12], 174);
-                step(f, Op::Copy(ValueType::Array(Elem::Transform)), &[8, 9], 175);
-                step(f, Op::Copy(ValueType::Int), &[71, 25], 176);
-                step(f, Op::MakeVector, &[845, 845, 55, 55], 177);
-                177
+            167 => {
+                step(f, Op::GetTransform, &[33, 71, 125, 19], 168);
+                step(f, Op::BreakTransform, &[19, 47, 9, 48], 169);
+                step(f, Op::ScaleV, &[0, 889, 49], 170);
+                step(f, Op::AddV, &[47, 49, 50], 171);
+                step(f, Op::DrawArrow, &[47, 50, 887, 479], 172);
+                step(f, Op::Jump, &[173], 173)
             }
-            177 => {
-                step(f, Op::ForEachNext(Elem::Transform), &[9, 25, 21, 26, 27, 188], 178)
+            173 => {
+                step(f, Op::Copy(ValueType::Float), &[886, 165], 174);
+                step(f, Op::Copy(ValueType::Float), &[888, 166], 175);
+                step(f, Op::Copy(ValueType::Bool), &[126, 12], 176);
+                step(f, Op::Copy(ValueType::Array(Elem::Transform)), &[8, 9], 177);
+                step(f, Op::Copy(ValueType::Int), &[71, 25], 178);
+                step(f, Op::MakeVector, &[886, 886, 57, 55], 179);
+                179
             }
-            178 => {
-                step(f, Op::BreakTransform, &[21, 51, 10, 52], 179);
-                step(f, Op::TransformPoint, &[2, 51, 53], 180);
-                step(f, Op::LerpV, &[53, 51, 847, 54], 181);
-                step(f, Op::AddV, &[54, 55, 56], 182);
-                step(f, Op::SubV, &[54, 55, 57], 183);
-                step(f, Op::LineTrace, &[56, 57, 13, 58, 59, 161], 184);
-                step(f, Op::JumpIfFalse, &[13, 187], 185)
+            179 => {
+                step(f, Op::ForEachNext(Elem::Transform), &[9, 25, 21, 26, 27, 190], 180)
             }
-            185 => {
-                step(f, Op::Copy(ValueType::Bool), &[122, 12], 186);
-                step(f, Op::Jump, &[187], 187)
+            180 => {
+                step(f, Op::BreakTransform, &[21, 51, 10, 52], 181);
+                step(f, Op::TransformPoint, &[2, 51, 53], 182);
+                step(f, Op::LerpV, &[53, 51, 888, 54], 183);
+                step(f, Op::AddV, &[54, 55, 56], 184);
+                step(f, Op::SubV, &[54, 55, 57], 185);
+                step(f, Op::LineTrace, &[56, 57, 13, 58, 59, 168], 186);
+                step(f, Op::JumpIfFalse, &[13, 189], 187)
             }
             187 => {
-                step(f, Op::Jump, &[177], 188)
+                step(f, Op::Copy(ValueType::Bool), &[125, 12], 188);
+                step(f, Op::Jump, &[189], 189)
             }
-            188 => {
-                step(f, Op::Copy(ValueType::Bool), &[12, 11], 189);
-                step(f, Op::Or, &[11, 7, 14], 190);
-                step(f, Op::NotEquals(Elem::Bool), &[14, 5, 15], 191);
-                step(f, Op::JumpIfFalse, &[15, 223], 192)
+            189 => {
+                step(f, Op::Jump, &[179], 190)
             }
-            192 => {
-                step(f, Op::NotEquals(Elem::Bool), &[11, 6, 16], 193);
-                step(f, Op::JumpIfFalse, &[16, 222], 194)
+            190 => {
+                step(f, Op::Copy(ValueType::Bool), &[12, 11], 191);
+                step(f, Op::Or, &[11, 7, 14], 192);
+                step(f, Op::NotEquals(Elem::Bool), &[14, 5, 15], 193);
+                step(f, Op::JumpIfFalse, &[15, 225], 194)
             }
             194 => {
-                step(f, Op::Copy(ValueType::Int), &[1, 24], 195);
-                step(f, Op::Copy(ValueType::Int), &[71, 20], 196);
-                196
+                step(f, Op::NotEquals(Elem::Bool), &[11, 6, 16], 195);
+                step(f, Op::JumpIfFalse, &[16, 224], 196)
             }
             196 => {
-                step(f, Op::ForNext, &[20, 24, 22, 221], 197)
+                step(f, Op::Copy(ValueType::Int), &[1, 24], 197);
+                step(f, Op::Copy(ValueType::Int), &[71, 20], 198);
+                198
             }
-            197 => {
-                step(f, Op::AddF, &[158, 159, 162], 198);
-                step(f, Op::MulF, &[162, 846, 163], 199);
-                step(f, Op::Copy(ValueType::Bool), &[123, 18], 200);
-                step(f, Op::Copy(ValueType::Array(Elem::Transform)), &[8, 10], 201);
-                step(f, Op::Copy(ValueType::Int), &[71, 28], 202);
-                step(f, Op::MakeVector, &[845, 845, 55, 64], 203);
-                203
+            198 => {
+                step(f, Op::ForNext, &[20, 24, 22, 223], 199)
             }
-            203 => {
-                step(f, Op::ForEachNext(Elem::Transform), &[10, 28, 22, 29, 30, 214], 204)
+            199 => {
+                step(f, Op::AddF, &[165, 166, 169], 200);
+                step(f, Op::MulF, &[169, 887, 170], 201);
+                step(f, Op::Copy(ValueType::Bool), &[126, 18], 202);
+                step(f, Op::Copy(ValueType::Array(Elem::Transform)), &[8, 10], 203);
+                step(f, Op::Copy(ValueType::Int), &[71, 28], 204);
+                step(f, Op::MakeVector, &[886, 886, 57, 64], 205);
+                205
             }
-            204 => {
-                step(f, Op::BreakTransform, &[22, 60, 11, 61], 205);
-                step(f, Op::TransformPoint, &[2, 60, 62], 206);
-                step(f, Op::LerpV, &[62, 60, 163, 63], 207);
-                step(f, Op::AddV, &[63, 64, 65], 208);
-                step(f, Op::SubV, &[63, 64, 66], 209);
-                step(f, Op::LineTrace, &[65, 66, 19, 67, 68, 165], 210);
-                step(f, Op::JumpIfFalse, &[19, 213], 211)
+            205 => {
+                step(f, Op::ForEachNext(Elem::Transform), &[10, 28, 22, 29, 30, 216], 206)
             }
-            211 => {
-                step(f, Op::Copy(ValueType::Bool), &[122, 18], 212);
-                step(f, Op::Jump, &[213], 213)
+            206 => {
+                step(f, Op::BreakTransform, &[22, 60, 11, 61], 207);
+                step(f, Op::TransformPoint, &[2, 60, 62], 208);
+                step(f, Op::LerpV, &[62, 60, 170, 63], 209);
+                step(f, Op::AddV, &[63, 64, 65], 210);
+                step(f, Op::SubV, &[63, 64, 66], 211);
+                step(f, Op::LineTrace, &[65, 66, 19, 67, 68, 172], 212);
+                step(f, Op::JumpIfFalse, &[19, 215], 213)
             }
             213 => {
-                step(f, Op::Jump, &[203], 214)
+                step(f, Op::Copy(ValueType::Bool), &[125, 18], 214);
+                step(f, Op::Jump, &[215], 215)
             }
-            214 => {
-                step(f, Op::Copy(ValueType::Bool), &[18, 17], 215);
-                step(f, Op::Equals(Elem::Bool), &[17, 6, 20], 216);
-                step(f, Op::JumpIfFalse, &[20, 219], 217)
+            215 => {
+                step(f, Op::Jump, &[205], 216)
             }
-            217 => {
-                step(f, Op::Copy(ValueType::Float), &[163, 158], 218);
-                step(f, Op::Jump, &[220], 219)
+            216 => {
+                step(f, Op::Copy(ValueType::Bool), &[18, 17], 217);
+                step(f, Op::Equals(Elem::Bool), &[17, 6, 20], 218);
+                step(f, Op::JumpIfFalse, &[20, 221], 219)
             }
             219 => {
-                step(f, Op::Copy(ValueType::Float), &[163, 159], 220);
-                220
-            }
-            220 => {
-                step(f, Op::Jump, &[196], 221)
+                step(f, Op::Copy(ValueType::Float), &[170, 165], 220);
+                step(f, Op::Jump, &[222], 221)
             }
             221 => {
-                step(f, Op::Jump, &[222], 222)
+                step(f, Op::Copy(ValueType::Float), &[170, 166], 222);
+                222
             }
             222 => {
-                step(f, Op::Jump, &[223], 223)
+                step(f, Op::Jump, &[198], 223)
             }
             223 => {
-                step(f, Op::Select(ValueType::Float), &[5, 849, 847, 171], 224);
-                step(f, Op::NotEquals(Elem::Bool), &[11, 6, 16], 225);
-                step(f, Op::AddF, &[158, 159, 162], 226);
-                step(f, Op::MulF, &[162, 846, 166], 227);
-                step(f, Op::Select(ValueType::Float), &[16, 166, 846, 167], 228);
-                step(f, Op::Select(ValueType::Float), &[15, 167, 845, 173], 229);
-                step(f, Op::MulF, &[171, 173, 175], 230);
-                step(f, Op::DeltaTime, &[169], 231);
-                step(f, Op::DivF, &[169, 127, 170], 232);
-                step(f, Op::MulF, &[175, 170, 176], 233);
-                step(f, Op::AddF, &[20, 176, 177], 234);
-                step(f, Op::ClampF, &[177, 845, 847, 178], 235);
-                step(f, Op::Select(ValueType::Float), &[14, 849, 847, 172], 236);
-                step(f, Op::SubF, &[847, 167, 168], 237);
-                step(f, Op::Select(ValueType::Float), &[15, 168, 847, 174], 238);
-                step(f, Op::MulF, &[172, 174, 179], 239);
-                step(f, Op::MulF, &[179, 170, 180], 240);
-                step(f, Op::AddF, &[178, 180, 181], 241);
-                step(f, Op::ClampF, &[181, 845, 847, 182], 242);
-                step(f, Op::SmoothStepF, &[182, 845, 847, 183], 243);
-                step(f, Op::AddF, &[21, 183, 184], 244);
-                step(f, Op::MulF, &[184, 846, 185], 245);
-                step(f, Op::SubF, &[847, 185, 186], 246);
-                step(f, Op::MulF, &[186, 186, 187], 247);
-                step(f, Op::SubF, &[847, 187, 188], 248);
-                step(f, Op::Copy(ValueType::Float), &[188, 22], 249);
-                step(f, Op::Copy(ValueType::Float), &[183, 21], 250);
-                step(f, Op::Copy(ValueType::Float), &[182, 20], 251);
-                step(f, Op::GreaterF, &[21, 845, 21], 252);
-                step(f, Op::TransformVector, &[2, 3, 69], 253);
-                step(f, Op::Select(ValueType::Vec3), &[21, 69, 0, 70], 254);
-                step(f, Op::Copy(ValueType::Vec3), &[70, 3], 255);
-                step(f, Op::LerpV, &[0, 3, 21, 71], 256);
-                step(f, Op::Select(ValueType::Vec3), &[21, 71, 0, 72], 257);
-                step(f, Op::Copy(ValueType::Vec3), &[72, 2], 258);
-                step(f, Op::Copy(ValueType::Bool), &[14, 5], 259);
-                step(f, Op::Copy(ValueType::Bool), &[11, 6], 260);
-                step(f, Op::Copy(ValueType::Bool), &[123, 7], 261);
-                step(f, Op::SubF, &[847, 22, 189], 262);
-                step(f, Op::MulF, &[1, 189, 190], 263);
-                step(f, Op::AddF, &[2, 190, 191], 264);
-                step(f, Op::Copy(ValueType::Float), &[4, 192], 265);
-                step(f, Op::Copy(ValueType::Float), &[5, 193], 266);
-                step(f, Op::Copy(ValueType::Float), &[2, 195], 267);
-                step(f, Op::Copy(ValueType::Float), &[124, 196], 268);
-                step(f, Op::Copy(ValueType::Float), &[49, 197], 269);
-                step(f, Op::SubF, &[191, 195, 202], 270);
-                step(f, Op::DeltaTime, &[200], 271);
-                step(f, Op::DivF, &[202, 200, 203], 272);
-                step(f, Op::MulF, &[203, 197, 204], 273);
-                step(f, Op::AddF, &[191, 204, 206], 274);
-                step(f, Op::MulF, &[203, 850, 207], 275);
-                step(f, Op::DivF, &[851, 196, 201], 276);
-                step(f, Op::DivF, &[207, 201, 208], 277);
-                step(f, Op::SubF, &[206, 208, 222], 278);
-                step(f, Op::AddF, &[195, 204, 205], 279);
-                step(f, Op::SubF, &[192, 205, 209], 280);
-                step(f, Op::AddF, &[209, 208, 210], 281);
-                step(f, Op::SubF, &[193, 203, 211], 282);
-                step(f, Op::MulF, &[201, 210, 212], 283);
-                step(f, Op::AddF, &[211, 212, 213], 284);
-                step(f, Op::MulF, &[213, 200, 216], 285);
-                step(f, Op::AddF, &[210, 216, 217], 286);
-                step(f, Op::FloatLerp, &[845, 847, 201, 214], 287);
-                step(f, Op::SubF, &[847, 214, 215], 288);
-                step(f, Op::MulF, &[217, 215, 218], 289);
-                step(f, Op::AddF, &[222, 218, 223], 290);
-                step(f, Op::Copy(ValueType::Float), &[223, 198], 291);
-                step(f, Op::MulF, &[201, 216, 219], 292);
-                step(f, Op::SubF, &[211, 219, 220], 293);
-                step(f, Op::MulF, &[220, 215, 221], 294);
-                step(f, Op::AddF, &[203, 221, 224], 295);
-                step(f, Op::Copy(ValueType::Float), &[224, 199], 296);
-                step(f, Op::SubF, &[191, 198, 225], 297);
-                step(f, Op::Copy(ValueType::Float), &[225, 3], 298);
-                step(f, Op::Copy(ValueType::Float), &[198, 4], 299);
-                step(f, Op::Copy(ValueType::Float), &[4, 192], 300);
-                step(f, Op::Copy(ValueType::Float), &[5, 193], 301);
-                step(f, Op::Copy(ValueType::Float), &[2, 195], 302);
-                step(f, Op::Copy(ValueType::Float), &[124, 196], 303);
-                step(f, Op::Copy(ValueType::Float), &[49, 197], 304);
-                step(f, Op::SubF, &[191, 195, 202], 305);
-                step(f, Op::DeltaTime, &[200], 306);
-                step(f, Op::DivF, &[202, 200, 203], 307);
-                step(f, Op::MulF, &[203, 197, 204], 308);
-                step(f, Op::AddF, &[191, 204, 206], 309);
-                step(f, Op::MulF, &[203, 850, 207], 310);
-                step(f, Op::DivF, &[851, 196, 201], 311);
-                step(f, Op::DivF, &[207, 201, 208], 312);
-                step(f, Op::SubF, &[206, 208, 222], 313);
-                step(f, Op::AddF, &[195, 204, 205], 314);
-                step(f, Op::SubF, &[192, 205, 209], 315);
-                step(f, Op::AddF, &[209, 208, 210], 316);
-                step(f, Op::SubF, &[193, 203, 211], 317);
-                step(f, Op::MulF, &[201, 210, 212], 318);
-                step(f, Op::AddF, &[211, 212, 213], 319);
-                step(f, Op::MulF, &[213, 200, 216], 320);
-                step(f, Op::AddF, &[210, 216, 217], 321);
-                step(f, Op::FloatLerp, &[845, 847, 201, 214], 322);
-                step(f, Op::SubF, &[847, 214, 215], 323);
-                step(f, Op::MulF, &[217, 215, 218], 324);
-                step(f, Op::AddF, &[222, 218, 223], 325);
-                step(f, Op::Copy(ValueType::Float), &[223, 198], 326);
-                step(f, Op::MulF, &[201, 216, 219], 327);
-                step(f, Op::SubF, &[211, 219, 220], 328);
-                step(f, Op::MulF, &[220, 215, 221], 329);
-                step(f, Op::AddF, &[203, 221, 224], 330);
-                step(f, Op::Copy(ValueType::Float), &[224, 199], 331);
-                step(f, Op::Copy(ValueType::Float), &[199, 5], 332);
-                step(f, Op::Copy(ValueType::Float), &[191, 2], 333);
-                step(f, Op::LengthV, &[4, 227], 334);
-                step(f, Op::GreaterF, &[227, 29, 22], 335);
-                step(f, Op::LengthV, &[2, 228], 336);
-                step(f, Op::GreaterF, &[228, 29, 23], 337);
-                step(f, Op::And, &[22, 23, 25], 338);
-                step(f, Op::Select(ValueType::Vec3), &[22, 4, 466, 73], 339);
-                step(f, Op::MovementAngleOffset, &[73, 14, 845, 852, 852, 853, 40, 854, 229], 340);
-                step(f, Op::Copy(ValueType::Float), &[14, 232], 341);
-                step(f, Op::SubF, &[229, 232, 234], 342);
-                step(f, Op::AddF, &[234, 855, 235], 343);
-                step(f, Op::DivF, &[235, 856, 236], 344);
-                step(f, Op::FractF, &[236, 237], 345);
-                step(f, Op::MulF, &[237, 856, 238], 346);
-                step(f, Op::SubF, &[238, 855, 239], 347);
-                step(f, Op::Copy(ValueType::Float), &[239, 233], 348);
-                step(f, Op::AbsF, &[233, 258], 349);
-                step(f, Op::Select(ValueType::Vec3), &[23, 2, 466, 74], 350);
-                step(f, Op::MovementAngleOffset, &[74, 14, 845, 852, 852, 853, 40, 854, 230], 351);
-                step(f, Op::Copy(ValueType::Float), &[14, 241], 352);
-                step(f, Op::SubF, &[230, 241, 243], 353);
-                step(f, Op::AddF, &[243, 855, 244], 354);
-                step(f, Op::DivF, &[244, 856, 245], 355);
-                step(f, Op::FractF, &[245, 246], 356);
-                step(f, Op::MulF, &[246, 856, 247], 357);
-                step(f, Op::SubF, &[247, 855, 248], 358);
-                step(f, Op::Copy(ValueType::Float), &[248, 242], 359);
-                step(f, Op::AbsF, &[242, 259], 360);
-                step(f, Op::MaxF, &[258, 259, 261], 361);
-                step(f, Op::SubF, &[230, 229, 252], 362);
-                step(f, Op::AddF, &[252, 855, 253], 363);
-                step(f, Op::DivF, &[253, 856, 254], 364);
-                step(f, Op::FractF, &[254, 255], 365);
-                step(f, Op::MulF, &[255, 856, 256], 366);
-                step(f, Op::SubF, &[256, 855, 257], 367);
-                step(f, Op::Copy(ValueType::Float), &[257, 251], 368);
-                step(f, Op::AbsF, &[251, 260], 369);
-                step(f, Op::MaxF, &[261, 260, 262], 370);
-                step(f, Op::LessF, &[262, 857, 24], 371);
-                step(f, Op::And, &[25, 24, 26], 372);
-                step(f, Op::Not, &[22, 27], 373);
-                step(f, Op::Not, &[23, 28], 374);
-                step(f, Op::And, &[27, 28, 29], 375);
-                step(f, Op::Or, &[26, 29, 30], 376);
-                step(f, Op::JumpIfFalse, &[30, 398], 377)
+                step(f, Op::Jump, &[224], 224)
             }
-            377 => {
-                step(f, Op::DeltaTime, &[226], 378);
-                step(f, Op::MulF, &[38, 226, 266], 379);
-                step(f, Op::GreaterF, &[266, 845, 31], 380);
-                step(f, Op::DivF, &[49, 226, 263], 381);
-                step(f, Op::FloatLerp, &[845, 847, 38, 264], 382);
-                step(f, Op::SubF, &[847, 264, 265], 383);
-                step(f, Op::DivF, &[265, 264, 267], 384);
-                step(f, Op::DivF, &[847, 266, 268], 385);
-                step(f, Op::SubF, &[267, 268, 269], 386);
-                step(f, Op::AddF, &[263, 269, 270], 387);
-                step(f, Op::Select(ValueType::Float), &[31, 270, 845, 271], 388);
-                step(f, Op::MulF, &[251, 271, 272], 389);
-                step(f, Op::AddF, &[230, 272, 273], 390);
-                step(f, Op::SinF, &[273, 274], 391);
-                step(f, Op::NegF, &[274, 275], 392);
-                step(f, Op::CosF, &[273, 276], 393);
-                step(f, Op::MakeVector, &[275, 276, 845, 75], 394);
-                step(f, Op::Select(ValueType::Vec3), &[23, 75, 466, 76], 395);
-                step(f, Op::MovementAngleOffset, &[76, 14, 845, 38, 39, 853, 855, 854, 277], 396);
-                step(f, Op::Copy(ValueType::Float), &[277, 14], 397);
-                step(f, Op::Jump, &[433], 398)
+            224 => {
+                step(f, Op::Jump, &[225], 225)
             }
-            398 => {
-                step(f, Op::DeltaTime, &[226], 399);
-                step(f, Op::DivF, &[226, 41, 278], 400);
-                step(f, Op::AddF, &[278, 846, 279], 401);
-                step(f, Op::FloorF, &[279, 280], 402);
-                step(f, Op::MaxF, &[280, 847, 281], 403);
-                step(f, Op::ToInt, &[281, 36], 404);
-                step(f, Op::Copy(ValueType::Int), &[36, 35], 405);
-                step(f, Op::Copy(ValueType::Int), &[71, 31], 406);
-                step(f, Op::MulF, &[41, 846, 285], 407);
-                step(f, Op::SubF, &[49, 285, 286], 408);
-                step(f, Op::DivF, &[286, 226, 287], 409);
-                step(f, Op::FloatLerp, &[845, 847, 36, 289], 410);
-                step(f, Op::GreaterF, &[289, 845, 32], 411);
-                step(f, Op::DivF, &[38, 281, 299], 412);
-                step(f, Op::DivF, &[39, 281, 300], 413);
-                413
+            225 => {
+                step(f, Op::Select(ValueType::Float), &[5, 890, 888, 178], 226);
+                step(f, Op::NotEquals(Elem::Bool), &[11, 6, 16], 227);
+                step(f, Op::AddF, &[165, 166, 169], 228);
+                step(f, Op::MulF, &[169, 887, 173], 229);
+                step(f, Op::Select(ValueType::Float), &[16, 173, 887, 174], 230);
+                step(f, Op::Select(ValueType::Float), &[15, 174, 886, 180], 231);
+                step(f, Op::MulF, &[178, 180, 182], 232);
+                step(f, Op::DeltaTime, &[176], 233);
+                step(f, Op::DivF, &[176, 134, 177], 234);
+                step(f, Op::MulF, &[182, 177, 183], 235);
+                step(f, Op::AddF, &[20, 183, 184], 236);
+                step(f, Op::ClampF, &[184, 886, 888, 185], 237);
+                step(f, Op::Select(ValueType::Float), &[14, 890, 888, 179], 238);
+                step(f, Op::SubF, &[888, 174, 175], 239);
+                step(f, Op::Select(ValueType::Float), &[15, 175, 888, 181], 240);
+                step(f, Op::MulF, &[179, 181, 186], 241);
+                step(f, Op::MulF, &[186, 177, 187], 242);
+                step(f, Op::AddF, &[185, 187, 188], 243);
+                step(f, Op::ClampF, &[188, 886, 888, 189], 244);
+                step(f, Op::SmoothStepF, &[189, 886, 888, 190], 245);
+                step(f, Op::AddF, &[21, 190, 191], 246);
+                step(f, Op::MulF, &[191, 887, 192], 247);
+                step(f, Op::SubF, &[888, 192, 193], 248);
+                step(f, Op::MulF, &[193, 193, 194], 249);
+                step(f, Op::SubF, &[888, 194, 195], 250);
+                step(f, Op::Copy(ValueType::Float), &[195, 22], 251);
+                step(f, Op::Copy(ValueType::Float), &[190, 21], 252);
+                step(f, Op::Copy(ValueType::Float), &[189, 20], 253);
+                step(f, Op::GreaterF, &[21, 886, 21], 254);
+                step(f, Op::TransformVector, &[2, 3, 69], 255);
+                step(f, Op::Select(ValueType::Vec3), &[21, 69, 0, 70], 256);
+                step(f, Op::Copy(ValueType::Vec3), &[70, 3], 257);
+                step(f, Op::LerpV, &[0, 3, 21, 71], 258);
+                step(f, Op::Select(ValueType::Vec3), &[21, 71, 0, 72], 259);
+                step(f, Op::Copy(ValueType::Vec3), &[72, 2], 260);
+                step(f, Op::Copy(ValueType::Bool), &[14, 5], 261);
+                step(f, Op::Copy(ValueType::Bool), &[11, 6], 262);
+                step(f, Op::Copy(ValueType::Bool), &[126, 7], 263);
+                step(f, Op::SubF, &[888, 22, 196], 264);
+                step(f, Op::MulF, &[1, 196, 197], 265);
+                step(f, Op::AddF, &[2, 197, 198], 266);
+                step(f, Op::Copy(ValueType::Float), &[4, 199], 267);
+                step(f, Op::Copy(ValueType::Float), &[5, 200], 268);
+                step(f, Op::Copy(ValueType::Float), &[2, 202], 269);
+                step(f, Op::Copy(ValueType::Float), &[131, 203], 270);
+                step(f, Op::Copy(ValueType::Float), &[51, 204], 271);
+                step(f, Op::SubF, &[198, 202, 209], 272);
+                step(f, Op::DeltaTime, &[207], 273);
+                step(f, Op::DivF, &[209, 207, 210], 274);
+                step(f, Op::MulF, &[210, 204, 211], 275);
+                step(f, Op::AddF, &[198, 211, 213], 276);
+                step(f, Op::MulF, &[210, 891, 214], 277);
+                step(f, Op::DivF, &[892, 203, 208], 278);
+                step(f, Op::DivF, &[214, 208, 215], 279);
+                step(f, Op::SubF, &[213, 215, 229], 280);
+                step(f, Op::AddF, &[202, 211, 212], 281);
+                step(f, Op::SubF, &[199, 212, 216], 282);
+                step(f, Op::AddF, &[216, 215, 217], 283);
+                step(f, Op::SubF, &[200, 210, 218], 284);
+                step(f, Op::MulF, &[208, 217, 219], 285);
+                step(f, Op::AddF, &[218, 219, 220], 286);
+                step(f, Op::MulF, &[220, 207, 223], 287);
+                step(f, Op::AddF, &[217, 223, 224], 288);
+                step(f, Op::FloatLerp, &[886, 888, 208, 221], 289);
+                step(f, Op::SubF, &[888, 221, 222], 290);
+                step(f, Op::MulF, &[224, 222, 225], 291);
+                step(f, Op::AddF, &[229, 225, 230], 292);
+                step(f, Op::Copy(ValueType::Float), &[230, 205], 293);
+                step(f, Op::MulF, &[208, 223, 226], 294);
+                step(f, Op::SubF, &[218, 226, 227], 295);
+                step(f, Op::MulF, &[227, 222, 228], 296);
+                step(f, Op::AddF, &[210, 228, 231], 297);
+                step(f, Op::Copy(ValueType::Float), &[231, 206], 298);
+                step(f, Op::SubF, &[198, 205, 232], 299);
+                step(f, Op::Copy(ValueType::Float), &[232, 3], 300);
+                step(f, Op::Copy(ValueType::Float), &[205, 4], 301);
+                step(f, Op::Copy(ValueType::Float), &[4, 199], 302);
+                step(f, Op::Copy(ValueType::Float), &[5, 200], 303);
+                step(f, Op::Copy(ValueType::Float), &[2, 202], 304);
+                step(f, Op::Copy(ValueType::Float), &[131, 203], 305);
+                step(f, Op::Copy(ValueType::Float), &[51, 204], 306);
+                step(f, Op::SubF, &[198, 202, 209], 307);
+                step(f, Op::DeltaTime, &[207], 308);
+                step(f, Op::DivF, &[209, 207, 210], 309);
+                step(f, Op::MulF, &[210, 204, 211], 310);
+                step(f, Op::AddF, &[198, 211, 213], 311);
+                step(f, Op::MulF, &[210, 891, 214], 312);
+                step(f, Op::DivF, &[892, 203, 208], 313);
+                step(f, Op::DivF, &[214, 208, 215], 314);
+                step(f, Op::SubF, &[213, 215, 229], 315);
+                step(f, Op::AddF, &[202, 211, 212], 316);
+                step(f, Op::SubF, &[199, 212, 216], 317);
+                step(f, Op::AddF, &[216, 215, 217], 318);
+                step(f, Op::SubF, &[200, 210, 218], 319);
+                step(f, Op::MulF, &[208, 217, 219], 320);
+                step(f, Op::AddF, &[218, 219, 220], 321);
+                step(f, Op::MulF, &[220, 207, 223], 322);
+                step(f, Op::AddF, &[217, 223, 224], 323);
+                step(f, Op::FloatLerp, &[886, 888, 208, 221], 324);
+                step(f, Op::SubF, &[888, 221, 222], 325);
+                step(f, Op::MulF, &[224, 222, 225], 326);
+                step(f, Op::AddF, &[229, 225, 230], 327);
+                step(f, Op::Copy(ValueType::Float), &[230, 205], 328);
+                step(f, Op::MulF, &[208, 223, 226], 329);
+                step(f, Op::SubF, &[218, 226, 227], 330);
+                step(f, Op::MulF, &[227, 222, 228], 331);
+                step(f, Op::AddF, &[210, 228, 231], 332);
+                step(f, Op::Copy(ValueType::Float), &[231, 206], 333);
+                step(f, Op::Copy(ValueType::Float), &[206, 5], 334);
+                step(f, Op::Copy(ValueType::Float), &[198, 2], 335);
+                step(f, Op::LengthV, &[4, 234], 336);
+                step(f, Op::GreaterF, &[234, 29, 22], 337);
+                step(f, Op::LengthV, &[2, 235], 338);
+                step(f, Op::GreaterF, &[235, 29, 23], 339);
+                step(f, Op::And, &[22, 23, 25], 340);
+                step(f, Op::Select(ValueType::Vec3), &[22, 4, 478, 73], 341);
+                step(f, Op::MovementAngleOffset, &[73, 14, 886, 893, 893, 894, 40, 895, 236], 342);
+                step(f, Op::Copy(ValueType::Float), &[14, 239], 343);
+                step(f, Op::SubF, &[236, 239, 241], 344);
+                step(f, Op::AddF, &[241, 896, 242], 345);
+                step(f, Op::DivF, &[242, 897, 243], 346);
+                step(f, Op::FractF, &[243, 244], 347);
+                step(f, Op::MulF, &[244, 897, 245], 348);
+                step(f, Op::SubF, &[245, 896, 246], 349);
+                step(f, Op::Copy(ValueType::Float), &[246, 240], 350);
+                step(f, Op::AbsF, &[240, 265], 351);
+                step(f, Op::Select(ValueType::Vec3), &[23, 2, 478, 74], 352);
+                step(f, Op::MovementAngleOffset, &[74, 14, 886, 893, 893, 894, 40, 895, 237], 353);
+                step(f, Op::Copy(ValueType::Float), &[14, 248], 354);
+                step(f, Op::SubF, &[237, 248, 250], 355);
+                step(f, Op::AddF, &[250, 896, 251], 356);
+                step(f, Op::DivF, &[251, 897, 252], 357);
+                step(f, Op::FractF, &[252, 253], 358);
+                step(f, Op::MulF, &[253, 897, 254], 359);
+                step(f, Op::SubF, &[254, 896, 255], 360);
+                step(f, Op::Copy(ValueType::Float), &[255, 249], 361);
+                step(f, Op::AbsF, &[249, 266], 362);
+                step(f, Op::MaxF, &[265, 266, 268], 363);
+                step(f, Op::SubF, &[237, 236, 259], 364);
+                step(f, Op::AddF, &[259, 896, 260], 365);
+                step(f, Op::DivF, &[260, 897, 261], 366);
+                step(f, Op::FractF, &[261, 262], 367);
+                step(f, Op::MulF, &[262, 897, 263], 368);
+                step(f, Op::SubF, &[263, 896, 264], 369);
+                step(f, Op::Copy(ValueType::Float), &[264, 258], 370);
+                step(f, Op::AbsF, &[258, 267], 371);
+                step(f, Op::MaxF, &[268, 267, 269], 372);
+                step(f, Op::LessF, &[269, 898, 24], 373);
+                step(f, Op::And, &[25, 24, 26], 374);
+                step(f, Op::Not, &[22, 27], 375);
+                step(f, Op::Not, &[23, 28], 376);
+                step(f, Op::And, &[27, 28, 29], 377);
+                step(f, Op::Or, &[26, 29, 30], 378);
+                step(f, Op::JumpIfFalse, &[30, 400], 379)
             }
-            413 => {
-                step(f, Op::ForNext, &[31, 35, 33, 433], 414)
+            379 => {
+                step(f, Op::DeltaTime, &[233], 380);
+                step(f, Op::MulF, &[38, 233, 273], 381);
+                step(f, Op::GreaterF, &[273, 886, 31], 382);
+                step(f, Op::DivF, &[51, 233, 270], 383);
+                step(f, Op::FloatLerp, &[886, 888, 38, 271], 384);
+                step(f, Op::SubF, &[888, 271, 272], 385);
+                step(f, Op::DivF, &[272, 271, 274], 386);
+                step(f, Op::DivF, &[888, 273, 275], 387);
+                step(f, Op::SubF, &[274, 275, 276], 388);
+                step(f, Op::AddF, &[270, 276, 277], 389);
+                step(f, Op::Select(ValueType::Float), &[31, 277, 886, 278], 390);
+                step(f, Op::MulF, &[258, 278, 279], 391);
+                step(f, Op::AddF, &[237, 279, 280], 392);
+                step(f, Op::SinF, &[280, 281], 393);
+                step(f, Op::NegF, &[281, 282], 394);
+                step(f, Op::CosF, &[280, 283], 395);
+                step(f, Op::MakeVector, &[282, 283, 886, 75], 396);
+                step(f, Op::Select(ValueType::Vec3), &[23, 75, 478, 76], 397);
+                step(f, Op::MovementAngleOffset, &[76, 14, 886, 38, 39, 894, 896, 895, 284], 398);
+                step(f, Op::Copy(ValueType::Float), &[284, 14], 399);
+                step(f, Op::Jump, &[435], 400)
             }
-            414 => {
-                step(f, Op::ToFloat, &[33, 282], 415);
-                step(f, Op::AddF, &[282, 847, 283], 416);
-                step(f, Op::DivF, &[283, 281, 284], 417);
-                step(f, Op::AddF, &[284, 287, 288], 418);
-                step(f, Op::MulF, &[36, 288, 290], 419);
-                step(f, Op::FloatLerp, &[845, 847, 290, 291], 420);
-                step(f, Op::DivF, &[291, 289, 292], 421);
-                step(f, Op::Select(ValueType::Float), &[32, 292, 288, 293], 422);
-                step(f, Op::LerpV, &[4, 2, 293, 77], 423);
-                step(f, Op::LengthV, &[77, 294], 424);
-                step(f, Op::GreaterF, &[294, 29, 33], 425);
-                step(f, Op::Select(ValueType::Vec3), &[33, 77, 466, 78], 426);
-                step(f, Op::MulF, &[226, 288, 295], 427);
-                step(f, Op::MulF, &[8, 295, 296], 428);
-                step(f, Op::AddF, &[12, 296, 297], 429);
-                step(f, Op::FractF, &[297, 298], 430);
-                step(f, Op::MovementAngleOffset, &[78, 14, 298, 299, 300, 853, 40, 854, 301], 431);
-                step(f, Op::Copy(ValueType::Float), &[301, 14], 432);
-                step(f, Op::Jump, &[413], 433)
+            400 => {
+                step(f, Op::DeltaTime, &[233], 401);
+                step(f, Op::DivF, &[233, 41, 285], 402);
+                step(f, Op::AddF, &[285, 887, 286], 403);
+                step(f, Op::FloorF, &[286, 287], 404);
+                step(f, Op::MaxF, &[287, 888, 288], 405);
+                step(f, Op::ToInt, &[288, 36], 406);
+                step(f, Op::Copy(ValueType::Int), &[36, 35], 407);
+                step(f, Op::Copy(ValueType::Int), &[71, 31], 408);
+                step(f, Op::MulF, &[41, 887, 292], 409);
+                step(f, Op::SubF, &[51, 292, 293], 410);
+                step(f, Op::DivF, &[293, 233, 294], 411);
+                step(f, Op::FloatLerp, &[886, 888, 36, 296], 412);
+                step(f, Op::GreaterF, &[296, 886, 32], 413);
+                step(f, Op::DivF, &[38, 288, 306], 414);
+                step(f, Op::DivF, &[39, 288, 307], 415);
+                415
             }
-            433 => {
-                step(f, Op::QuatFromAxisAngle, &[468, 14, 12], 434);
-                step(f, Op::Copy(ValueType::Quat), &[12, 0], 435);
-                step(f, Op::SinF, &[14, 302], 436);
-                step(f, Op::AbsF, &[302, 303], 437);
-                step(f, Op::RemapF, &[303, 42, 43, 845, 847, 122, 304], 438);
-                step(f, Op::Copy(ValueType::Float), &[304, 15], 439);
-                step(f, Op::Copy(ValueType::Vec3), &[2, 4], 440);
-                step(f, Op::Copy(ValueType::Bool), &[122, 36], 441);
-                step(f, Op::Copy(ValueType::Array(Elem::Bool)), &[0, 2], 442);
-                step(f, Op::Copy(ValueType::Int), &[71, 40], 443);
-                443
+            415 => {
+                step(f, Op::ForNext, &[31, 35, 33, 435], 416)
             }
-            443 => {
-                step(f, Op::ForEachNext(Elem::Bool), &[2, 40, 37, 41, 42, 449], 444)
+            416 => {
+                step(f, Op::ToFloat, &[33, 289], 417);
+                step(f, Op::AddF, &[289, 888, 290], 418);
+                step(f, Op::DivF, &[290, 288, 291], 419);
+                step(f, Op::AddF, &[291, 294, 295], 420);
+                step(f, Op::MulF, &[36, 295, 297], 421);
+                step(f, Op::FloatLerp, &[886, 888, 297, 298], 422);
+                step(f, Op::DivF, &[298, 296, 299], 423);
+                step(f, Op::Select(ValueType::Float), &[32, 299, 295, 300], 424);
+                step(f, Op::LerpV, &[4, 2, 300, 77], 425);
+                step(f, Op::LengthV, &[77, 301], 426);
+                step(f, Op::GreaterF, &[301, 29, 33], 427);
+                step(f, Op::Select(ValueType::Vec3), &[33, 77, 478, 78], 428);
+                step(f, Op::MulF, &[233, 295, 302], 429);
+                step(f, Op::MulF, &[8, 302, 303], 430);
+                step(f, Op::AddF, &[12, 303, 304], 431);
+                step(f, Op::FractF, &[304, 305], 432);
+                step(f, Op::MovementAngleOffset, &[78, 14, 305, 306, 307, 894, 40, 895, 308], 433);
+                step(f, Op::Copy(ValueType::Float), &[308, 14], 434);
+                step(f, Op::Jump, &[415], 435)
             }
-            444 => {
-                step(f, Op::Not, &[37, 38], 445);
-                step(f, Op::JumpIfFalse, &[38, 448], 446)
+            435 => {
+                step(f, Op::QuatFromAxisAngle, &[480, 14, 12], 436);
+                step(f, Op::Copy(ValueType::Quat), &[12, 0], 437);
+                step(f, Op::SinF, &[14, 309], 438);
+                step(f, Op::AbsF, &[309, 310], 439);
+                step(f, Op::RemapF, &[310, 42, 43, 886, 888, 125, 311], 440);
+                step(f, Op::BreakVector, &[74, 312, 313, 314], 441);
+                step(f, Op::AbsF, &[312, 315], 442);
+                step(f, Op::DivF, &[315, 235, 316], 443);
+                step(f, Op::RemapF, &[316, 42, 43, 886, 888, 125, 317], 444);
+                step(f, Op::TransformVector, &[2, 481, 79], 445);
+                step(f, Op::DistanceV, &[79, 481, 318], 446);
+                step(f, Op::DivF, &[318, 233, 319], 447);
+                step(f, Op::RemapF, &[319, 47, 48, 888, 886, 125, 320], 448);
+                step(f, Op::MulF, &[317, 320, 321], 449);
+                step(f, Op::MaxF, &[311, 321, 322], 450);
+                step(f, Op::Copy(ValueType::Float), &[322, 15], 451);
+                step(f, Op::Copy(ValueType::Vec3), &[2, 4], 452);
+                step(f, Op::Copy(ValueType::Bool), &[125, 36], 453);
+                step(f, Op::Copy(ValueType::Array(Elem::Bool)), &[0, 2], 454);
+                step(f, Op::Copy(ValueType::Int), &[71, 40], 455);
+                455
             }
-            446 => {
-                step(f, Op::Copy(ValueType::Bool), &[123, 36], 447);
-                step(f, Op::Jump, &[448], 448)
+            455 => {
+                step(f, Op::ForEachNext(Elem::Bool), &[2, 40, 37, 41, 42, 461], 456)
             }
-            448 => {
-                step(f, Op::Jump, &[443], 449)
+            456 => {
+                step(f, Op::Not, &[37, 38], 457);
+                step(f, Op::JumpIfFalse, &[38, 460], 458)
             }
-            449 => {
-                step(f, Op::Copy(ValueType::Bool), &[36, 35], 450);
-                step(f, Op::Copy(ValueType::Bool), &[122, 40], 451);
-                step(f, Op::Copy(ValueType::Array(Elem::Bone)), &[0, 14], 452);
-                step(f, Op::Copy(ValueType::Int), &[71, 43], 453);
-                453
+            458 => {
+                step(f, Op::Copy(ValueType::Bool), &[126, 36], 459);
+                step(f, Op::Jump, &[460], 460)
             }
-            453 => {
-                step(f, Op::ForEachNext(Elem::Bone), &[14, 43, 15, 44, 45, 468], 454)
+            460 => {
+                step(f, Op::Jump, &[455], 461)
             }
-            454 => {
-                step(f, Op::ArrayAt(Elem::Transform), &[0, 44, 23], 455);
-                step(f, Op::BreakTransform, &[23, 79, 13, 80], 456);
-                step(f, Op::BreakVector, &[79, 313, 314, 315], 457);
-                step(f, Op::MakeVector, &[313, 314, 845, 83], 458);
-                step(f, Op::ArrayAt(Elem::Transform), &[8, 44, 24], 459);
-                step(f, Op::BreakTransform, &[24, 81, 14, 82], 460);
-                step(f, Op::BreakVector, &[81, 316, 317, 318], 461);
-                step(f, Op::MakeVector, &[316, 317, 845, 84], 462);
-                step(f, Op::DistanceV, &[83, 84, 319], 463);
-                step(f, Op::GreaterF, &[319, 31, 41], 464);
-                step(f, Op::JumpIfFalse, &[41, 467], 465)
+            461 => {
+                step(f, Op::Copy(ValueType::Bool), &[36, 35], 462);
+                step(f, Op::Copy(ValueType::Bool), &[125, 40], 463);
+                step(f, Op::Copy(ValueType::Array(Elem::Bone)), &[0, 14], 464);
+                step(f, Op::Copy(ValueType::Int), &[71, 43], 465);
+                465
             }
             465 => {
-                step(f, Op::Copy(ValueType::Bool), &[123, 40], 466);
-                step(f, Op::Jump, &[467], 467)
+                step(f, Op::ForEachNext(Elem::Bone), &[14, 43, 15, 44, 45, 480], 466)
             }
-            467 => {
-                step(f, Op::Jump, &[453], 468)
+            466 => {
+                step(f, Op::ArrayAt(Elem::Transform), &[0, 44, 23], 467);
+                step(f, Op::BreakTransform, &[23, 80, 13, 81], 468);
+                step(f, Op::BreakVector, &[80, 331, 332, 333], 469);
+                step(f, Op::MakeVector, &[331, 332, 886, 84], 470);
+                step(f, Op::ArrayAt(Elem::Transform), &[8, 44, 24], 471);
+                step(f, Op::BreakTransform, &[24, 82, 14, 83], 472);
+                step(f, Op::BreakVector, &[82, 334, 335, 336], 473);
+                step(f, Op::MakeVector, &[334, 335, 886, 85], 474);
+                step(f, Op::DistanceV, &[84, 85, 337], 475);
+                step(f, Op::GreaterF, &[337, 31, 41], 476);
+                step(f, Op::JumpIfFalse, &[41, 479], 477)
             }
-            468 => {
-                step(f, Op::Copy(ValueType::Bool), &[40, 39], 469);
-                step(f, Op::And, &[35, 39, 42], 470);
-                step(f, Op::LengthV, &[2, 305], 471);
-                step(f, Op::GreaterF, &[305, 29, 34], 472);
-                step(f, Op::GreaterF, &[0, 29, 43], 473);
-                step(f, Op::Or, &[34, 43, 44], 474);
-                step(f, Op::Not, &[44, 45], 475);
-                step(f, Op::And, &[42, 45, 50], 476);
-                step(f, Op::DeltaTime, &[344], 477);
-                step(f, Op::MulF, &[344, 34, 345], 478);
-                step(f, Op::AddF, &[12, 345, 346], 479);
-                step(f, Op::GreaterF, &[12, 846, 51], 480);
-                step(f, Op::AddF, &[33, 846, 342], 481);
-                step(f, Op::Select(ValueType::Float), &[51, 342, 33, 343], 482);
-                step(f, Op::MinF, &[346, 343, 347], 483);
-                step(f, Op::NotEquals(Elem::Bool), &[45, 4, 46], 484);
-                step(f, Op::Not, &[42, 47], 485);
-                step(f, Op::And, &[46, 47, 48], 486);
-                step(f, Op::SubF, &[13, 29, 328], 487);
-                step(f, Op::SubF, &[13, 305, 329], 488);
-                step(f, Op::DivF, &[328, 329, 330], 489);
-                step(f, Op::ClampF, &[330, 845, 847, 331], 490);
-                step(f, Op::MulF, &[8, 331, 333], 491);
-                step(f, Op::RemapF, &[305, 29, 30, 845, 847, 122, 320], 492);
-                step(f, Op::MaxF, &[320, 9, 321], 493);
-                step(f, Op::Select(ValueType::Float), &[35, 847, 321, 322], 494);
-                step(f, Op::Select(ValueType::Float), &[45, 32, 322, 323], 495);
-                step(f, Op::Select(ValueType::Float), &[42, 320, 323, 324], 496);
-                step(f, Op::SubF, &[847, 21, 325], 497);
-                step(f, Op::MulF, &[324, 325, 326], 498);
-                step(f, Op::LerpF, &[23, 45, 15, 308], 499);
-                step(f, Op::RemapF, &[305, 26, 27, 24, 25, 122, 306], 500);
-                step(f, Op::LerpF, &[306, 44, 15, 307], 501);
-                step(f, Op::MaxF, &[305, 28, 309], 502);
-                step(f, Op::DivF, &[307, 309, 310], 503);
-                step(f, Op::AddF, &[308, 310, 311], 504);
-                step(f, Op::DivF, &[326, 311, 327], 505);
-                step(f, Op::SubF, &[847, 331, 332], 506);
-                step(f, Op::MulF, &[327, 332, 334], 507);
-                step(f, Op::AddF, &[333, 334, 335], 508);
-                step(f, Op::MulF, &[335, 850, 336], 509);
-                step(f, Op::AddF, &[8, 327, 337], 510);
-                step(f, Op::Select(ValueType::Float), &[48, 336, 337, 338], 511);
-                step(f, Op::DivF, &[850, 338, 339], 512);
-                step(f, Op::GreaterF, &[338, 845, 49], 513);
-                step(f, Op::CycleStep, &[12, 339, 845, 49, 340, 341], 514);
-                step(f, Op::Select(ValueType::Float), &[50, 347, 340, 348], 515);
-                step(f, Op::Copy(ValueType::Float), &[348, 12], 516);
-                step(f, Op::Copy(ValueType::Float), &[327, 8], 517);
-                step(f, Op::Copy(ValueType::Bool), &[34, 3], 518);
-                step(f, Op::Copy(ValueType::Float), &[310, 6], 519);
-                step(f, Op::Copy(ValueType::Float), &[311, 7], 520);
-                step(f, Op::Copy(ValueType::Array(Elem::Bone)), &[0, 13], 521);
-                step(f, Op::Copy(ValueType::Int), &[71, 37], 522);
-                step(f, Op::DivF, &[308, 311, 312], 523);
-                step(f, Op::MulF, &[11, 331, 354], 524);
-                step(f, Op::MulF, &[344, 846, 360], 525);
-                step(f, Op::SubF, &[312, 10, 365], 526);
-                step(f, Op::MaxF, &[365, 845, 366], 527);
-                step(f, Op::DivF, &[366, 312, 367], 528);
-                step(f, Op::SubF, &[847, 15, 369], 529);
-                step(f, Op::DivF, &[49, 344, 374], 530);
-                step(f, Op::SubF, &[846, 374, 375], 531);
-                step(f, Op::MulF, &[367, 369, 376], 532);
-                step(f, Op::MulF, &[376, 325, 377], 533);
-                step(f, Op::MulF, &[377, 121, 378], 534);
-                step(f, Op::MulF, &[378, 375, 379], 535);
-                step(f, Op::SubF, &[847, 379, 380], 536);
-                536
+            477 => {
+                step(f, Op::Copy(ValueType::Bool), &[126, 40], 478);
+                step(f, Op::Jump, &[479], 479)
             }
-            536 => {
-                step(f, Op::ForEachNext(Elem::Bone), &[13, 37, 14, 38, 39, 581], 537)
+            479 => {
+                step(f, Op::Jump, &[465], 480)
             }
-            537 => {
-                step(f, Op::ArrayAt(Elem::Float), &[0, 38, 362], 538);
-                step(f, Op::ToFloat, &[38, 349], 539);
-                step(f, Op::MulF, &[349, 846, 350], 540);
-                step(f, Op::AddF, &[12, 350, 351], 541);
-                step(f, Op::FractF, &[351, 352], 542);
-                step(f, Op::SubF, &[362, 352, 364], 543);
-                step(f, Op::GreaterF, &[364, 846, 52], 544);
-                step(f, Op::ArrayAt(Elem::Float), &[2, 38, 363], 545);
-                step(f, Op::Select(ValueType::Float), &[52, 845, 363, 391], 546);
-                step(f, Op::ArraySetAt(Elem::Float), &[3, 38, 391], 547);
-                step(f, Op::SubF, &[847, 362, 385], 548);
-                step(f, Op::AddF, &[352, 385, 386], 549);
-                step(f, Op::DivF, &[352, 386, 387], 550);
-                step(f, Op::MaxF, &[320, 9, 321], 551);
-                step(f, Op::Select(ValueType::Float), &[35, 847, 321, 322], 552);
-                step(f, Op::Select(ValueType::Float), &[45, 32, 322, 323], 553);
-                step(f, Op::Select(ValueType::Float), &[42, 320, 323, 324], 554);
-                step(f, Op::MulF, &[324, 325, 326], 555);
-                step(f, Op::DivF, &[326, 308, 353], 556);
-                step(f, Op::MulF, &[353, 332, 355], 557);
-                step(f, Op::AddF, &[354, 355, 356], 558);
-                step(f, Op::MulF, &[356, 850, 357], 559);
-                step(f, Op::AddF, &[11, 353, 358], 560);
-                step(f, Op::Select(ValueType::Float), &[48, 357, 358, 359], 561);
-                step(f, Op::MulF, &[359, 360, 361], 562);
-                step(f, Op::MulF, &[387, 361, 388], 563);
-                step(f, Op::ArrayAt(Elem::Bool), &[0, 38, 53], 564);
-                step(f, Op::MulF, &[361, 380, 381], 565);
-                step(f, Op::Select(ValueType::Float), &[53, 361, 381, 382], 566);
-                step(f, Op::MulF, &[367, 363, 368], 567);
-                step(f, Op::MulF, &[368, 369, 370], 568);
-                step(f, Op::MulF, &[370, 325, 371], 569);
-                step(f, Op::MulF, &[371, 121, 372], 570);
-                step(f, Op::Select(ValueType::Float), &[53, 845, 372, 373], 571);
-                step(f, Op::SubF, &[382, 373, 383], 572);
-                step(f, Op::AddF, &[363, 383, 384], 573);
-                step(f, Op::Select(ValueType::Float), &[52, 388, 384, 389], 574);
-                step(f, Op::MinF, &[389, 850, 390], 575);
-                step(f, Op::ArraySetAt(Elem::Float), &[2, 38, 390], 576);
-                step(f, Op::JumpIfFalse, &[52, 579], 577)
+            480 => {
+                step(f, Op::Copy(ValueType::Bool), &[40, 39], 481);
+                step(f, Op::And, &[35, 39, 42], 482);
+                step(f, Op::LengthV, &[2, 323], 483);
+                step(f, Op::GreaterF, &[323, 29, 34], 484);
+                step(f, Op::GreaterF, &[0, 29, 43], 485);
+                step(f, Op::Or, &[34, 43, 44], 486);
+                step(f, Op::Not, &[44, 45], 487);
+                step(f, Op::And, &[42, 45, 50], 488);
+                step(f, Op::DeltaTime, &[362], 489);
+                step(f, Op::MulF, &[362, 34, 363], 490);
+                step(f, Op::AddF, &[12, 363, 364], 491);
+                step(f, Op::GreaterF, &[12, 887, 51], 492);
+                step(f, Op::AddF, &[33, 887, 360], 493);
+                step(f, Op::Select(ValueType::Float), &[51, 360, 33, 361], 494);
+                step(f, Op::MinF, &[364, 361, 365], 495);
+                step(f, Op::NotEquals(Elem::Bool), &[45, 4, 46], 496);
+                step(f, Op::Not, &[42, 47], 497);
+                step(f, Op::And, &[46, 47, 48], 498);
+                step(f, Op::SubF, &[13, 29, 346], 499);
+                step(f, Op::SubF, &[13, 323, 347], 500);
+                step(f, Op::DivF, &[346, 347, 348], 501);
+                step(f, Op::ClampF, &[348, 886, 888, 349], 502);
+                step(f, Op::MulF, &[8, 349, 351], 503);
+                step(f, Op::RemapF, &[323, 29, 30, 886, 888, 125, 338], 504);
+                step(f, Op::MaxF, &[338, 9, 339], 505);
+                step(f, Op::Select(ValueType::Float), &[35, 888, 339, 340], 506);
+                step(f, Op::Select(ValueType::Float), &[45, 32, 340, 341], 507);
+                step(f, Op::Select(ValueType::Float), &[42, 338, 341, 342], 508);
+                step(f, Op::SubF, &[888, 21, 343], 509);
+                step(f, Op::MulF, &[342, 343, 344], 510);
+                step(f, Op::LerpF, &[23, 45, 15, 326], 511);
+                step(f, Op::RemapF, &[323, 26, 27, 24, 25, 125, 324], 512);
+                step(f, Op::LerpF, &[324, 44, 15, 325], 513);
+                step(f, Op::MaxF, &[323, 28, 327], 514);
+                step(f, Op::DivF, &[325, 327, 328], 515);
+                step(f, Op::AddF, &[326, 328, 329], 516);
+                step(f, Op::DivF, &[344, 329, 345], 517);
+                step(f, Op::SubF, &[888, 349, 350], 518);
+                step(f, Op::MulF, &[345, 350, 352], 519);
+                step(f, Op::AddF, &[351, 352, 353], 520);
+                step(f, Op::MulF, &[353, 891, 354], 521);
+                step(f, Op::AddF, &[8, 345, 355], 522);
+                step(f, Op::Select(ValueType::Float), &[48, 354, 355, 356], 523);
+                step(f, Op::DivF, &[891, 356, 357], 524);
+                step(f, Op::GreaterF, &[356, 886, 49], 525);
+                step(f, Op::CycleStep, &[12, 357, 886, 49, 358, 359], 526);
+                step(f, Op::Select(ValueType::Float), &[50, 365, 358, 366], 527);
+                step(f, Op::Copy(ValueType::Float), &[366, 12], 528);
+                step(f, Op::Copy(ValueType::Float), &[345, 8], 529);
+                step(f, Op::Copy(ValueType::Bool), &[34, 3], 530);
+                step(f, Op::Copy(ValueType::Float), &[328, 6], 531);
+                step(f, Op::Copy(ValueType::Float), &[329, 7], 532);
+                step(f, Op::Copy(ValueType::Array(Elem::Bone)), &[0, 13], 533);
+                step(f, Op::Copy(ValueType::Int), &[71, 37], 534);
+                step(f, Op::DivF, &[326, 329, 330], 535);
+                step(f, Op::MulF, &[11, 349, 372], 536);
+                step(f, Op::MulF, &[362, 887, 378], 537);
+                step(f, Op::SubF, &[330, 10, 383], 538);
+                step(f, Op::MaxF, &[383, 886, 384], 539);
+                step(f, Op::DivF, &[384, 330, 385], 540);
+                step(f, Op::SubF, &[888, 15, 387], 541);
+                step(f, Op::DivF, &[51, 362, 392], 542);
+                step(f, Op::SubF, &[887, 392, 393], 543);
+                step(f, Op::MulF, &[385, 387, 394], 544);
+                step(f, Op::MulF, &[394, 343, 395], 545);
+                step(f, Op::MulF, &[395, 128, 396], 546);
+                step(f, Op::MulF, &[396, 393, 397], 547);
+                step(f, Op::SubF, &[888, 397, 398], 548);
+                548
             }
-            577 => {
-                step(f, Op::Copy(ValueType::Float), &[324, 9], 578);
-                step(f, Op::Jump, &[579], 579)
+            548 => {
+                step(f, Op::ForEachNext(Elem::Bone), &[13, 37, 14, 38, 39, 593], 549)
             }
-            579 => {
-                step(f, Op::ArraySetAt(Elem::Float), &[0, 38, 352], 580);
-                step(f, Op::Jump, &[536], 581)
+            549 => {
+                step(f, Op::ArrayAt(Elem::Float), &[0, 38, 380], 550);
+                step(f, Op::ToFloat, &[38, 367], 551);
+                step(f, Op::MulF, &[367, 887, 368], 552);
+                step(f, Op::AddF, &[12, 368, 369], 553);
+                step(f, Op::FractF, &[369, 370], 554);
+                step(f, Op::SubF, &[380, 370, 382], 555);
+                step(f, Op::GreaterF, &[382, 887, 52], 556);
+                step(f, Op::ArrayAt(Elem::Float), &[2, 38, 381], 557);
+                step(f, Op::Select(ValueType::Float), &[52, 886, 381, 409], 558);
+                step(f, Op::ArraySetAt(Elem::Float), &[3, 38, 409], 559);
+                step(f, Op::SubF, &[888, 380, 403], 560);
+                step(f, Op::AddF, &[370, 403, 404], 561);
+                step(f, Op::DivF, &[370, 404, 405], 562);
+                step(f, Op::MaxF, &[338, 9, 339], 563);
+                step(f, Op::Select(ValueType::Float), &[35, 888, 339, 340], 564);
+                step(f, Op::Select(ValueType::Float), &[45, 32, 340, 341], 565);
+                step(f, Op::Select(ValueType::Float), &[42, 338, 341, 342], 566);
+                step(f, Op::MulF, &[342, 343, 344], 567);
+                step(f, Op::DivF, &[344, 326, 371], 568);
+                step(f, Op::MulF, &[371, 350, 373], 569);
+                step(f, Op::AddF, &[372, 373, 374], 570);
+                step(f, Op::MulF, &[374, 891, 375], 571);
+                step(f, Op::AddF, &[11, 371, 376], 572);
+                step(f, Op::Select(ValueType::Float), &[48, 375, 376, 377], 573);
+                step(f, Op::MulF, &[377, 378, 379], 574);
+                step(f, Op::MulF, &[405, 379, 406], 575);
+                step(f, Op::ArrayAt(Elem::Bool), &[0, 38, 53], 576);
+                step(f, Op::MulF, &[379, 398, 399], 577);
+                step(f, Op::Select(ValueType::Float), &[53, 379, 399, 400], 578);
+                step(f, Op::MulF, &[385, 381, 386], 579);
+                step(f, Op::MulF, &[386, 387, 388], 580);
+                step(f, Op::MulF, &[388, 343, 389], 581);
+                step(f, Op::MulF, &[389, 128, 390], 582);
+                step(f, Op::Select(ValueType::Float), &[53, 886, 390, 391], 583);
+                step(f, Op::SubF, &[400, 391, 401], 584);
+                step(f, Op::AddF, &[381, 401, 402], 585);
+                step(f, Op::Select(ValueType::Float), &[52, 406, 402, 407], 586);
+                step(f, Op::MinF, &[407, 891, 408], 587);
+                step(f, Op::ArraySetAt(Elem::Float), &[2, 38, 408], 588);
+                step(f, Op::JumpIfFalse, &[52, 591], 589)
             }
-            581 => {
-                step(f, Op::Copy(ValueType::Float), &[312, 10], 582);
-                step(f, Op::Copy(ValueType::Bool), &[45, 4], 583);
-                step(f, Op::Copy(ValueType::Float), &[305, 13], 584);
-                step(f, Op::MaxF, &[320, 9, 321], 585);
-                step(f, Op::Select(ValueType::Float), &[35, 847, 321, 322], 586);
-                step(f, Op::Select(ValueType::Float), &[45, 32, 322, 323], 587);
-                step(f, Op::Select(ValueType::Float), &[42, 320, 323, 324], 588);
-                step(f, Op::MulF, &[324, 325, 326], 589);
-                step(f, Op::DivF, &[326, 308, 353], 590);
-                step(f, Op::Copy(ValueType::Float), &[353, 11], 591);
-                step(f, Op::Copy(ValueType::Array(Elem::Bone)), &[0, 4], 592);
-                step(f, Op::Copy(ValueType::Int), &[71, 2], 593);
-                593
+            589 => {
+                step(f, Op::Copy(ValueType::Float), &[342, 9], 590);
+                step(f, Op::Jump, &[591], 591)
+            }
+            591 => {
+                step(f, Op::ArraySetAt(Elem::Float), &[0, 38, 370], 592);
+                step(f, Op::Jump, &[548], 593)
             }
             593 => {
-                step(f, Op::ForEachNext(Elem::Bone), &[4, 2, 0, 3, 4, 1396], 594)
+                step(f, Op::Copy(ValueType::Float), &[330, 10], 594);
+                step(f, Op::Copy(ValueType::Bool), &[45, 4], 595);
+                step(f, Op::Copy(ValueType::Float), &[323, 13], 596);
+                step(f, Op::MaxF, &[338, 9, 339], 597);
+                step(f, Op::Select(ValueType::Float), &[35, 888, 339, 340], 598);
+                step(f, Op::Select(ValueType::Float), &[45, 32, 340, 341], 599);
+                step(f, Op::Select(ValueType::Float), &[42, 338, 341, 342], 600);
+                step(f, Op::MulF, &[342, 343, 344], 601);
+                step(f, Op::DivF, &[344, 326, 371], 602);
+                step(f, Op::Copy(ValueType::Float), &[371, 11], 603);
+                step(f, Op::Copy(ValueType::Array(Elem::Bone)), &[0, 4], 604);
+                step(f, Op::Copy(ValueType::Int), &[71, 2], 605);
+                605
             }
-            594 => {
-                step(f, Op::Copy(ValueType::Bool), &[122, 54], 595);
-                step(f, Op::Copy(ValueType::Bool), &[123, 55], 596);
-                step(f, Op::ArrayAt(Elem::Bool), &[0, 3, 58], 597);
-                step(f, Op::ArrayAt(Elem::Float), &[2, 3, 392], 598);
-                step(f, Op::GreaterEqualF, &[392, 847, 59], 599);
-                step(f, Op::And, &[58, 59, 60], 600);
-                step(f, Op::Or, &[1, 2, 62], 601);
-                step(f, Op::GreaterF, &[21, 845, 61], 602);
-                step(f, Op::Or, &[62, 61, 63], 603);
-                step(f, Op::Not, &[63, 64], 604);
-                step(f, Op::And, &[60, 64, 65], 605);
-                step(f, Op::JumpIfFalse, &[65, 719], 606)
+            605 => {
+                step(f, Op::ForEachNext(Elem::Bone), &[4, 2, 0, 3, 4, 1481], 606)
             }
             606 => {
-                step(f, Op::ArrayAt(Elem::Transform), &[2, 3, 28], 607);
-                step(f, Op::BreakTransform, &[28, 103, 23, 104], 608);
-                step(f, Op::ArrayAt(Elem::Vec3), &[0, 3, 120], 609);
-                step(f, Op::SubV, &[103, 120, 141], 610);
-                step(f, Op::TransformPoint, &[2, 141, 142], 611);
-                step(f, Op::GetTransform, &[34, 71, 122, 25], 612);
-                step(f, Op::BreakTransform, &[25, 87, 15, 88], 613);
-                step(f, Op::BreakVector, &[87, 403, 404, 405], 614);
-                step(f, Op::SubF, &[847, 15, 401], 615);
-                step(f, Op::MulF, &[14, 401, 402], 616);
-                step(f, Op::QuatFromAxisAngle, &[468, 402, 17], 617);
-                step(f, Op::GetTransform, &[0, 71, 122, 26], 618);
-                step(f, Op::BreakTransform, &[26, 89, 16, 90], 619);
-                step(f, Op::SubV, &[89, 87, 91], 620);
-                step(f, Op::BreakVector, &[91, 398, 399, 400], 621);
-                step(f, Op::MakeVector, &[398, 399, 845, 92], 622);
-                step(f, Op::RotateVector, &[17, 92, 93], 623);
-                step(f, Op::BreakVector, &[93, 406, 407, 408], 624);
-                step(f, Op::MulF, &[46, 15, 409], 625);
-                step(f, Op::Equals(Elem::Int), &[3, 71, 56], 626);
-                step(f, Op::Select(ValueType::Float), &[56, 847, 849, 418], 627);
-                step(f, Op::MulF, &[409, 418, 410], 628);
-                step(f, Op::AddF, &[406, 410, 411], 629);
-                step(f, Op::AddF, &[403, 411, 412], 630);
-                step(f, Op::AddF, &[404, 407, 413], 631);
-                step(f, Op::BreakVector, &[89, 414, 415, 416], 632);
-                step(f, Op::SubF, &[416, 50, 417], 633);
-                step(f, Op::MakeVector, &[412, 413, 417, 94], 634);
-                step(f, Op::MulF, &[6, 846, 397], 635);
-                step(f, Op::ScaleV, &[2, 397, 86], 636);
-                step(f, Op::AddV, &[94, 86, 97], 637);
-                step(f, Op::DistanceV, &[142, 97, 445], 638);
-                step(f, Op::TransformVector, &[2, 469, 143], 639);
-                step(f, Op::DistanceV, &[143, 469, 446], 640);
-                step(f, Op::MaxF, &[445, 446, 447], 641);
-                step(f, Op::LessEqualF, &[447, 57, 74], 642);
-                step(f, Op::LengthV, &[2, 448], 643);
-                step(f, Op::LengthV, &[4, 449], 644);
-                step(f, Op::MaxF, &[448, 449, 450], 645);
-                step(f, Op::LessEqualF, &[450, 29, 75], 646);
-                step(f, Op::And, &[74, 75, 76], 647);
-                step(f, Op::ArrayAt(Elem::Bool), &[1, 3, 66], 648);
-                step(f, Op::And, &[76, 66, 77], 649);
-                step(f, Op::JumpIfFalse, &[77, 652], 650)
+                step(f, Op::Copy(ValueType::Bool), &[125, 54], 607);
+                step(f, Op::Copy(ValueType::Bool), &[126, 55], 608);
+                step(f, Op::ArrayAt(Elem::Bool), &[0, 3, 58], 609);
+                step(f, Op::ArrayAt(Elem::Float), &[2, 3, 410], 610);
+                step(f, Op::GreaterEqualF, &[410, 888, 59], 611);
+                step(f, Op::And, &[58, 59, 60], 612);
+                step(f, Op::Or, &[1, 2, 62], 613);
+                step(f, Op::GreaterF, &[21, 886, 61], 614);
+                step(f, Op::Or, &[62, 61, 63], 615);
+                step(f, Op::Not, &[63, 64], 616);
+                step(f, Op::And, &[60, 64, 65], 617);
+                step(f, Op::JumpIfFalse, &[65, 731], 618)
             }
-            650 => {
-                step(f, Op::Copy(ValueType::Bool), &[122, 55], 651);
-                step(f, Op::Jump, &[682], 652)
+            618 => {
+                step(f, Op::ArrayAt(Elem::Transform), &[2, 3, 28], 619);
+                step(f, Op::BreakTransform, &[28, 104, 23, 105], 620);
+                step(f, Op::ArrayAt(Elem::Vec3), &[0, 3, 121], 621);
+                step(f, Op::SubV, &[104, 121, 142], 622);
+                step(f, Op::TransformPoint, &[2, 142, 143], 623);
+                step(f, Op::GetTransform, &[34, 71, 125, 25], 624);
+                step(f, Op::BreakTransform, &[25, 88, 15, 89], 625);
+                step(f, Op::BreakVector, &[88, 421, 422, 423], 626);
+                step(f, Op::SubF, &[888, 15, 419], 627);
+                step(f, Op::MulF, &[14, 419, 420], 628);
+                step(f, Op::QuatFromAxisAngle, &[480, 420, 17], 629);
+                step(f, Op::GetTransform, &[0, 71, 125, 26], 630);
+                step(f, Op::BreakTransform, &[26, 90, 16, 91], 631);
+                step(f, Op::SubV, &[90, 88, 92], 632);
+                step(f, Op::BreakVector, &[92, 416, 417, 418], 633);
+                step(f, Op::MakeVector, &[416, 417, 886, 93], 634);
+                step(f, Op::RotateVector, &[17, 93, 94], 635);
+                step(f, Op::BreakVector, &[94, 424, 425, 426], 636);
+                step(f, Op::MulF, &[46, 15, 427], 637);
+                step(f, Op::Equals(Elem::Int), &[3, 71, 56], 638);
+                step(f, Op::Select(ValueType::Float), &[56, 888, 890, 436], 639);
+                step(f, Op::MulF, &[427, 436, 428], 640);
+                step(f, Op::AddF, &[424, 428, 429], 641);
+                step(f, Op::AddF, &[421, 429, 430], 642);
+                step(f, Op::AddF, &[422, 425, 431], 643);
+                step(f, Op::BreakVector, &[90, 432, 433, 434], 644);
+                step(f, Op::SubF, &[434, 52, 435], 645);
+                step(f, Op::MakeVector, &[430, 431, 435, 95], 646);
+                step(f, Op::MulF, &[6, 887, 415], 647);
+                step(f, Op::ScaleV, &[2, 415, 87], 648);
+                step(f, Op::AddV, &[95, 87, 98], 649);
+                step(f, Op::DistanceV, &[143, 98, 463], 650);
+                step(f, Op::TransformVector, &[2, 482, 144], 651);
+                step(f, Op::DistanceV, &[144, 482, 464], 652);
+                step(f, Op::MaxF, &[463, 464, 465], 653);
+                step(f, Op::LessEqualF, &[465, 59, 74], 654);
+                step(f, Op::LengthV, &[2, 466], 655);
+                step(f, Op::LengthV, &[4, 467], 656);
+                step(f, Op::MaxF, &[466, 467, 468], 657);
+                step(f, Op::LessEqualF, &[468, 29, 75], 658);
+                step(f, Op::And, &[74, 75, 76], 659);
+                step(f, Op::ArrayAt(Elem::Bool), &[1, 3, 66], 660);
+                step(f, Op::And, &[76, 66, 77], 661);
+                step(f, Op::JumpIfFalse, &[77, 664], 662)
             }
-            652 => {
-                step(f, Op::MakeVector, &[845, 845, 55, 122], 653);
-                step(f, Op::AddV, &[97, 122, 123], 654);
-                step(f, Op::SubV, &[97, 122, 124], 655);
-                step(f, Op::SphereTrace, &[123, 124, 54, 67, 125, 126, 437], 656);
-                step(f, Op::SubV, &[125, 97, 139], 657);
-                step(f, Op::DistanceV, &[139, 120, 441], 658);
-                step(f, Op::RotateVector, &[0, 470, 98], 659);
-                step(f, Op::ScaleV, &[98, 59, 127], 660);
-                step(f, Op::AddV, &[123, 127, 128], 661);
-                step(f, Op::AddV, &[124, 127, 129], 662);
-                step(f, Op::SphereTrace, &[128, 129, 54, 68, 130, 131, 438], 663);
-                step(f, Op::SubV, &[130, 97, 140], 664);
-                step(f, Op::ArrayAt(Elem::Vec3), &[1, 3, 121], 665);
-                step(f, Op::DistanceV, &[140, 121, 442], 666);
-                step(f, Op::MaxF, &[441, 442, 443], 667);
-                step(f, Op::ScaleV, &[98, 56, 132], 668);
-                step(f, Op::AddV, &[128, 132, 133], 669);
-                step(f, Op::AddV, &[129, 132, 134], 670);
-                step(f, Op::SphereTrace, &[133, 134, 54, 69, 135, 136, 439], 671);
-                step(f, Op::SubV, &[135, 97, 137], 672);
-                step(f, Op::ArrayAt(Elem::Vec3), &[2, 3, 138], 673);
-                step(f, Op::DistanceV, &[137, 138, 440], 674);
-                step(f, Op::MaxF, &[443, 440, 444], 675);
-                step(f, Op::LessEqualF, &[444, 57, 70], 676);
-                step(f, Op::And, &[67, 68, 71], 677);
-                step(f, Op::And, &[71, 66, 72], 678);
-                step(f, Op::And, &[70, 72, 73], 679);
-                step(f, Op::JumpIfFalse, &[73, 682], 680)
+            662 => {
+                step(f, Op::Copy(ValueType::Bool), &[125, 55], 663);
+                step(f, Op::Jump, &[694], 664)
             }
-            680 => {
-                step(f, Op::Copy(ValueType::Bool), &[122, 55], 681);
-                step(f, Op::Jump, &[682], 682)
+            664 => {
+                step(f, Op::MakeVector, &[886, 886, 57, 123], 665);
+                step(f, Op::AddV, &[98, 123, 124], 666);
+                step(f, Op::SubV, &[98, 123, 125], 667);
+                step(f, Op::SphereTrace, &[124, 125, 56, 67, 126, 127, 455], 668);
+                step(f, Op::SubV, &[126, 98, 140], 669);
+                step(f, Op::DistanceV, &[140, 121, 459], 670);
+                step(f, Op::RotateVector, &[0, 481, 99], 671);
+                step(f, Op::ScaleV, &[99, 61, 128], 672);
+                step(f, Op::AddV, &[124, 128, 129], 673);
+                step(f, Op::AddV, &[125, 128, 130], 674);
+                step(f, Op::SphereTrace, &[129, 130, 56, 68, 131, 132, 456], 675);
+                step(f, Op::SubV, &[131, 98, 141], 676);
+                step(f, Op::ArrayAt(Elem::Vec3), &[1, 3, 122], 677);
+                step(f, Op::DistanceV, &[141, 122, 460], 678);
+                step(f, Op::MaxF, &[459, 460, 461], 679);
+                step(f, Op::ScaleV, &[99, 58, 133], 680);
+                step(f, Op::AddV, &[129, 133, 134], 681);
+                step(f, Op::AddV, &[130, 133, 135], 682);
+                step(f, Op::SphereTrace, &[134, 135, 56, 69, 136, 137, 457], 683);
+                step(f, Op::SubV, &[136, 98, 138], 684);
+                step(f, Op::ArrayAt(Elem::Vec3), &[2, 3, 139], 685);
+                step(f, Op::DistanceV, &[138, 139, 458], 686);
+                step(f, Op::MaxF, &[461, 458, 462], 687);
+                step(f, Op::LessEqualF, &[462, 59, 70], 688);
+                step(f, Op::And, &[67, 68, 71], 689);
+                step(f, Op::And, &[71, 66, 72], 690);
+                step(f, Op::And, &[70, 72, 73], 691);
+                step(f, Op::JumpIfFalse, &[73, 694], 692)
             }
-            682 => {
-                step(f, Op::JumpIfFalse, &[55, 718], 683)
+            692 => {
+                step(f, Op::Copy(ValueType::Bool), &[125, 55], 693);
+                step(f, Op::Jump, &[694], 694)
             }
-            683 => {
-                step(f, Op::ArrayAt(Elem::Transform), &[1, 3, 27], 684);
-                step(f, Op::BreakTransform, &[27, 100, 21, 101], 685);
-                step(f, Op::AddV, &[97, 120, 144], 686);
-                step(f, Op::Copy(ValueType::Float), &[47, 451], 687);
-                step(f, Op::Copy(ValueType::Float), &[49, 452], 688);
-                step(f, Op::SubV, &[144, 103, 149], 689);
-                step(f, Op::DeltaTime, &[453], 690);
-                step(f, Op::DivF, &[452, 453, 454], 691);
-                step(f, Op::ScaleV, &[149, 454, 150], 692);
-                step(f, Op::AddV, &[144, 150, 151], 693);
-                step(f, Op::AddV, &[103, 150, 152], 694);
-                step(f, Op::SubV, &[100, 152, 153], 695);
-                step(f, Op::FloatLerp, &[845, 847, 451, 455], 696);
-                step(f, Op::SubF, &[847, 455, 456], 697);
-                step(f, Op::ScaleV, &[153, 456, 154], 698);
-                step(f, Op::AddV, &[151, 154, 156], 699);
-                step(f, Op::MulF, &[451, 453, 457], 700);
-                step(f, Op::GreaterF, &[457, 845, 78], 701);
-                step(f, Op::DivF, &[455, 457, 458], 702);
-                step(f, Op::Select(ValueType::Float), &[78, 458, 847, 459], 703);
-                step(f, Op::ScaleV, &[149, 459, 155], 704);
-                step(f, Op::SubV, &[156, 155, 157], 705);
-                step(f, Op::Copy(ValueType::Vec3), &[157, 148], 706);
-                step(f, Op::BreakVector, &[148, 460, 461, 462], 707);
-                step(f, Op::ClampF, &[462, 60, 61, 463], 708);
-                step(f, Op::MakeVector, &[460, 461, 463, 158], 709);
-                step(f, Op::MakeTransform, &[158, 21, 465, 31], 710);
-                step(f, Op::ArraySetAt(Elem::Transform), &[1, 3, 31], 711);
-                step(f, Op::MakeTransform, &[144, 92, 465, 32], 712);
-                step(f, Op::ArraySetAt(Elem::Transform), &[2, 3, 32], 713);
-                step(f, Op::JumpIfFalse, &[66, 716], 714)
+            694 => {
+                step(f, Op::JumpIfFalse, &[55, 730], 695)
             }
-            714 => {
-                step(f, Op::Copy(ValueType::Bool), &[122, 7], 715);
-                step(f, Op::Jump, &[716], 716)
+            695 => {
+                step(f, Op::ArrayAt(Elem::Transform), &[1, 3, 27], 696);
+                step(f, Op::BreakTransform, &[27, 101, 21, 102], 697);
+                step(f, Op::AddV, &[98, 121, 145], 698);
+                step(f, Op::Copy(ValueType::Float), &[49, 469], 699);
+                step(f, Op::Copy(ValueType::Float), &[51, 470], 700);
+                step(f, Op::SubV, &[145, 104, 150], 701);
+                step(f, Op::DeltaTime, &[471], 702);
+                step(f, Op::DivF, &[470, 471, 472], 703);
+                step(f, Op::ScaleV, &[150, 472, 151], 704);
+                step(f, Op::AddV, &[145, 151, 152], 705);
+                step(f, Op::AddV, &[104, 151, 153], 706);
+                step(f, Op::SubV, &[101, 153, 154], 707);
+                step(f, Op::FloatLerp, &[886, 888, 469, 473], 708);
+                step(f, Op::SubF, &[888, 473, 474], 709);
+                step(f, Op::ScaleV, &[154, 474, 155], 710);
+                step(f, Op::AddV, &[152, 155, 157], 711);
+                step(f, Op::MulF, &[469, 471, 475], 712);
+                step(f, Op::GreaterF, &[475, 886, 78], 713);
+                step(f, Op::DivF, &[473, 475, 476], 714);
+                step(f, Op::Select(ValueType::Float), &[78, 476, 888, 477], 715);
+                step(f, Op::ScaleV, &[150, 477, 156], 716);
+                step(f, Op::SubV, &[157, 156, 158], 717);
+                step(f, Op::Copy(ValueType::Vec3), &[158, 149], 718);
+                step(f, Op::BreakVector, &[149, 478, 479, 480], 719);
+                step(f, Op::ClampF, &[480, 62, 63, 481], 720);
+                step(f, Op::MakeVector, &[478, 479, 481, 159], 721);
+                step(f, Op::MakeTransform, &[159, 21, 477, 31], 722);
+                step(f, Op::ArraySetAt(Elem::Transform), &[1, 3, 31], 723);
+                step(f, Op::MakeTransform, &[145, 94, 477, 32], 724);
+                step(f, Op::ArraySetAt(Elem::Transform), &[2, 3, 32], 725);
+                step(f, Op::JumpIfFalse, &[66, 728], 726)
             }
-            716 => {
-                step(f, Op::Copy(ValueType::Bool), &[123, 54], 717);
-                step(f, Op::Jump, &[718], 718)
+            726 => {
+                step(f, Op::Copy(ValueType::Bool), &[125, 7], 727);
+                step(f, Op::Jump, &[728], 728)
             }
-            718 => {
-                step(f, Op::Jump, &[719], 719)
+            728 => {
+                step(f, Op::Copy(ValueType::Bool), &[126, 54], 729);
+                step(f, Op::Jump, &[730], 730)
             }
-            719 => {
-                step(f, Op::JumpIfFalse, &[54, 929], 720)
+            730 => {
+                step(f, Op::Jump, &[731], 731)
             }
-            720 => {
-                step(f, Op::GetTransform, &[34, 71, 122, 25], 721);
-                step(f, Op::BreakTransform, &[25, 87, 15, 88], 722);
-                step(f, Op::BreakVector, &[87, 403, 404, 405], 723);
-                step(f, Op::SubF, &[847, 15, 401], 724);
-                step(f, Op::MulF, &[14, 401, 402], 725);
-                step(f, Op::QuatFromAxisAngle, &[468, 402, 17], 726);
-                step(f, Op::GetTransform, &[0, 71, 122, 26], 727);
-                step(f, Op::BreakTransform, &[26, 89, 16, 90], 728);
-                step(f, Op::SubV, &[89, 87, 91], 729);
-                step(f, Op::BreakVector, &[91, 398, 399, 400], 730);
-                step(f, Op::MakeVector, &[398, 399, 845, 92], 731);
-                step(f, Op::RotateVector, &[17, 92, 93], 732);
-                step(f, Op::BreakVector, &[93, 406, 407, 408], 733);
-                step(f, Op::MulF, &[46, 15, 409], 734);
-                step(f, Op::Equals(Elem::Int), &[3, 71, 56], 735);
-                step(f, Op::Select(ValueType::Float), &[56, 847, 849, 418], 736);
-                step(f, Op::MulF, &[409, 418, 410], 737);
-                step(f, Op::AddF, &[406, 410, 411], 738);
-                step(f, Op::AddF, &[403, 411, 412], 739);
-                step(f, Op::AddF, &[404, 407, 413], 740);
-                step(f, Op::BreakVector, &[89, 414, 415, 416], 741);
-                step(f, Op::SubF, &[416, 50, 417], 742);
-                step(f, Op::MakeVector, &[412, 413, 417, 94], 743);
-                step(f, Op::SubF, &[847, 392, 393], 744);
-                step(f, Op::MaxF, &[393, 845, 394], 745);
-                step(f, Op::MulF, &[10, 7, 395], 746);
-                step(f, Op::MulF, &[394, 395, 396], 747);
-                step(f, Op::ScaleV, &[2, 396, 85], 748);
-                step(f, Op::AddV, &[94, 85, 95], 749);
-                step(f, Op::MulF, &[6, 846, 397], 750);
-                step(f, Op::ScaleV, &[2, 397, 86], 751);
-                step(f, Op::AddV, &[95, 86, 96], 752);
-                step(f, Op::RotateVector, &[0, 470, 98], 753);
-                step(f, Op::Copy(ValueType::Float), &[852, 465], 754);
-                step(f, Op::Copy(ValueType::Vec3), &[466, 163], 755);
-                step(f, Op::Copy(ValueType::Vec3), &[468, 164], 756);
-                step(f, Op::Copy(ValueType::Bool), &[123, 80], 757);
-                step(f, Op::Copy(ValueType::Float), &[852, 466], 758);
-                step(f, Op::Copy(ValueType::Vec3), &[466, 165], 759);
-                step(f, Op::MulI, &[0, 0, 52], 760);
-                step(f, Op::Copy(ValueType::Int), &[52, 51], 761);
-                step(f, Op::Copy(ValueType::Int), &[71, 47], 762);
-                step(f, Op::SubI, &[0, 72, 55], 763);
-                step(f, Op::DivI, &[55, 73, 56], 764);
-                step(f, Op::MakeVector, &[845, 845, 55, 170], 765);
-                step(f, Op::ScaleV, &[98, 59, 175], 766);
-                766
+            731 => {
+                step(f, Op::JumpIfFalse, &[54, 941], 732)
             }
-            766 => {
-                step(f, Op::ForNext, &[47, 51, 49, 814], 767)
+            732 => {
+                step(f, Op::GetTransform, &[34, 71, 125, 25], 733);
+                step(f, Op::BreakTransform, &[25, 88, 15, 89], 734);
+                step(f, Op::BreakVector, &[88, 421, 422, 423], 735);
+                step(f, Op::SubF, &[888, 15, 419], 736);
+                step(f, Op::MulF, &[14, 419, 420], 737);
+                step(f, Op::QuatFromAxisAngle, &[480, 420, 17], 738);
+                step(f, Op::GetTransform, &[0, 71, 125, 26], 739);
+                step(f, Op::BreakTransform, &[26, 90, 16, 91], 740);
+                step(f, Op::SubV, &[90, 88, 92], 741);
+                step(f, Op::BreakVector, &[92, 416, 417, 418], 742);
+                step(f, Op::MakeVector, &[416, 417, 886, 93], 743);
+                step(f, Op::RotateVector, &[17, 93, 94], 744);
+                step(f, Op::BreakVector, &[94, 424, 425, 426], 745);
+                step(f, Op::MulF, &[46, 15, 427], 746);
+                step(f, Op::Equals(Elem::Int), &[3, 71, 56], 747);
+                step(f, Op::Select(ValueType::Float), &[56, 888, 890, 436], 748);
+                step(f, Op::MulF, &[427, 436, 428], 749);
+                step(f, Op::AddF, &[424, 428, 429], 750);
+                step(f, Op::AddF, &[421, 429, 430], 751);
+                step(f, Op::AddF, &[422, 425, 431], 752);
+                step(f, Op::BreakVector, &[90, 432, 433, 434], 753);
+                step(f, Op::SubF, &[434, 52, 435], 754);
+                step(f, Op::MakeVector, &[430, 431, 435, 95], 755);
+                step(f, Op::SubF, &[888, 410, 411], 756);
+                step(f, Op::MaxF, &[411, 886, 412], 757);
+                step(f, Op::MulF, &[10, 7, 413], 758);
+                step(f, Op::MulF, &[412, 413, 414], 759);
+                step(f, Op::ScaleV, &[2, 414, 86], 760);
+                step(f, Op::AddV, &[95, 86, 96], 761);
+                step(f, Op::MulF, &[6, 887, 415], 762);
+                step(f, Op::ScaleV, &[2, 415, 87], 763);
+                step(f, Op::AddV, &[96, 87, 97], 764);
+                step(f, Op::RotateVector, &[0, 481, 99], 765);
+                step(f, Op::Copy(ValueType::Float), &[893, 483], 766);
+                step(f, Op::Copy(ValueType::Vec3), &[478, 164], 767);
+                step(f, Op::Copy(ValueType::Vec3), &[480, 165], 768);
+                step(f, Op::Copy(ValueType::Bool), &[126, 80], 769);
+                step(f, Op::Copy(ValueType::Float), &[893, 484], 770);
+                step(f, Op::Copy(ValueType::Vec3), &[478, 166], 771);
+                step(f, Op::MulI, &[0, 0, 52], 772);
+                step(f, Op::Copy(ValueType::Int), &[52, 51], 773);
+                step(f, Op::Copy(ValueType::Int), &[71, 47], 774);
+                step(f, Op::SubI, &[0, 72, 55], 775);
+                step(f, Op::DivI, &[55, 73, 56], 776);
+                step(f, Op::MakeVector, &[886, 886, 57, 171], 777);
+                step(f, Op::ScaleV, &[99, 61, 176], 778);
+                778
             }
-            767 => {
-                step(f, Op::ModI, &[49, 0, 53], 768);
-                step(f, Op::ToFloat, &[53, 467], 769);
-                step(f, Op::MulF, &[467, 56, 469], 770);
-                step(f, Op::MulF, &[469, 418, 470], 771);
-                step(f, Op::MakeVector, &[470, 845, 845, 166], 772);
-                step(f, Op::DivI, &[49, 0, 54], 773);
-                step(f, Op::SubI, &[54, 56, 57], 774);
-                step(f, Op::ToFloat, &[57, 468], 775);
-                step(f, Op::MulF, &[468, 56, 471], 776);
-                step(f, Op::ScaleV, &[98, 471, 167], 777);
-                step(f, Op::AddV, &[166, 167, 168], 778);
-                step(f, Op::AddV, &[96, 168, 169], 779);
-                step(f, Op::AddV, &[169, 170, 171], 780);
-                step(f, Op::SubV, &[169, 170, 172], 781);
-                step(f, Op::SphereTrace, &[171, 172, 54, 81, 173, 174, 472], 782);
-                step(f, Op::BreakVector, &[173, 474, 475, 476], 783);
-                step(f, Op::AddV, &[171, 175, 176], 784);
-                step(f, Op::AddV, &[172, 175, 177], 785);
-                step(f, Op::SphereTrace, &[176, 177, 54, 82, 178, 179, 473], 786);
-                step(f, Op::BreakVector, &[178, 477, 478, 479], 787);
-                step(f, Op::SubF, &[476, 479, 480], 788);
-                step(f, Op::AbsF, &[480, 481], 789);
-                step(f, Op::Select(ValueType::Float), &[81, 845, 847, 482], 790);
-                step(f, Op::AddF, &[481, 482, 487], 791);
-                step(f, Op::LengthV, &[168, 483], 792);
-                step(f, Op::RemapF, &[483, 845, 858, 845, 847, 122, 484], 793);
-                step(f, Op::MinF, &[476, 479, 485], 794);
-                step(f, Op::RemapF, &[485, 859, 858, 847, 846, 122, 486], 795);
-                step(f, Op::AddF, &[484, 486, 488], 796);
-                step(f, Op::AddF, &[487, 488, 489], 797);
-                step(f, Op::LessF, &[489, 465, 83], 798);
-                step(f, Op::And, &[81, 83, 84], 799);
-                step(f, Op::JumpIfFalse, &[84, 807], 800)
+            778 => {
+                step(f, Op::ForNext, &[47, 51, 49, 826], 779)
             }
-            800 => {
-                step(f, Op::Copy(ValueType::Float), &[465, 466], 801);
-                step(f, Op::Copy(ValueType::Vec3), &[163, 165], 802);
-                step(f, Op::Copy(ValueType::Float), &[489, 465], 803);
-                step(f, Op::Copy(ValueType::Vec3), &[173, 163], 804);
-                step(f, Op::Copy(ValueType::Vec3), &[174, 164], 805);
-                step(f, Op::Copy(ValueType::Bool), &[122, 80], 806);
-                step(f, Op::Jump, &[813], 807)
+            779 => {
+                step(f, Op::ModI, &[49, 0, 53], 780);
+                step(f, Op::ToFloat, &[53, 485], 781);
+                step(f, Op::MulF, &[485, 58, 487], 782);
+                step(f, Op::MulF, &[487, 436, 488], 783);
+                step(f, Op::MakeVector, &[488, 886, 886, 167], 784);
+                step(f, Op::DivI, &[49, 0, 54], 785);
+                step(f, Op::SubI, &[54, 56, 57], 786);
+                step(f, Op::ToFloat, &[57, 486], 787);
+                step(f, Op::MulF, &[486, 58, 489], 788);
+                step(f, Op::ScaleV, &[99, 489, 168], 789);
+                step(f, Op::AddV, &[167, 168, 169], 790);
+                step(f, Op::AddV, &[97, 169, 170], 791);
+                step(f, Op::AddV, &[170, 171, 172], 792);
+                step(f, Op::SubV, &[170, 171, 173], 793);
+                step(f, Op::SphereTrace, &[172, 173, 56, 81, 174, 175, 490], 794);
+                step(f, Op::BreakVector, &[174, 492, 493, 494], 795);
+                step(f, Op::AddV, &[172, 176, 177], 796);
+                step(f, Op::AddV, &[173, 176, 178], 797);
+                step(f, Op::SphereTrace, &[177, 178, 56, 82, 179, 180, 491], 798);
+                step(f, Op::BreakVector, &[179, 495, 496, 497], 799);
+                step(f, Op::SubF, &[494, 497, 498], 800);
+                step(f, Op::AbsF, &[498, 499], 801);
+                step(f, Op::Select(ValueType::Float), &[81, 886, 888, 500], 802);
+                step(f, Op::AddF, &[499, 500, 505], 803);
+                step(f, Op::LengthV, &[169, 501], 804);
+                step(f, Op::RemapF, &[501, 886, 899, 886, 888, 125, 502], 805);
+                step(f, Op::MinF, &[494, 497, 503], 806);
+                step(f, Op::RemapF, &[503, 900, 899, 888, 887, 125, 504], 807);
+                step(f, Op::AddF, &[502, 504, 506], 808);
+                step(f, Op::AddF, &[505, 506, 507], 809);
+                step(f, Op::LessF, &[507, 483, 83], 810);
+                step(f, Op::And, &[81, 83, 84], 811);
+                step(f, Op::JumpIfFalse, &[84, 819], 812)
             }
-            807 => {
-                step(f, Op::LessF, &[489, 466, 85], 808);
-                step(f, Op::And, &[81, 85, 86], 809);
-                step(f, Op::JumpIfFalse, &[86, 813], 810)
+            812 => {
+                step(f, Op::Copy(ValueType::Float), &[483, 484], 813);
+                step(f, Op::Copy(ValueType::Vec3), &[164, 166], 814);
+                step(f, Op::Copy(ValueType::Float), &[507, 483], 815);
+                step(f, Op::Copy(ValueType::Vec3), &[174, 164], 816);
+                step(f, Op::Copy(ValueType::Vec3), &[175, 165], 817);
+                step(f, Op::Copy(ValueType::Bool), &[125, 80], 818);
+                step(f, Op::Jump, &[825], 819)
             }
-            810 => {
-                step(f, Op::Copy(ValueType::Float), &[489, 466], 811);
-                step(f, Op::Copy(ValueType::Vec3), &[173, 165], 812);
-                step(f, Op::Jump, &[813], 813)
+            819 => {
+                step(f, Op::LessF, &[507, 484, 85], 820);
+                step(f, Op::And, &[81, 85, 86], 821);
+                step(f, Op::JumpIfFalse, &[86, 825], 822)
             }
-            813 => {
-                step(f, Op::Jump, &[766], 814)
+            822 => {
+                step(f, Op::Copy(ValueType::Float), &[507, 484], 823);
+                step(f, Op::Copy(ValueType::Vec3), &[174, 166], 824);
+                step(f, Op::Jump, &[825], 825)
             }
-            814 => {
-                step(f, Op::JumpIfFalse, &[8, 817], 815)
+            825 => {
+                step(f, Op::Jump, &[778], 826)
             }
-            815 => {
-                step(f, Op::DrawSphere, &[163, 54, 470], 816);
-                step(f, Op::Jump, &[817], 817)
+            826 => {
+                step(f, Op::JumpIfFalse, &[8, 829], 827)
             }
-            817 => {
-                step(f, Op::GreaterF, &[58, 845, 87], 818);
-                step(f, Op::SubF, &[465, 466, 490], 819);
-                step(f, Op::DivF, &[490, 58, 491], 820);
-                step(f, Op::PowF, &[860, 491, 492], 821);
-                step(f, Op::Select(ValueType::Float), &[87, 492, 845, 493], 822);
-                step(f, Op::ScaleV, &[165, 493, 180], 823);
-                step(f, Op::AddV, &[163, 180, 181], 824);
-                step(f, Op::AddF, &[493, 847, 494], 825);
-                step(f, Op::DivF, &[847, 494, 495], 826);
-                step(f, Op::ScaleV, &[181, 495, 182], 827);
-                step(f, Op::Copy(ValueType::Vec3), &[182, 161], 828);
-                step(f, Op::Copy(ValueType::Vec3), &[164, 162], 829);
-                step(f, Op::Copy(ValueType::Bool), &[80, 79], 830);
-                step(f, Op::ArrayAt(Elem::Transform), &[1, 3, 27], 831);
-                step(f, Op::BreakTransform, &[27, 100, 21, 101], 832);
-                step(f, Op::ArrayAt(Elem::Float), &[2, 3, 392], 833);
-                step(f, Op::SubF, &[847, 392, 393], 834);
-                step(f, Op::MaxF, &[393, 845, 394], 835);
-                step(f, Op::MulF, &[10, 7, 395], 836);
-                step(f, Op::MulF, &[394, 395, 396], 837);
-                step(f, Op::ScaleV, &[2, 396, 85], 838);
-                step(f, Op::SubV, &[161, 85, 99], 839);
-                step(f, Op::Select(ValueType::Vec3), &[79, 99, 100, 102], 840);
-                step(f, Op::ArrayAt(Elem::Transform), &[2, 3, 28], 841);
-                step(f, Op::BreakTransform, &[28, 103, 23, 104], 842);
-                step(f, Op::Copy(ValueType::Float), &[47, 424], 843);
-                step(f, Op::Copy(ValueType::Float), &[49, 425], 844);
-                step(f, Op::SubV, &[102, 103, 109], 845);
-                step(f, Op::DeltaTime, &[426], 846);
-                step(f, Op::DivF, &[425, 426, 427], 847);
-                step(f, Op::ScaleV, &[109, 427, 110], 848);
-                step(f, Op::AddV, &[102, 110, 111], 849);
-                step(f, Op::AddV, &[103, 110, 112], 850);
-                step(f, Op::SubV, &[100, 112, 113], 851);
-                step(f, Op::FloatLerp, &[845, 847, 424, 428], 852);
-                step(f, Op::SubF, &[847, 428, 429], 853);
-                step(f, Op::ScaleV, &[113, 429, 114], 854);
-                step(f, Op::AddV, &[111, 114, 116], 855);
-                step(f, Op::MulF, &[424, 426, 430], 856);
-                step(f, Op::GreaterF, &[430, 845, 57], 857);
-                step(f, Op::DivF, &[428, 430, 431], 858);
-                step(f, Op::Select(ValueType::Float), &[57, 431, 847, 432], 859);
-                step(f, Op::ScaleV, &[109, 432, 115], 860);
-                step(f, Op::SubV, &[116, 115, 117], 861);
-                step(f, Op::Copy(ValueType::Vec3), &[117, 108], 862);
-                step(f, Op::BreakVector, &[108, 433, 434, 435], 863);
-                step(f, Op::ClampF, &[435, 60, 61, 436], 864);
-                step(f, Op::MakeVector, &[433, 434, 436, 118], 865);
-                step(f, Op::RotationFromNormal, &[162, 422, 423, 19], 866);
-                step(f, Op::PerFootRotationFactor, &[14, 98, 99, 419], 867);
-                step(f, Op::MulF, &[14, 419, 420], 868);
-                step(f, Op::SubF, &[847, 15, 401], 869);
-                step(f, Op::MulF, &[420, 401, 421], 870);
-                step(f, Op::QuatFromAxisAngle, &[468, 421, 18], 871);
-                step(f, Op::MulQ, &[19, 18, 20], 872);
-                step(f, Op::Select(ValueType::Quat), &[79, 20, 21, 22], 873);
-                step(f, Op::MakeTransform, &[118, 22, 465, 30], 874);
-                step(f, Op::ArraySetAt(Elem::Transform), &[1, 3, 30], 875);
-                step(f, Op::ArrayAt(Elem::Transform), &[1, 3, 27], 876);
-                step(f, Op::BreakTransform, &[27, 100, 21, 101], 877);
-                step(f, Op::Select(ValueType::Vec3), &[79, 99, 100, 102], 878);
-                step(f, Op::MakeTransform, &[102, 92, 465, 29], 879);
-                step(f, Op::ArraySetAt(Elem::Transform), &[2, 3, 29], 880);
-                step(f, Op::GetTransform, &[34, 71, 122, 25], 881);
-                step(f, Op::BreakTransform, &[25, 87, 15, 88], 882);
-                step(f, Op::BreakVector, &[87, 403, 404, 405], 883);
-                step(f, Op::MulF, &[14, 401, 402], 884);
-                step(f, Op::QuatFromAxisAngle, &[468, 402, 17], 885);
-                step(f, Op::GetTransform, &[0, 71, 122, 26], 886);
-                step(f, Op::BreakTransform, &[26, 89, 16, 90], 887);
-                step(f, Op::SubV, &[89, 87, 91], 888);
-                step(f, Op::BreakVector, &[91, 398, 399, 400], 889);
-                step(f, Op::MakeVector, &[398, 399, 845, 92], 890);
-                step(f, Op::RotateVector, &[17, 92, 93], 891);
-                step(f, Op::BreakVector, &[93, 406, 407, 408], 892);
-                step(f, Op::MulF, &[46, 15, 409], 893);
-                step(f, Op::MulF, &[409, 418, 410], 894);
-                step(f, Op::AddF, &[406, 410, 411], 895);
-                step(f, Op::AddF, &[403, 411, 412], 896);
-                step(f, Op::AddF, &[404, 407, 413], 897);
-                step(f, Op::BreakVector, &[89, 414, 415, 416], 898);
-                step(f, Op::SubF, &[416, 50, 417], 899);
-                step(f, Op::MakeVector, &[412, 413, 417, 94], 900);
-                step(f, Op::MulF, &[6, 846, 397], 901);
-                step(f, Op::ScaleV, &[2, 397, 86], 902);
-                step(f, Op::AddV, &[94, 86, 97], 903);
-                step(f, Op::SubV, &[102, 97, 119], 904);
-                step(f, Op::ArraySetAt(Elem::Vec3), &[0, 3, 119], 905);
-                step(f, Op::ArraySetAt(Elem::Bool), &[1, 3, 79], 906);
-                step(f, Op::GreaterEqualF, &[392, 847, 59], 907);
-                step(f, Op::JumpIfFalse, &[59, 925], 908)
+            827 => {
+                step(f, Op::DrawSphere, &[164, 56, 481], 828);
+                step(f, Op::Jump, &[829], 829)
             }
-            908 => {
-                step(f, Op::MakeVector, &[845, 845, 55, 122], 909);
-                step(f, Op::AddV, &[97, 122, 123], 910);
-                step(f, Op::RotateVector, &[0, 470, 98], 911);
-                step(f, Op::ScaleV, &[98, 59, 127], 912);
-                step(f, Op::AddV, &[123, 127, 128], 913);
-                step(f, Op::SubV, &[97, 122, 124], 914);
-                step(f, Op::AddV, &[124, 127, 129], 915);
-                step(f, Op::SphereTrace, &[128, 129, 54, 68, 130, 131, 438], 916);
-                step(f, Op::SubV, &[130, 97, 140], 917);
-                step(f, Op::ArraySetAt(Elem::Vec3), &[1, 3, 140], 918);
-                step(f, Op::ScaleV, &[98, 56, 132], 919);
-                step(f, Op::AddV, &[128, 132, 133], 920);
-                step(f, Op::AddV, &[129, 132, 134], 921);
-                step(f, Op::SphereTrace, &[133, 134, 54, 69, 135, 136, 439], 922);
-                step(f, Op::SubV, &[135, 97, 137], 923);
-                step(f, Op::ArraySetAt(Elem::Vec3), &[2, 3, 137], 924);
-                step(f, Op::Jump, &[925], 925)
+            829 => {
+                step(f, Op::GreaterF, &[60, 886, 87], 830);
+                step(f, Op::SubF, &[483, 484, 508], 831);
+                step(f, Op::DivF, &[508, 60, 509], 832);
+                step(f, Op::PowF, &[901, 509, 510], 833);
+                step(f, Op::Select(ValueType::Float), &[87, 510, 886, 511], 834);
+                step(f, Op::ScaleV, &[166, 511, 181], 835);
+                step(f, Op::AddV, &[164, 181, 182], 836);
+                step(f, Op::AddF, &[511, 888, 512], 837);
+                step(f, Op::DivF, &[888, 512, 513], 838);
+                step(f, Op::ScaleV, &[182, 513, 183], 839);
+                step(f, Op::Copy(ValueType::Vec3), &[183, 162], 840);
+                step(f, Op::Copy(ValueType::Vec3), &[165, 163], 841);
+                step(f, Op::Copy(ValueType::Bool), &[80, 79], 842);
+                step(f, Op::ArrayAt(Elem::Transform), &[1, 3, 27], 843);
+                step(f, Op::BreakTransform, &[27, 101, 21, 102], 844);
+                step(f, Op::ArrayAt(Elem::Float), &[2, 3, 410], 845);
+                step(f, Op::SubF, &[888, 410, 411], 846);
+                step(f, Op::MaxF, &[411, 886, 412], 847);
+                step(f, Op::MulF, &[10, 7, 413], 848);
+                step(f, Op::MulF, &[412, 413, 414], 849);
+                step(f, Op::ScaleV, &[2, 414, 86], 850);
+                step(f, Op::SubV, &[162, 86, 100], 851);
+                step(f, Op::Select(ValueType::Vec3), &[79, 100, 101, 103], 852);
+                step(f, Op::ArrayAt(Elem::Transform), &[2, 3, 28], 853);
+                step(f, Op::BreakTransform, &[28, 104, 23, 105], 854);
+                step(f, Op::Copy(ValueType::Float), &[49, 442], 855);
+                step(f, Op::Copy(ValueType::Float), &[51, 443], 856);
+                step(f, Op::SubV, &[103, 104, 110], 857);
+                step(f, Op::DeltaTime, &[444], 858);
+                step(f, Op::DivF, &[443, 444, 445], 859);
+                step(f, Op::ScaleV, &[110, 445, 111], 860);
+                step(f, Op::AddV, &[103, 111, 112], 861);
+                step(f, Op::AddV, &[104, 111, 113], 862);
+                step(f, Op::SubV, &[101, 113, 114], 863);
+                step(f, Op::FloatLerp, &[886, 888, 442, 446], 864);
+                step(f, Op::SubF, &[888, 446, 447], 865);
+                step(f, Op::ScaleV, &[114, 447, 115], 866);
+                step(f, Op::AddV, &[112, 115, 117], 867);
+                step(f, Op::MulF, &[442, 444, 448], 868);
+                step(f, Op::GreaterF, &[448, 886, 57], 869);
+                step(f, Op::DivF, &[446, 448, 449], 870);
+                step(f, Op::Select(ValueType::Float), &[57, 449, 888, 450], 871);
+                step(f, Op::ScaleV, &[110, 450, 116], 872);
+                step(f, Op::SubV, &[117, 116, 118], 873);
+                step(f, Op::Copy(ValueType::Vec3), &[118, 109], 874);
+                step(f, Op::BreakVector, &[109, 451, 452, 453], 875);
+                step(f, Op::ClampF, &[453, 62, 63, 454], 876);
+                step(f, Op::MakeVector, &[451, 452, 454, 119], 877);
+                step(f, Op::RotationFromNormal, &[163, 440, 441, 19], 878);
+                step(f, Op::PerFootRotationFactor, &[14, 104, 105, 437], 879);
+                step(f, Op::MulF, &[14, 437, 438], 880);
+                step(f, Op::SubF, &[888, 15, 419], 881);
+                step(f, Op::MulF, &[438, 419, 439], 882);
+                step(f, Op::QuatFromAxisAngle, &[480, 439, 18], 883);
+                step(f, Op::MulQ, &[19, 18, 20], 884);
+                step(f, Op::Select(ValueType::Quat), &[79, 20, 21, 22], 885);
+                step(f, Op::MakeTransform, &[119, 22, 477, 30], 886);
+                step(f, Op::ArraySetAt(Elem::Transform), &[1, 3, 30], 887);
+                step(f, Op::ArrayAt(Elem::Transform), &[1, 3, 27], 888);
+                step(f, Op::BreakTransform, &[27, 101, 21, 102], 889);
+                step(f, Op::Select(ValueType::Vec3), &[79, 100, 101, 103], 890);
+                step(f, Op::MakeTransform, &[103, 94, 477, 29], 891);
+                step(f, Op::ArraySetAt(Elem::Transform), &[2, 3, 29], 892);
+                step(f, Op::GetTransform, &[34, 71, 125, 25], 893);
+                step(f, Op::BreakTransform, &[25, 88, 15, 89], 894);
+                step(f, Op::BreakVector, &[88, 421, 422, 423], 895);
+                step(f, Op::MulF, &[14, 419, 420], 896);
+                step(f, Op::QuatFromAxisAngle, &[480, 420, 17], 897);
+                step(f, Op::GetTransform, &[0, 71, 125, 26], 898);
+                step(f, Op::BreakTransform, &[26, 90, 16, 91], 899);
+                step(f, Op::SubV, &[90, 88, 92], 900);
+                step(f, Op::BreakVector, &[92, 416, 417, 418], 901);
+                step(f, Op::MakeVector, &[416, 417, 886, 93], 902);
+                step(f, Op::RotateVector, &[17, 93, 94], 903);
+                step(f, Op::BreakVector, &[94, 424, 425, 426], 904);
+                step(f, Op::MulF, &[46, 15, 427], 905);
+                step(f, Op::MulF, &[427, 436, 428], 906);
+                step(f, Op::AddF, &[424, 428, 429], 907);
+                step(f, Op::AddF, &[421, 429, 430], 908);
+                step(f, Op::AddF, &[422, 425, 431], 909);
+                step(f, Op::BreakVector, &[90, 432, 433, 434], 910);
+                step(f, Op::SubF, &[434, 52, 435], 911);
+                step(f, Op::MakeVector, &[430, 431, 435, 95], 912);
+                step(f, Op::MulF, &[6, 887, 415], 913);
+                step(f, Op::ScaleV, &[2, 415, 87], 914);
+                step(f, Op::AddV, &[95, 87, 98], 915);
+                step(f, Op::SubV, &[103, 98, 120], 916);
+                step(f, Op::ArraySetAt(Elem::Vec3), &[0, 3, 120], 917);
+                step(f, Op::ArraySetAt(Elem::Bool), &[1, 3, 79], 918);
+                step(f, Op::GreaterEqualF, &[410, 888, 59], 919);
+                step(f, Op::JumpIfFalse, &[59, 937], 920)
             }
-            925 => {
-                step(f, Op::JumpIfFalse, &[79, 928], 926)
+            920 => {
+                step(f, Op::MakeVector, &[886, 886, 57, 123], 921);
+                step(f, Op::AddV, &[98, 123, 124], 922);
+                step(f, Op::RotateVector, &[0, 481, 99], 923);
+                step(f, Op::ScaleV, &[99, 61, 128], 924);
+                step(f, Op::AddV, &[124, 128, 129], 925);
+                step(f, Op::SubV, &[98, 123, 125], 926);
+                step(f, Op::AddV, &[125, 128, 130], 927);
+                step(f, Op::SphereTrace, &[129, 130, 56, 68, 131, 132, 456], 928);
+                step(f, Op::SubV, &[131, 98, 141], 929);
+                step(f, Op::ArraySetAt(Elem::Vec3), &[1, 3, 141], 930);
+                step(f, Op::ScaleV, &[99, 58, 133], 931);
+                step(f, Op::AddV, &[129, 133, 134], 932);
+                step(f, Op::AddV, &[130, 133, 135], 933);
+                step(f, Op::SphereTrace, &[134, 135, 56, 69, 136, 137, 457], 934);
+                step(f, Op::SubV, &[136, 98, 138], 935);
+                step(f, Op::ArraySetAt(Elem::Vec3), &[2, 3, 138], 936);
+                step(f, Op::Jump, &[937], 937)
             }
-            926 => {
-                step(f, Op::Copy(ValueType::Bool), &[122, 7], 927);
-                step(f, Op::Jump, &[928], 928)
+            937 => {
+                step(f, Op::JumpIfFalse, &[79, 940], 938)
             }
-            928 => {
-                step(f, Op::Jump, &[929], 929)
+            938 => {
+                step(f, Op::Copy(ValueType::Bool), &[125, 7], 939);
+                step(f, Op::Jump, &[940], 940)
             }
-            929 => {
-                step(f, Op::ArrayAt(Elem::Transform), &[0, 3, 35], 930);
-                step(f, Op::GreaterF, &[21, 845, 91], 931);
-                step(f, Op::InterpolateTransform, &[2, 115, 22, 33], 932);
-                step(f, Op::Select(ValueType::Transform), &[91, 33, 2, 34], 933);
-                step(f, Op::MakeAbsolute, &[35, 34, 36], 934);
-                step(f, Op::BreakTransform, &[36, 183, 24, 184], 935);
-                step(f, Op::ArrayAt(Elem::Transform), &[8, 3, 37], 936);
-                step(f, Op::BreakTransform, &[37, 185, 25, 186], 937);
-                step(f, Op::AddF, &[64, 65, 497], 938);
-                step(f, Op::ClampSpatially, &[183, 185, 845, 497, 187], 939);
-                step(f, Op::SubF, &[847, 15, 512], 940);
-                step(f, Op::MulF, &[14, 512, 498], 941);
-                step(f, Op::LimitRotationAroundZ, &[24, 498, 97, 26], 942);
-                step(f, Op::MakeTransform, &[187, 26, 465, 38], 943);
-                step(f, Op::ArraySetAt(Elem::Transform), &[0, 3, 38], 944);
-                step(f, Op::ArrayAt(Elem::Bool), &[0, 3, 88], 945);
-                step(f, Op::JumpIfFalse, &[88, 999], 946)
+            940 => {
+                step(f, Op::Jump, &[941], 941)
             }
-            946 => {
-                step(f, Op::ArrayAt(Elem::Float), &[2, 3, 496], 947);
-                step(f, Op::GreaterEqualF, &[496, 847, 89], 948);
-                step(f, Op::JumpIfFalse, &[89, 950], 949)
+            941 => {
+                step(f, Op::ArrayAt(Elem::Transform), &[0, 3, 35], 942);
+                step(f, Op::GreaterF, &[21, 886, 91], 943);
+                step(f, Op::InterpolateTransform, &[2, 121, 22, 33], 944);
+                step(f, Op::Select(ValueType::Transform), &[91, 33, 2, 34], 945);
+                step(f, Op::MakeAbsolute, &[35, 34, 36], 946);
+                step(f, Op::BreakTransform, &[36, 184, 24, 185], 947);
+                step(f, Op::ArrayAt(Elem::Transform), &[8, 3, 37], 948);
+                step(f, Op::BreakTransform, &[37, 186, 25, 187], 949);
+                step(f, Op::AddF, &[66, 67, 515], 950);
+                step(f, Op::ClampSpatially, &[184, 186, 886, 515, 188], 951);
+                step(f, Op::SubF, &[888, 15, 541], 952);
+                step(f, Op::MulF, &[14, 541, 516], 953);
+                step(f, Op::LimitRotationAroundZ, &[24, 516, 100, 26], 954);
+                step(f, Op::MakeTransform, &[188, 26, 477, 38], 955);
+                step(f, Op::ArraySetAt(Elem::Transform), &[0, 3, 38], 956);
+                step(f, Op::ArrayAt(Elem::Float), &[4, 3, 524], 957);
+                step(f, Op::FloatLerp, &[524, 886, 103, 525], 958);
+                step(f, Op::ArrayAt(Elem::Bool), &[0, 3, 88], 959);
+                step(f, Op::ArrayAt(Elem::Float), &[2, 3, 514], 960);
+                step(f, Op::GreaterEqualF, &[514, 888, 89], 961);
+                step(f, Op::And, &[88, 89, 92], 962);
+                step(f, Op::ArrayAt(Elem::Transform), &[0, 3, 35], 963);
+                step(f, Op::MakeAbsolute, &[35, 34, 36], 964);
+                step(f, Op::BreakTransform, &[36, 184, 24, 185], 965);
+                step(f, Op::RotateVector, &[24, 481, 189], 966);
+                step(f, Op::LimitRotationAroundZ, &[24, 516, 100, 26], 967);
+                step(f, Op::RotateVector, &[26, 481, 190], 968);
+                step(f, Op::CrossV, &[189, 190, 191], 969);
+                step(f, Op::BreakVector, &[191, 517, 518, 519], 970);
+                step(f, Op::DotV, &[189, 190, 520], 971);
+                step(f, Op::Atan2F, &[519, 520, 521], 972);
+                step(f, Op::AbsF, &[521, 522], 973);
+                step(f, Op::Select(ValueType::Float), &[92, 522, 886, 523], 974);
+                step(f, Op::AddF, &[525, 523, 526], 975);
+                step(f, Op::ArraySetAt(Elem::Float), &[4, 3, 526], 976);
+                step(f, Op::JumpIfFalse, &[88, 1041], 977)
             }
-            949 => {
-                step(f, Op::Jump, &[998], 950)
+            977 => {
+                step(f, Op::JumpIfFalse, &[89, 979], 978)
             }
-            950 => {
-                step(f, Op::ArrayAt(Elem::Transform), &[1, 3, 41], 951);
-                step(f, Op::BreakTransform, &[41, 193, 28, 194], 952);
-                step(f, Op::SubF, &[847, 496, 509], 953);
-                step(f, Op::MulF, &[10, 7, 510], 954);
-                step(f, Op::MulF, &[509, 510, 511], 955);
-                step(f, Op::ScaleV, &[2, 511, 195], 956);
-                step(f, Op::AddV, &[193, 195, 196], 957);
-                step(f, Op::MakeTransform, &[196, 28, 465, 48], 958);
-                step(f, Op::BreakTransform, &[48, 224, 33, 225], 959);
-                step(f, Op::MakeVector, &[845, 845, 55, 226], 960);
-                step(f, Op::AddV, &[224, 226, 227], 961);
-                step(f, Op::SubV, &[224, 226, 228], 962);
-                step(f, Op::LineTrace, &[227, 228, 95, 229, 230, 539], 963);
-                step(f, Op::RotateVector, &[33, 468, 231], 964);
-                step(f, Op::FindQuatBetween, &[231, 230, 34], 965);
-                step(f, Op::MulQ, &[34, 33, 35], 966);
-                step(f, Op::MulF, &[53, 52, 540], 967);
-                step(f, Op::AddF, &[540, 63, 541], 968);
-                step(f, Op::NegF, &[541, 542], 969);
-                step(f, Op::MakeVector, &[845, 542, 845, 232], 970);
-                step(f, Op::RotateVector, &[35, 232, 234], 971);
-                step(f, Op::AddV, &[229, 234, 236], 972);
-                step(f, Op::AddV, &[236, 226, 238], 973);
-                step(f, Op::SubV, &[236, 226, 239], 974);
-                step(f, Op::LineTrace, &[238, 239, 96, 242, 243, 544], 975);
-                step(f, Op::BreakVector, &[242, 546, 547, 548], 976);
-                step(f, Op::BreakVector, &[236, 552, 553, 554], 977);
-                step(f, Op::SubF, &[548, 554, 558], 978);
-                step(f, Op::Select(ValueType::Float), &[96, 558, 845, 560], 979);
-                step(f, Op::AddF, &[59, 63, 543], 980);
-                step(f, Op::MakeVector, &[845, 543, 845, 233], 981);
-                step(f, Op::RotateVector, &[35, 233, 235], 982);
-                step(f, Op::AddV, &[229, 235, 237], 983);
-                step(f, Op::AddV, &[237, 226, 240], 984);
-                step(f, Op::SubV, &[237, 226, 241], 985);
-                step(f, Op::LineTrace, &[240, 241, 97, 244, 245, 545], 986);
-                step(f, Op::BreakVector, &[244, 549, 550, 551], 987);
-                step(f, Op::BreakVector, &[237, 555, 556, 557], 988);
-                step(f, Op::SubF, &[551, 557, 559], 989);
-                step(f, Op::Select(ValueType::Float), &[97, 559, 845, 561], 990);
-                step(f, Op::MaxF, &[560, 561, 562], 991);
-                step(f, Op::ClampF, &[562, 845, 62, 563], 992);
-                step(f, Op::MakeVector, &[845, 845, 563, 246], 993);
-                step(f, Op::AddV, &[229, 246, 247], 994);
-                step(f, Op::MakeTransform, &[247, 35, 465, 51], 995);
-                step(f, Op::Select(ValueType::Transform), &[95, 51, 48, 52], 996);
-                step(f, Op::Copy(ValueType::Transform), &[52, 50], 997);
-                step(f, Op::ArraySetAt(Elem::Transform), &[3, 3, 50], 998);
-                998
+            978 => {
+                step(f, Op::Jump, &[1040], 979)
             }
-            998 => {
-                step(f, Op::Jump, &[1091], 999)
+            979 => {
+                step(f, Op::ArrayAt(Elem::Transform), &[1, 3, 41], 980);
+                step(f, Op::BreakTransform, &[41, 197, 28, 198], 981);
+                step(f, Op::SubF, &[888, 514, 537], 982);
+                step(f, Op::MulF, &[10, 7, 538], 983);
+                step(f, Op::MulF, &[537, 538, 539], 984);
+                step(f, Op::ScaleV, &[2, 539, 199], 985);
+                step(f, Op::AddV, &[197, 199, 200], 986);
+                step(f, Op::Equals(Elem::Int), &[3, 71, 90], 987);
+                step(f, Op::Select(ValueType::Int), &[90, 72, 71, 59], 988);
+                step(f, Op::ArrayAt(Elem::Bool), &[0, 59, 93], 989);
+                step(f, Op::ArrayAt(Elem::Transform), &[0, 59, 42], 990);
+                step(f, Op::ArrayAt(Elem::Transform), &[3, 59, 43], 991);
+                step(f, Op::Select(ValueType::Transform), &[93, 42, 43, 44], 992);
+                step(f, Op::MakeAbsolute, &[44, 34, 45], 993);
+                step(f, Op::Select(ValueType::Transform), &[90, 45, 44, 46], 994);
+                step(f, Op::BreakTransform, &[46, 201, 29, 202], 995);
+                step(f, Op::MulF, &[14, 541, 542], 996);
+                step(f, Op::FootAvoidance, &[200, 201, 542, 90, 83, 203], 997);
+                step(f, Op::RemapF, &[15, 86, 888, 886, 888, 125, 540], 998);
+                step(f, Op::LerpV, &[200, 203, 540, 204], 999);
+                step(f, Op::MakeTransform, &[204, 28, 477, 53], 1000);
+                step(f, Op::BreakTransform, &[53, 232, 34, 233], 1001);
+                step(f, Op::MakeVector, &[886, 886, 57, 234], 1002);
+                step(f, Op::AddV, &[232, 234, 235], 1003);
+                step(f, Op::SubV, &[232, 234, 236], 1004);
+                step(f, Op::LineTrace, &[235, 236, 97, 237, 238, 568], 1005);
+                step(f, Op::RotateVector, &[34, 480, 239], 1006);
+                step(f, Op::FindQuatBetween, &[239, 238, 35], 1007);
+                step(f, Op::MulQ, &[35, 34, 36], 1008);
+                step(f, Op::MulF, &[55, 54, 569], 1009);
+                step(f, Op::AddF, &[569, 65, 570], 1010);
+                step(f, Op::NegF, &[570, 571], 1011);
+                step(f, Op::MakeVector, &[886, 571, 886, 240], 1012);
+                step(f, Op::RotateVector, &[36, 240, 242], 1013);
+                step(f, Op::AddV, &[237, 242, 244], 1014);
+                step(f, Op::AddV, &[244, 234, 246], 1015);
+                step(f, Op::SubV, &[244, 234, 247], 1016);
+                step(f, Op::LineTrace, &[246, 247, 98, 250, 251, 573], 1017);
+                step(f, Op::BreakVector, &[250, 575, 576, 577], 1018);
+                step(f, Op::BreakVector, &[244, 581, 582, 583], 1019);
+                step(f, Op::SubF, &[577, 583, 587], 1020);
+                step(f, Op::Select(ValueType::Float), &[98, 587, 886, 589], 1021);
+                step(f, Op::AddF, &[61, 65, 572], 1022);
+                step(f, Op::MakeVector, &[886, 572, 886, 241], 1023);
+                step(f, Op::RotateVector, &[36, 241, 243], 1024);
+                step(f, Op::AddV, &[237, 243, 245], 1025);
+                step(f, Op::AddV, &[245, 234, 248], 1026);
+                step(f, Op::SubV, &[245, 234, 249], 1027);
+                step(f, Op::LineTrace, &[248, 249, 99, 252, 253, 574], 1028);
+                step(f, Op::BreakVector, &[252, 578, 579, 580], 1029);
+                step(f, Op::BreakVector, &[245, 584, 585, 586], 1030);
+                step(f, Op::SubF, &[580, 586, 588], 1031);
+                step(f, Op::Select(ValueType::Float), &[99, 588, 886, 590], 1032);
+                step(f, Op::MaxF, &[589, 590, 591], 1033);
+                step(f, Op::ClampF, &[591, 886, 64, 592], 1034);
+                step(f, Op::MakeVector, &[886, 886, 592, 254], 1035);
+                step(f, Op::AddV, &[237, 254, 255], 1036);
+                step(f, Op::MakeTransform, &[255, 36, 477, 56], 1037);
+                step(f, Op::Select(ValueType::Transform), &[97, 56, 53, 57], 1038);
+                step(f, Op::Copy(ValueType::Transform), &[57, 55], 1039);
+                step(f, Op::ArraySetAt(Elem::Transform), &[3, 3, 55], 1040);
+                1040
             }
-            999 => {
-                step(f, Op::ArrayAt(Elem::Transform), &[3, 3, 53], 1000);
-                step(f, Op::MakeAbsolute, &[53, 34, 54], 1001);
-                step(f, Op::BreakTransform, &[54, 248, 36, 249], 1002);
-                step(f, Op::ArrayAt(Elem::Transform), &[1, 3, 41], 1003);
-                step(f, Op::BreakTransform, &[41, 193, 28, 194], 1004);
-                step(f, Op::ArrayAt(Elem::Float), &[2, 3, 496], 1005);
-                step(f, Op::SubF, &[847, 496, 509], 1006);
-                step(f, Op::MulF, &[10, 7, 510], 1007);
-                step(f, Op::MulF, &[509, 510, 511], 1008);
-                step(f, Op::ScaleV, &[2, 511, 195], 1009);
-                step(f, Op::AddV, &[193, 195, 196], 1010);
-                step(f, Op::ArrayAt(Elem::Transform), &[4, 3, 55], 1011);
-                step(f, Op::MakeAbsolute, &[55, 34, 56], 1012);
-                step(f, Op::BreakTransform, &[56, 250, 37, 251], 1013);
-                step(f, Op::ArrayAt(Elem::Float), &[3, 3, 564], 1014);
-                step(f, Op::SubF, &[496, 564, 565], 1015);
-                step(f, Op::DeltaTime, &[580], 1016);
-                step(f, Op::DivF, &[49, 580, 566], 1017);
-                step(f, Op::MulF, &[565, 566, 567], 1018);
-                step(f, Op::AddF, &[564, 567, 568], 1019);
-                step(f, Op::ClampF, &[568, 845, 847, 570], 1020);
-                step(f, Op::AddF, &[496, 567, 569], 1021);
-                step(f, Op::ClampF, &[569, 845, 847, 571], 1022);
-                step(f, Op::AddF, &[570, 571, 572], 1023);
-                step(f, Op::MulF, &[572, 846, 573], 1024);
-                step(f, Op::SubF, &[847, 573, 574], 1025);
-                step(f, Op::GreaterF, &[565, 845, 98], 1026);
-                step(f, Op::SubF, &[571, 570, 575], 1027);
-                step(f, Op::DivF, &[575, 565, 576], 1028);
-                step(f, Op::Select(ValueType::Float), &[98, 576, 847, 577], 1029);
-                step(f, Op::MulF, &[574, 577, 578], 1030);
-                step(f, Op::MulF, &[80, 578, 579], 1031);
-                step(f, Op::Copy(ValueType::Float), &[49, 582], 1032);
-                step(f, Op::SubV, &[196, 250, 256], 1033);
-                step(f, Op::DeltaTime, &[583], 1034);
-                step(f, Op::DivF, &[582, 583, 584], 1035);
-                step(f, Op::ScaleV, &[256, 584, 257], 1036);
-                step(f, Op::AddV, &[196, 257, 258], 1037);
-                step(f, Op::AddV, &[250, 257, 259], 1038);
-                step(f, Op::SubV, &[248, 259, 260], 1039);
-                step(f, Op::FloatLerp, &[845, 847, 579, 585], 1040);
-                step(f, Op::SubF, &[847, 585, 586], 1041);
-                step(f, Op::ScaleV, &[260, 586, 261], 1042);
-                step(f, Op::AddV, &[258, 261, 263], 1043);
-                step(f, Op::MulF, &[579, 583, 587], 1044);
-                step(f, Op::GreaterF, &[587, 845, 99], 1045);
-                step(f, Op::DivF, &[585, 587, 588], 1046);
-                step(f, Op::Select(ValueType::Float), &[99, 588, 847, 589], 1047);
-                step(f, Op::ScaleV, &[256, 589, 262], 1048);
-                step(f, Op::SubV, &[263, 262, 264], 1049);
-                step(f, Op::Copy(ValueType::Vec3), &[264, 255], 1050);
-                step(f, Op::MakeTransform, &[255, 28, 465, 58], 1051);
-                step(f, Op::BreakTransform, &[58, 265, 38, 266], 1052);
-                step(f, Op::MakeVector, &[845, 845, 55, 267], 1053);
-                step(f, Op::AddV, &[265, 267, 268], 1054);
-                step(f, Op::SubV, &[265, 267, 269], 1055);
-                step(f, Op::LineTrace, &[268, 269, 100, 270, 271, 590], 1056);
-                step(f, Op::RotateVector, &[38, 468, 272], 1057);
-                step(f, Op::FindQuatBetween, &[272, 271, 39], 1058);
-                step(f, Op::MulQ, &[39, 38, 40], 1059);
-                step(f, Op::MulF, &[53, 52, 591], 1060);
-                step(f, Op::AddF, &[591, 63, 592], 1061);
-                step(f, Op::NegF, &[592, 593], 1062);
-                step(f, Op::MakeVector, &[845, 593, 845, 273], 1063);
-                step(f, Op::RotateVector, &[40, 273, 275], 1064);
-                step(f, Op::AddV, &[270, 275, 277], 1065);
-                step(f, Op::AddV, &[277, 267, 279], 1066);
-                step(f, Op::SubV, &[277, 267, 280], 1067);
-                step(f, Op::LineTrace, &[279, 280, 101, 283, 284, 595], 1068);
-                step(f, Op::BreakVector, &[283, 597, 598, 599], 1069);
-                step(f, Op::BreakVector, &[277, 603, 604, 605], 1070);
-                step(f, Op::SubF, &[599, 605, 609], 1071);
-                step(f, Op::Select(ValueType::Float), &[101, 609, 845, 611], 1072);
-                step(f, Op::AddF, &[59, 63, 594], 1073);
-                step(f, Op::MakeVector, &[845, 594, 845, 274], 1074);
-                step(f, Op::RotateVector, &[40, 274, 276], 1075);
-                step(f, Op::AddV, &[270, 276, 278], 1076);
-                step(f, Op::AddV, &[278, 267, 281], 1077);
-                step(f, Op::SubV, &[278, 267, 282], 1078);
-                step(f, Op::LineTrace, &[281, 282, 102, 285, 286, 596], 1079);
-                step(f, Op::BreakVector, &[285, 600, 601, 602], 1080);
-                step(f, Op::BreakVector, &[278, 606, 607, 608], 1081);
-                step(f, Op::SubF, &[602, 608, 610], 1082);
-                step(f, Op::Select(ValueType::Float), &[102, 610, 845, 612], 1083);
-                step(f, Op::MaxF, &[611, 612, 613], 1084);
-                step(f, Op::ClampF, &[613, 845, 62, 614], 1085);
-                step(f, Op::MakeVector, &[845, 845, 614, 287], 1086);
-                step(f, Op::AddV, &[270, 287, 288], 1087);
-                step(f, Op::MakeTransform, &[288, 40, 465, 61], 1088);
-                step(f, Op::Select(ValueType::Transform), &[100, 61, 58, 62], 1089);
-                step(f, Op::Copy(ValueType::Transform), &[62, 60], 1090);
-                step(f, Op::ArraySetAt(Elem::Transform), &[3, 3, 60], 1091);
-                1091
+            1040 => {
+                step(f, Op::Jump, &[1145], 1041)
             }
-            1091 => {
-                step(f, Op::GreaterEqualF, &[496, 847, 89], 1092);
-                step(f, Op::JumpIfFalse, &[89, 1163], 1093)
+            1041 => {
+                step(f, Op::ArrayAt(Elem::Transform), &[3, 3, 58], 1042);
+                step(f, Op::MakeAbsolute, &[58, 34, 59], 1043);
+                step(f, Op::BreakTransform, &[59, 256, 37, 257], 1044);
+                step(f, Op::ArrayAt(Elem::Transform), &[1, 3, 41], 1045);
+                step(f, Op::BreakTransform, &[41, 197, 28, 198], 1046);
+                step(f, Op::SubF, &[888, 514, 537], 1047);
+                step(f, Op::MulF, &[10, 7, 538], 1048);
+                step(f, Op::MulF, &[537, 538, 539], 1049);
+                step(f, Op::ScaleV, &[2, 539, 199], 1050);
+                step(f, Op::AddV, &[197, 199, 200], 1051);
+                step(f, Op::Equals(Elem::Int), &[3, 71, 90], 1052);
+                step(f, Op::Select(ValueType::Int), &[90, 72, 71, 59], 1053);
+                step(f, Op::ArrayAt(Elem::Bool), &[0, 59, 93], 1054);
+                step(f, Op::ArrayAt(Elem::Transform), &[0, 59, 42], 1055);
+                step(f, Op::ArrayAt(Elem::Transform), &[3, 59, 43], 1056);
+                step(f, Op::Select(ValueType::Transform), &[93, 42, 43, 44], 1057);
+                step(f, Op::MakeAbsolute, &[44, 34, 45], 1058);
+                step(f, Op::Select(ValueType::Transform), &[90, 45, 44, 46], 1059);
+                step(f, Op::BreakTransform, &[46, 201, 29, 202], 1060);
+                step(f, Op::MulF, &[14, 541, 542], 1061);
+                step(f, Op::FootAvoidance, &[200, 201, 542, 90, 83, 203], 1062);
+                step(f, Op::RemapF, &[15, 86, 888, 886, 888, 125, 540], 1063);
+                step(f, Op::LerpV, &[200, 203, 540, 204], 1064);
+                step(f, Op::ArrayAt(Elem::Transform), &[4, 3, 60], 1065);
+                step(f, Op::MakeAbsolute, &[60, 34, 61], 1066);
+                step(f, Op::BreakTransform, &[61, 258, 38, 259], 1067);
+                step(f, Op::ArrayAt(Elem::Float), &[3, 3, 593], 1068);
+                step(f, Op::SubF, &[514, 593, 594], 1069);
+                step(f, Op::DeltaTime, &[609], 1070);
+                step(f, Op::DivF, &[51, 609, 595], 1071);
+                step(f, Op::MulF, &[594, 595, 596], 1072);
+                step(f, Op::AddF, &[593, 596, 597], 1073);
+                step(f, Op::ClampF, &[597, 886, 888, 599], 1074);
+                step(f, Op::AddF, &[514, 596, 598], 1075);
+                step(f, Op::ClampF, &[598, 886, 888, 600], 1076);
+                step(f, Op::AddF, &[599, 600, 601], 1077);
+                step(f, Op::MulF, &[601, 887, 602], 1078);
+                step(f, Op::SubF, &[888, 602, 603], 1079);
+                step(f, Op::GreaterF, &[594, 886, 100], 1080);
+                step(f, Op::SubF, &[600, 599, 604], 1081);
+                step(f, Op::DivF, &[604, 594, 605], 1082);
+                step(f, Op::Select(ValueType::Float), &[100, 605, 888, 606], 1083);
+                step(f, Op::MulF, &[603, 606, 607], 1084);
+                step(f, Op::MulF, &[82, 607, 608], 1085);
+                step(f, Op::Copy(ValueType::Float), &[51, 611], 1086);
+                step(f, Op::SubV, &[204, 258, 264], 1087);
+                step(f, Op::DeltaTime, &[612], 1088);
+                step(f, Op::DivF, &[611, 612, 613], 1089);
+                step(f, Op::ScaleV, &[264, 613, 265], 1090);
+                step(f, Op::AddV, &[204, 265, 266], 1091);
+                step(f, Op::AddV, &[258, 265, 267], 1092);
+                step(f, Op::SubV, &[256, 267, 268], 1093);
+                step(f, Op::FloatLerp, &[886, 888, 608, 614], 1094);
+                step(f, Op::SubF, &[888, 614, 615], 1095);
+                step(f, Op::ScaleV, &[268, 615, 269], 1096);
+                step(f, Op::AddV, &[266, 269, 271], 1097);
+                step(f, Op::MulF, &[608, 612, 616], 1098);
+                step(f, Op::GreaterF, &[616, 886, 101], 1099);
+                step(f, Op::DivF, &[614, 616, 617], 1100);
+                step(f, Op::Select(ValueType::Float), &[101, 617, 888, 618], 1101);
+                step(f, Op::ScaleV, &[264, 618, 270], 1102);
+                step(f, Op::SubV, &[271, 270, 272], 1103);
+                step(f, Op::Copy(ValueType::Vec3), &[272, 263], 1104);
+                step(f, Op::MakeTransform, &[263, 28, 477, 63], 1105);
+                step(f, Op::BreakTransform, &[63, 273, 39, 274], 1106);
+                step(f, Op::MakeVector, &[886, 886, 57, 275], 1107);
+                step(f, Op::AddV, &[273, 275, 276], 1108);
+                step(f, Op::SubV, &[273, 275, 277], 1109);
+                step(f, Op::LineTrace, &[276, 277, 102, 278, 279, 619], 1110);
+                step(f, Op::RotateVector, &[39, 480, 280], 1111);
+                step(f, Op::FindQuatBetween, &[280, 279, 40], 1112);
+                step(f, Op::MulQ, &[40, 39, 41], 1113);
+                step(f, Op::MulF, &[55, 54, 620], 1114);
+                step(f, Op::AddF, &[620, 65, 621], 1115);
+                step(f, Op::NegF, &[621, 622], 1116);
+                step(f, Op::MakeVector, &[886, 622, 886, 281], 1117);
+                step(f, Op::RotateVector, &[41, 281, 283], 1118);
+                step(f, Op::AddV, &[278, 283, 285], 1119);
+                step(f, Op::AddV, &[285, 275, 287], 1120);
+                step(f, Op::SubV, &[285, 275, 288], 1121);
+                step(f, Op::LineTrace, &[287, 288, 103, 291, 292, 624], 1122);
+                step(f, Op::BreakVector, &[291, 626, 627, 628], 1123);
+                step(f, Op::BreakVector, &[285, 632, 633, 634], 1124);
+                step(f, Op::SubF, &[628, 634, 638], 1125);
+                step(f, Op::Select(ValueType::Float), &[103, 638, 886, 640], 1126);
+                step(f, Op::AddF, &[61, 65, 623], 1127);
+                step(f, Op::MakeVector, &[886, 623, 886, 282], 1128);
+                step(f, Op::RotateVector, &[41, 282, 284], 1129);
+                step(f, Op::AddV, &[278, 284, 286], 1130);
+                step(f, Op::AddV, &[286, 275, 289], 1131);
+                step(f, Op::SubV, &[286, 275, 290], 1132);
+                step(f, Op::LineTrace, &[289, 290, 104, 293, 294, 625], 1133);
+                step(f, Op::BreakVector, &[293, 629, 630, 631], 1134);
+                step(f, Op::BreakVector, &[286, 635, 636, 637], 1135);
+                step(f, Op::SubF, &[631, 637, 639], 1136);
+                step(f, Op::Select(ValueType::Float), &[104, 639, 886, 641], 1137);
+                step(f, Op::MaxF, &[640, 641, 642], 1138);
+                step(f, Op::ClampF, &[642, 886, 64, 643], 1139);
+                step(f, Op::MakeVector, &[886, 886, 643, 295], 1140);
+                step(f, Op::AddV, &[278, 295, 296], 1141);
+                step(f, Op::MakeTransform, &[296, 41, 477, 66], 1142);
+                step(f, Op::Select(ValueType::Transform), &[102, 66, 63, 67], 1143);
+                step(f, Op::Copy(ValueType::Transform), &[67, 65], 1144);
+                step(f, Op::ArraySetAt(Elem::Transform), &[3, 3, 65], 1145);
+                1145
             }
-            1093 => {
-                step(f, Op::JumpIfFalse, &[88, 1095], 1094)
+            1145 => {
+                step(f, Op::JumpIfFalse, &[89, 1216], 1146)
             }
-            1094 => {
-                step(f, Op::Jump, &[1144], 1095)
+            1146 => {
+                step(f, Op::JumpIfFalse, &[88, 1148], 1147)
             }
-            1095 => {
-                step(f, Op::ArrayAt(Elem::Transform), &[3, 3, 63], 1096);
-                step(f, Op::BreakTransform, &[63, 289, 41, 290], 1097);
-                step(f, Op::Equals(Elem::Int), &[3, 71, 90], 1098);
-                step(f, Op::Select(ValueType::Int), &[90, 72, 71, 59], 1099);
-                step(f, Op::ArrayAt(Elem::Transform), &[6, 59, 42], 1100);
-                step(f, Op::BreakTransform, &[42, 197, 29, 198], 1101);
-                step(f, Op::MulF, &[14, 512, 513], 1102);
-                step(f, Op::FootAvoidance, &[289, 197, 513, 90, 81, 199], 1103);
-                step(f, Op::MakeTransform, &[199, 41, 465, 43], 1104);
-                step(f, Op::BreakTransform, &[43, 200, 30, 201], 1105);
-                step(f, Op::MakeVector, &[845, 845, 55, 202], 1106);
-                step(f, Op::AddV, &[200, 202, 203], 1107);
-                step(f, Op::SubV, &[200, 202, 204], 1108);
-                step(f, Op::LineTrace, &[203, 204, 92, 205, 206, 514], 1109);
-                step(f, Op::RotateVector, &[30, 468, 207], 1110);
-                step(f, Op::FindQuatBetween, &[207, 206, 31], 1111);
-                step(f, Op::MulQ, &[31, 30, 32], 1112);
-                step(f, Op::MulF, &[53, 52, 515], 1113);
-                step(f, Op::AddF, &[515, 63, 516], 1114);
-                step(f, Op::NegF, &[516, 517], 1115);
-                step(f, Op::MakeVector, &[845, 517, 845, 208], 1116);
-                step(f, Op::RotateVector, &[32, 208, 210], 1117);
-                step(f, Op::AddV, &[205, 210, 212], 1118);
-                step(f, Op::AddV, &[212, 202, 214], 1119);
-                step(f, Op::SubV, &[212, 202, 215], 1120);
-                step(f, Op::LineTrace, &[214, 215, 93, 218, 219, 519], 1121);
-                step(f, Op::BreakVector, &[218, 521, 522, 523], 1122);
-                step(f, Op::BreakVector, &[212, 527, 528, 529], 1123);
-                step(f, Op::SubF, &[523, 529, 533], 1124);
-                step(f, Op::Select(ValueType::Float), &[93, 533, 845, 535], 1125);
-                step(f, Op::AddF, &[59, 63, 518], 1126);
-                step(f, Op::MakeVector, &[845, 518, 845, 209], 1127);
-                step(f, Op::RotateVector, &[32, 209, 211], 1128);
-                step(f, Op::AddV, &[205, 211, 213], 1129);
-                step(f, Op::AddV, &[213, 202, 216], 1130);
-                step(f, Op::SubV, &[213, 202, 217], 1131);
-                step(f, Op::LineTrace, &[216, 217, 94, 220, 221, 520], 1132);
-                step(f, Op::BreakVector, &[220, 524, 525, 526], 1133);
-                step(f, Op::BreakVector, &[213, 530, 531, 532], 1134);
-                step(f, Op::SubF, &[526, 532, 534], 1135);
-                step(f, Op::Select(ValueType::Float), &[94, 534, 845, 536], 1136);
-                step(f, Op::MaxF, &[535, 536, 537], 1137);
-                step(f, Op::ClampF, &[537, 845, 62, 538], 1138);
-                step(f, Op::MakeVector, &[845, 845, 538, 222], 1139);
-                step(f, Op::AddV, &[205, 222, 223], 1140);
-                step(f, Op::MakeTransform, &[223, 32, 465, 46], 1141);
-                step(f, Op::Select(ValueType::Transform), &[92, 46, 43, 47], 1142);
-                step(f, Op::Copy(ValueType::Transform), &[47, 45], 1143);
-                step(f, Op::ArraySetAt(Elem::Transform), &[0, 3, 45], 1144);
-                1144
+            1147 => {
+                step(f, Op::Jump, &[1197], 1148)
             }
-            1144 => {
-                step(f, Op::ArrayAt(Elem::Transform), &[0, 3, 39], 1145);
-                step(f, Op::BreakTransform, &[39, 188, 27, 189], 1146);
-                step(f, Op::SubV, &[188, 185, 190], 1147);
-                step(f, Op::LengthV, &[190, 499], 1148);
-                step(f, Op::SubF, &[64, 65, 500], 1149);
-                step(f, Op::SubF, &[499, 500, 501], 1150);
-                step(f, Op::MulF, &[65, 850, 502], 1151);
-                step(f, Op::ClampF, &[501, 845, 502, 503], 1152);
-                step(f, Op::MulF, &[503, 503, 504], 1153);
-                step(f, Op::MulF, &[65, 861, 505], 1154);
-                step(f, Op::DivF, &[504, 505, 506], 1155);
-                step(f, Op::SubF, &[499, 506, 507], 1156);
-                step(f, Op::DivF, &[507, 499, 508], 1157);
-                step(f, Op::ScaleV, &[190, 508, 191], 1158);
-                step(f, Op::AddV, &[185, 191, 192], 1159);
-                step(f, Op::MakeTransform, &[192, 27, 465, 40], 1160);
-                step(f, Op::ArraySetAt(Elem::Transform), &[5, 3, 40], 1161);
-                step(f, Op::ArraySetAt(Elem::Transform), &[6, 3, 40], 1162);
-                step(f, Op::Jump, &[1298], 1163)
+            1148 => {
+                step(f, Op::ArrayAt(Elem::Transform), &[3, 3, 68], 1149);
+                step(f, Op::BreakTransform, &[68, 297, 42, 298], 1150);
+                step(f, Op::Equals(Elem::Int), &[3, 71, 90], 1151);
+                step(f, Op::Select(ValueType::Int), &[90, 72, 71, 59], 1152);
+                step(f, Op::ArrayAt(Elem::Transform), &[6, 59, 47], 1153);
+                step(f, Op::BreakTransform, &[47, 205, 30, 206], 1154);
+                step(f, Op::MulF, &[14, 541, 542], 1155);
+                step(f, Op::FootAvoidance, &[297, 205, 542, 90, 83, 207], 1156);
+                step(f, Op::MakeTransform, &[207, 42, 477, 48], 1157);
+                step(f, Op::BreakTransform, &[48, 208, 31, 209], 1158);
+                step(f, Op::MakeVector, &[886, 886, 57, 210], 1159);
+                step(f, Op::AddV, &[208, 210, 211], 1160);
+                step(f, Op::SubV, &[208, 210, 212], 1161);
+                step(f, Op::LineTrace, &[211, 212, 94, 213, 214, 543], 1162);
+                step(f, Op::RotateVector, &[31, 480, 215], 1163);
+                step(f, Op::FindQuatBetween, &[215, 214, 32], 1164);
+                step(f, Op::MulQ, &[32, 31, 33], 1165);
+                step(f, Op::MulF, &[55, 54, 544], 1166);
+                step(f, Op::AddF, &[544, 65, 545], 1167);
+                step(f, Op::NegF, &[545, 546], 1168);
+                step(f, Op::MakeVector, &[886, 546, 886, 216], 1169);
+                step(f, Op::RotateVector, &[33, 216, 218], 1170);
+                step(f, Op::AddV, &[213, 218, 220], 1171);
+                step(f, Op::AddV, &[220, 210, 222], 1172);
+                step(f, Op::SubV, &[220, 210, 223], 1173);
+                step(f, Op::LineTrace, &[222, 223, 95, 226, 227, 548], 1174);
+                step(f, Op::BreakVector, &[226, 550, 551, 552], 1175);
+                step(f, Op::BreakVector, &[220, 556, 557, 558], 1176);
+                step(f, Op::SubF, &[552, 558, 562], 1177);
+                step(f, Op::Select(ValueType::Float), &[95, 562, 886, 564], 1178);
+                step(f, Op::AddF, &[61, 65, 547], 1179);
+                step(f, Op::MakeVector, &[886, 547, 886, 217], 1180);
+                step(f, Op::RotateVector, &[33, 217, 219], 1181);
+                step(f, Op::AddV, &[213, 219, 221], 1182);
+                step(f, Op::AddV, &[221, 210, 224], 1183);
+                step(f, Op::SubV, &[221, 210, 225], 1184);
+                step(f, Op::LineTrace, &[224, 225, 96, 228, 229, 549], 1185);
+                step(f, Op::BreakVector, &[228, 553, 554, 555], 1186);
+                step(f, Op::BreakVector, &[221, 559, 560, 561], 1187);
+                step(f, Op::SubF, &[555, 561, 563], 1188);
+                step(f, Op::Select(ValueType::Float), &[96, 563, 886, 565], 1189);
+                step(f, Op::MaxF, &[564, 565, 566], 1190);
+                step(f, Op::ClampF, &[566, 886, 64, 567], 1191);
+                step(f, Op::MakeVector, &[886, 886, 567, 230], 1192);
+                step(f, Op::AddV, &[213, 230, 231], 1193);
+                step(f, Op::MakeTransform, &[231, 33, 477, 51], 1194);
+                step(f, Op::Select(ValueType::Transform), &[94, 51, 48, 52], 1195);
+                step(f, Op::Copy(ValueType::Transform), &[52, 50], 1196);
+                step(f, Op::ArraySetAt(Elem::Transform), &[0, 3, 50], 1197);
+                1197
             }
-            1163 => {
-                step(f, Op::ArrayAt(Elem::Transform), &[0, 3, 39], 1164);
-                step(f, Op::BreakTransform, &[39, 188, 27, 189], 1165);
-                step(f, Op::SubV, &[188, 185, 190], 1166);
-                step(f, Op::LengthV, &[190, 499], 1167);
-                step(f, Op::SubF, &[64, 65, 500], 1168);
-                step(f, Op::SubF, &[499, 500, 501], 1169);
-                step(f, Op::MulF, &[65, 850, 502], 1170);
-                step(f, Op::ClampF, &[501, 845, 502, 503], 1171);
-                step(f, Op::MulF, &[503, 503, 504], 1172);
-                step(f, Op::MulF, &[65, 861, 505], 1173);
-                step(f, Op::DivF, &[504, 505, 506], 1174);
-                step(f, Op::SubF, &[499, 506, 507], 1175);
-                step(f, Op::DivF, &[507, 499, 508], 1176);
-                step(f, Op::ScaleV, &[190, 508, 191], 1177);
-                step(f, Op::AddV, &[185, 191, 192], 1178);
-                step(f, Op::MakeTransform, &[192, 27, 465, 40], 1179);
-                step(f, Op::ArrayAt(Elem::Transform), &[3, 3, 63], 1180);
-                step(f, Op::ClampF, &[496, 845, 847, 615], 1181);
-                step(f, Op::Copy(ValueType::Array(Elem::Vec3)), &[6, 5], 1182);
-                step(f, Op::ArrayReset(Elem::Vec3), &[5], 1183);
-                step(f, Op::BreakTransform, &[40, 310, 46, 311], 1184);
-                step(f, Op::ArrayAdd(Elem::Vec3), &[5, 310], 1185);
-                step(f, Op::UnitV, &[2, 309], 1186);
-                step(f, Op::LengthV, &[2, 636], 1187);
-                step(f, Op::RemapF, &[636, 845, 66, 845, 67, 122, 637], 1188);
-                step(f, Op::ScaleV, &[309, 637, 314], 1189);
-                step(f, Op::SubV, &[310, 314, 320], 1190);
-                step(f, Op::MakeVector, &[845, 845, 69, 318], 1191);
-                step(f, Op::AddV, &[320, 318, 322], 1192);
-                step(f, Op::ArrayAdd(Elem::Vec3), &[5, 322], 1193);
-                step(f, Op::RemapF, &[636, 845, 66, 845, 71, 122, 639], 1194);
-                step(f, Op::MakeVector, &[845, 845, 639, 316], 1195);
-                step(f, Op::AddV, &[322, 316, 326], 1196);
-                step(f, Op::BreakTransform, &[63, 312, 47, 313], 1197);
-                step(f, Op::BreakVector, &[312, 644, 645, 646], 1198);
-                step(f, Op::BreakVector, &[310, 641, 642, 643], 1199);
-                step(f, Op::SubF, &[646, 643, 647], 1200);
-                step(f, Op::MaxF, &[647, 845, 649], 1201);
-                step(f, Op::MulF, &[649, 73, 653], 1202);
-                step(f, Op::MinF, &[653, 74, 654], 1203);
-                step(f, Op::AbsF, &[647, 651], 1204);
-                step(f, Op::RemapF, &[651, 845, 77, 845, 76, 122, 652], 1205);
-                step(f, Op::AddF, &[654, 652, 656], 1206);
-                step(f, Op::MakeVector, &[845, 845, 656, 324], 1207);
-                step(f, Op::AddV, &[326, 324, 328], 1208);
-                step(f, Op::ArrayAdd(Elem::Vec3), &[5, 328], 1209);
-                step(f, Op::RemapF, &[636, 845, 66, 845, 68, 122, 638], 1210);
-                step(f, Op::ScaleV, &[309, 638, 315], 1211);
-                step(f, Op::AddV, &[312, 315, 321], 1212);
-                step(f, Op::MakeVector, &[845, 845, 70, 319], 1213);
-                step(f, Op::AddV, &[321, 319, 323], 1214);
-                step(f, Op::RemapF, &[636, 845, 66, 845, 72, 122, 640], 1215);
-                step(f, Op::MakeVector, &[845, 845, 640, 317], 1216);
-                step(f, Op::AddV, &[323, 317, 327], 1217);
-                step(f, Op::NegF, &[647, 648], 1218);
-                step(f, Op::MaxF, &[648, 845, 650], 1219);
-                step(f, Op::MulF, &[650, 75, 655], 1220);
-                step(f, Op::AddF, &[655, 652, 657], 1221);
-                step(f, Op::MakeVector, &[845, 845, 657, 325], 1222);
-                step(f, Op::AddV, &[327, 325, 329], 1223);
-                step(f, Op::LerpV, &[328, 329, 846, 330], 1224);
-                step(f, Op::GetTransform, &[35, 71, 122, 72], 1225);
-                step(f, Op::BreakTransform, &[72, 331, 48, 332], 1226);
-                step(f, Op::BreakVector, &[331, 667, 668, 669], 1227);
-                step(f, Op::SubF, &[847, 15, 661], 1228);
-                step(f, Op::MulF, &[78, 661, 662], 1229);
-                step(f, Op::MulF, &[14, 662, 663], 1230);
-                step(f, Op::QuatFromAxisAngle, &[468, 663, 49], 1231);
-                step(f, Op::SubV, &[330, 331, 333], 1232);
-                step(f, Op::BreakVector, &[333, 658, 659, 660], 1233);
-                step(f, Op::MakeVector, &[658, 659, 845, 334], 1234);
-                step(f, Op::RotateVector, &[49, 334, 335], 1235);
-                step(f, Op::BreakVector, &[335, 664, 665, 666], 1236);
-                step(f, Op::AddF, &[667, 664, 673], 1237);
-                step(f, Op::AddF, &[668, 665, 674], 1238);
-                step(f, Op::BreakVector, &[330, 670, 671, 672], 1239);
-                step(f, Op::MakeVector, &[673, 674, 672, 336], 1240);
-                step(f, Op::DistanceV, &[310, 312, 675], 1241);
-                step(f, Op::RemapF, &[675, 850, 862, 845, 847, 122, 676], 1242);
-                step(f, Op::LerpV, &[330, 336, 676, 337], 1243);
-                step(f, Op::ArrayAdd(Elem::Vec3), &[5, 337], 1244);
-                step(f, Op::ArrayAdd(Elem::Vec3), &[5, 329], 1245);
-                step(f, Op::ArrayAdd(Elem::Vec3), &[5, 323], 1246);
-                step(f, Op::ArrayAdd(Elem::Vec3), &[5, 312], 1247);
-                step(f, Op::JumpIfFalse, &[8, 1250], 1248)
+            1197 => {
+                step(f, Op::ArrayAt(Elem::Transform), &[0, 3, 39], 1198);
+                step(f, Op::BreakTransform, &[39, 192, 27, 193], 1199);
+                step(f, Op::SubV, &[192, 186, 194], 1200);
+                step(f, Op::LengthV, &[194, 527], 1201);
+                step(f, Op::SubF, &[66, 67, 528], 1202);
+                step(f, Op::SubF, &[527, 528, 529], 1203);
+                step(f, Op::MulF, &[67, 891, 530], 1204);
+                step(f, Op::ClampF, &[529, 886, 530, 531], 1205);
+                step(f, Op::MulF, &[531, 531, 532], 1206);
+                step(f, Op::MulF, &[67, 902, 533], 1207);
+                step(f, Op::DivF, &[532, 533, 534], 1208);
+                step(f, Op::SubF, &[527, 534, 535], 1209);
+                step(f, Op::DivF, &[535, 527, 536], 1210);
+                step(f, Op::ScaleV, &[194, 536, 195], 1211);
+                step(f, Op::AddV, &[186, 195, 196], 1212);
+                step(f, Op::MakeTransform, &[196, 27, 477, 40], 1213);
+                step(f, Op::ArraySetAt(Elem::Transform), &[5, 3, 40], 1214);
+                step(f, Op::ArraySetAt(Elem::Transform), &[6, 3, 40], 1215);
+                step(f, Op::Jump, &[1359], 1216)
             }
-            1248 => {
-                step(f, Op::DrawSpline, &[5, 71, 74, 846, 471], 1249);
-                step(f, Op::Jump, &[1250], 1250)
+            1216 => {
+                step(f, Op::ArrayAt(Elem::Transform), &[0, 3, 39], 1217);
+                step(f, Op::BreakTransform, &[39, 192, 27, 193], 1218);
+                step(f, Op::SubV, &[192, 186, 194], 1219);
+                step(f, Op::LengthV, &[194, 527], 1220);
+                step(f, Op::SubF, &[66, 67, 528], 1221);
+                step(f, Op::SubF, &[527, 528, 529], 1222);
+                step(f, Op::MulF, &[67, 891, 530], 1223);
+                step(f, Op::ClampF, &[529, 886, 530, 531], 1224);
+                step(f, Op::MulF, &[531, 531, 532], 1225);
+                step(f, Op::MulF, &[67, 902, 533], 1226);
+                step(f, Op::DivF, &[532, 533, 534], 1227);
+                step(f, Op::SubF, &[527, 534, 535], 1228);
+                step(f, Op::DivF, &[535, 527, 536], 1229);
+                step(f, Op::ScaleV, &[194, 536, 195], 1230);
+                step(f, Op::AddV, &[186, 195, 196], 1231);
+                step(f, Op::MakeTransform, &[196, 27, 477, 40], 1232);
+                step(f, Op::ArrayAt(Elem::Transform), &[3, 3, 68], 1233);
+                step(f, Op::ClampF, &[514, 886, 888, 644], 1234);
+                step(f, Op::Copy(ValueType::Array(Elem::Vec3)), &[6, 5], 1235);
+                step(f, Op::ArrayReset(Elem::Vec3), &[5], 1236);
+                step(f, Op::BreakTransform, &[40, 318, 47, 319], 1237);
+                step(f, Op::ArrayAdd(Elem::Vec3), &[5, 318], 1238);
+                step(f, Op::UnitV, &[2, 317], 1239);
+                step(f, Op::LengthV, &[2, 672], 1240);
+                step(f, Op::RemapF, &[672, 886, 68, 886, 69, 125, 673], 1241);
+                step(f, Op::ScaleV, &[317, 673, 322], 1242);
+                step(f, Op::SubV, &[318, 322, 328], 1243);
+                step(f, Op::MakeVector, &[886, 886, 71, 326], 1244);
+                step(f, Op::AddV, &[328, 326, 330], 1245);
+                step(f, Op::ArrayAdd(Elem::Vec3), &[5, 330], 1246);
+                step(f, Op::RemapF, &[672, 886, 68, 886, 73, 125, 675], 1247);
+                step(f, Op::MakeVector, &[886, 886, 675, 324], 1248);
+                step(f, Op::AddV, &[330, 324, 334], 1249);
+                step(f, Op::BreakTransform, &[68, 320, 48, 321], 1250);
+                step(f, Op::BreakVector, &[320, 680, 681, 682], 1251);
+                step(f, Op::BreakVector, &[318, 677, 678, 679], 1252);
+                step(f, Op::SubF, &[682, 679, 683], 1253);
+                step(f, Op::MaxF, &[683, 886, 685], 1254);
+                step(f, Op::MulF, &[685, 75, 689], 1255);
+                step(f, Op::MinF, &[689, 76, 690], 1256);
+                step(f, Op::AbsF, &[683, 687], 1257);
+                step(f, Op::RemapF, &[687, 886, 79, 886, 78, 125, 688], 1258);
+                step(f, Op::AddF, &[690, 688, 692], 1259);
+                step(f, Op::MakeVector, &[886, 886, 692, 332], 1260);
+                step(f, Op::AddV, &[334, 332, 336], 1261);
+                step(f, Op::ArrayAdd(Elem::Vec3), &[5, 336], 1262);
+                step(f, Op::RemapF, &[672, 886, 68, 886, 70, 125, 674], 1263);
+                step(f, Op::ScaleV, &[317, 674, 323], 1264);
+                step(f, Op::AddV, &[320, 323, 329], 1265);
+                step(f, Op::MakeVector, &[886, 886, 72, 327], 1266);
+                step(f, Op::AddV, &[329, 327, 331], 1267);
+                step(f, Op::RemapF, &[672, 886, 68, 886, 74, 125, 676], 1268);
+                step(f, Op::MakeVector, &[886, 886, 676, 325], 1269);
+                step(f, Op::AddV, &[331, 325, 335], 1270);
+                step(f, Op::NegF, &[683, 684], 1271);
+                step(f, Op::MaxF, &[684, 886, 686], 1272);
+                step(f, Op::MulF, &[686, 77, 691], 1273);
+                step(f, Op::AddF, &[691, 688, 693], 1274);
+                step(f, Op::MakeVector, &[886, 886, 693, 333], 1275);
+                step(f, Op::AddV, &[335, 333, 337], 1276);
+                step(f, Op::LerpV, &[336, 337, 887, 338], 1277);
+                step(f, Op::GetTransform, &[35, 71, 125, 77], 1278);
+                step(f, Op::BreakTransform, &[77, 339, 49, 340], 1279);
+                step(f, Op::BreakVector, &[339, 703, 704, 705], 1280);
+                step(f, Op::SubF, &[888, 15, 697], 1281);
+                step(f, Op::MulF, &[80, 697, 698], 1282);
+                step(f, Op::MulF, &[14, 698, 699], 1283);
+                step(f, Op::QuatFromAxisAngle, &[480, 699, 50], 1284);
+                step(f, Op::SubV, &[338, 339, 341], 1285);
+                step(f, Op::BreakVector, &[341, 694, 695, 696], 1286);
+                step(f, Op::MakeVector, &[694, 695, 886, 342], 1287);
+                step(f, Op::RotateVector, &[50, 342, 343], 1288);
+                step(f, Op::BreakVector, &[343, 700, 701, 702], 1289);
+                step(f, Op::AddF, &[703, 700, 709], 1290);
+                step(f, Op::AddF, &[704, 701, 710], 1291);
+                step(f, Op::BreakVector, &[338, 706, 707, 708], 1292);
+                step(f, Op::MakeVector, &[709, 710, 708, 344], 1293);
+                step(f, Op::DistanceV, &[318, 320, 711], 1294);
+                step(f, Op::RemapF, &[711, 891, 903, 886, 888, 125, 712], 1295);
+                step(f, Op::LerpV, &[338, 344, 712, 345], 1296);
+                step(f, Op::ArrayAdd(Elem::Vec3), &[5, 345], 1297);
+                step(f, Op::ArrayAdd(Elem::Vec3), &[5, 337], 1298);
+                step(f, Op::ArrayAdd(Elem::Vec3), &[5, 331], 1299);
+                step(f, Op::ArrayAdd(Elem::Vec3), &[5, 320], 1300);
+                step(f, Op::JumpIfFalse, &[8, 1303], 1301)
             }
-            1250 => {
-                step(f, Op::Spline, &[5, 615, 71, 338, 339], 1251);
-                step(f, Op::SlerpQ, &[46, 47, 615, 50], 1252);
-                step(f, Op::MulF, &[615, 855, 678], 1253);
-                step(f, Op::SinF, &[678, 679], 1254);
-                step(f, Op::SmoothStepF, &[615, 845, 90, 677], 1255);
-                step(f, Op::MulF, &[679, 677, 680], 1256);
-                step(f, Op::MulF, &[680, 79, 681], 1257);
-                step(f, Op::SlerpQ, &[50, 92, 681, 51], 1258);
-                step(f, Op::MakeTransform, &[338, 51, 465, 73], 1259);
-                step(f, Op::Copy(ValueType::Transform), &[73, 71], 1260);
-                step(f, Op::BreakTransform, &[71, 291, 42, 292], 1261);
-                step(f, Op::Equals(Elem::Int), &[3, 71, 90], 1262);
-                step(f, Op::Select(ValueType::Int), &[90, 72, 71, 59], 1263);
-                step(f, Op::ArrayAt(Elem::Transform), &[6, 59, 42], 1264);
-                step(f, Op::BreakTransform, &[42, 197, 29, 198], 1265);
-                step(f, Op::SubF, &[847, 15, 512], 1266);
-                step(f, Op::MulF, &[14, 512, 513], 1267);
-                step(f, Op::ArrayAt(Elem::Bool), &[0, 59, 103], 1268);
-                step(f, Op::Select(ValueType::Float), &[103, 82, 845, 618], 1269);
-                step(f, Op::ArrayAt(Elem::Float), &[2, 3, 496], 1270);
-                step(f, Op::ClampF, &[496, 845, 847, 615], 1271);
-                step(f, Op::MulF, &[615, 855, 616], 1272);
-                step(f, Op::SinF, &[616, 617], 1273);
-                step(f, Op::MulF, &[617, 617, 619], 1274);
-                step(f, Op::MulF, &[618, 619, 620], 1275);
-                step(f, Op::AddF, &[81, 620, 621], 1276);
-                step(f, Op::FootAvoidance, &[291, 197, 513, 90, 621, 293], 1277);
-                step(f, Op::SubV, &[293, 291, 294], 1278);
-                step(f, Op::LengthV, &[294, 622], 1279);
-                step(f, Op::AddF, &[622, 620, 623], 1280);
-                step(f, Op::DivF, &[622, 623, 624], 1281);
-                step(f, Op::LessEqualF, &[83, 845, 104], 1282);
-                step(f, Op::SmoothStepF, &[615, 845, 83, 625], 1283);
-                step(f, Op::Select(ValueType::Float), &[104, 847, 625, 626], 1284);
-                step(f, Op::MulF, &[624, 626, 627], 1285);
-                step(f, Op::ScaleV, &[294, 627, 295], 1286);
-                step(f, Op::AddV, &[291, 295, 296], 1287);
-                step(f, Op::MulF, &[3, 126, 628], 1288);
-                step(f, Op::MulF, &[628, 619, 629], 1289);
-                step(f, Op::MakeVector, &[845, 845, 629, 297], 1290);
-                step(f, Op::AddV, &[296, 297, 298], 1291);
-                step(f, Op::MakeTransform, &[298, 42, 465, 64], 1292);
-                step(f, Op::ArraySetAt(Elem::Transform), &[5, 3, 64], 1293);
-                step(f, Op::ScaleV, &[294, 624, 299], 1294);
-                step(f, Op::AddV, &[291, 299, 300], 1295);
-                step(f, Op::AddV, &[300, 297, 301], 1296);
-                step(f, Op::MakeTransform, &[301, 42, 465, 65], 1297);
-                step(f, Op::ArraySetAt(Elem::Transform), &[6, 3, 65], 1298);
-                1298
+            1301 => {
+                step(f, Op::DrawSpline, &[5, 71, 74, 887, 483], 1302);
+                step(f, Op::Jump, &[1303], 1303)
             }
-            1298 => {
-                step(f, Op::GreaterF, &[21, 845, 91], 1299);
-                step(f, Op::JumpIfFalse, &[91, 1323], 1300)
+            1303 => {
+                step(f, Op::Spline, &[5, 644, 71, 346, 347], 1304);
+                step(f, Op::SlerpQ, &[47, 48, 644, 51], 1305);
+                step(f, Op::MulF, &[644, 896, 714], 1306);
+                step(f, Op::SinF, &[714, 715], 1307);
+                step(f, Op::SmoothStepF, &[644, 886, 93, 713], 1308);
+                step(f, Op::MulF, &[715, 713, 716], 1309);
+                step(f, Op::MulF, &[716, 81, 717], 1310);
+                step(f, Op::SlerpQ, &[51, 94, 717, 52], 1311);
+                step(f, Op::MakeTransform, &[346, 52, 477, 78], 1312);
+                step(f, Op::Copy(ValueType::Transform), &[78, 76], 1313);
+                step(f, Op::BreakTransform, &[76, 299, 43, 300], 1314);
+                step(f, Op::Equals(Elem::Int), &[3, 71, 90], 1315);
+                step(f, Op::Select(ValueType::Int), &[90, 72, 71, 59], 1316);
+                step(f, Op::ArrayAt(Elem::Transform), &[6, 59, 47], 1317);
+                step(f, Op::BreakTransform, &[47, 205, 30, 206], 1318);
+                step(f, Op::SubF, &[888, 15, 541], 1319);
+                step(f, Op::MulF, &[14, 541, 542], 1320);
+                step(f, Op::ArrayAt(Elem::Bool), &[0, 59, 105], 1321);
+                step(f, Op::Select(ValueType::Float), &[105, 84, 886, 647], 1322);
+                step(f, Op::ArrayAt(Elem::Float), &[2, 3, 514], 1323);
+                step(f, Op::ClampF, &[514, 886, 888, 644], 1324);
+                step(f, Op::MulF, &[644, 896, 645], 1325);
+                step(f, Op::SinF, &[645, 646], 1326);
+                step(f, Op::MulF, &[646, 646, 648], 1327);
+                step(f, Op::MulF, &[647, 648, 649], 1328);
+                step(f, Op::AddF, &[83, 649, 650], 1329);
+                step(f, Op::FootAvoidance, &[299, 205, 542, 90, 650, 301], 1330);
+                step(f, Op::SubV, &[301, 299, 302], 1331);
+                step(f, Op::LengthV, &[302, 651], 1332);
+                step(f, Op::AddF, &[651, 649, 652], 1333);
+                step(f, Op::DivF, &[651, 652, 653], 1334);
+                step(f, Op::ArrayAt(Elem::Float), &[2, 59, 656], 1335);
+                step(f, Op::LessF, &[656, 514, 107], 1336);
+                step(f, Op::LessEqualF, &[85, 886, 106], 1337);
+                step(f, Op::SmoothStepF, &[656, 886, 85, 657], 1338);
+                step(f, Op::MulF, &[657, 15, 658], 1339);
+                step(f, Op::SubF, &[888, 658, 659], 1340);
+                step(f, Op::Select(ValueType::Float), &[106, 888, 659, 660], 1341);
+                step(f, Op::Select(ValueType::Float), &[107, 660, 888, 661], 1342);
+                step(f, Op::MulF, &[653, 661, 662], 1343);
+                step(f, Op::SmoothStepF, &[644, 886, 85, 654], 1344);
+                step(f, Op::Select(ValueType::Float), &[106, 888, 654, 655], 1345);
+                step(f, Op::MulF, &[662, 655, 663], 1346);
+                step(f, Op::ScaleV, &[302, 663, 303], 1347);
+                step(f, Op::AddV, &[299, 303, 304], 1348);
+                step(f, Op::MulF, &[3, 133, 664], 1349);
+                step(f, Op::MulF, &[664, 648, 665], 1350);
+                step(f, Op::MakeVector, &[886, 886, 665, 305], 1351);
+                step(f, Op::AddV, &[304, 305, 306], 1352);
+                step(f, Op::MakeTransform, &[306, 43, 477, 69], 1353);
+                step(f, Op::ArraySetAt(Elem::Transform), &[5, 3, 69], 1354);
+                step(f, Op::ScaleV, &[302, 662, 307], 1355);
+                step(f, Op::AddV, &[299, 307, 308], 1356);
+                step(f, Op::AddV, &[308, 305, 309], 1357);
+                step(f, Op::MakeTransform, &[309, 43, 477, 70], 1358);
+                step(f, Op::ArraySetAt(Elem::Transform), &[6, 3, 70], 1359);
+                1359
             }
-            1300 => {
-                step(f, Op::ArrayAt(Elem::Transform), &[5, 3, 66], 1301);
-                step(f, Op::BreakTransform, &[66, 302, 43, 303], 1302);
-                step(f, Op::ArrayAt(Elem::Transform), &[8, 3, 67], 1303);
-                step(f, Op::BreakTransform, &[67, 304, 44, 305], 1304);
-                step(f, Op::MulF, &[21, 21, 630], 1305);
-                step(f, Op::LerpV, &[302, 304, 630, 306], 1306);
-                step(f, Op::SubF, &[847, 21, 631], 1307);
-                step(f, Op::MulF, &[21, 631, 632], 1308);
-                step(f, Op::MulF, &[128, 850, 633], 1309);
-                step(f, Op::MulF, &[632, 633, 634], 1310);
-                step(f, Op::MakeVector, &[845, 845, 634, 307], 1311);
-                step(f, Op::AddV, &[306, 307, 308], 1312);
-                step(f, Op::SlerpQ, &[43, 44, 21, 45], 1313);
-                step(f, Op::MakeTransform, &[308, 45, 465, 68], 1314);
-                step(f, Op::ArraySetAt(Elem::Transform), &[5, 3, 68], 1315);
-                step(f, Op::ArrayAt(Elem::Transform), &[5, 3, 66], 1316);
-                step(f, Op::BreakTransform, &[66, 302, 43, 303], 1317);
-                step(f, Op::LerpV, &[302, 304, 630, 306], 1318);
-                step(f, Op::AddV, &[306, 307, 308], 1319);
-                step(f, Op::SlerpQ, &[43, 44, 21, 45], 1320);
-                step(f, Op::MakeTransform, &[308, 45, 465, 68], 1321);
-                step(f, Op::ArraySetAt(Elem::Transform), &[6, 3, 68], 1322);
-                step(f, Op::Jump, &[1323], 1323)
+            1359 => {
+                step(f, Op::GreaterF, &[21, 886, 91], 1360);
+                step(f, Op::JumpIfFalse, &[91, 1384], 1361)
             }
-            1323 => {
-                step(f, Op::GreaterEqualF, &[496, 847, 89], 1324);
-                step(f, Op::ArraySetAt(Elem::Bool), &[0, 3, 89], 1325);
-                step(f, Op::ArrayAt(Elem::Transform), &[1, 3, 41], 1326);
-                step(f, Op::BreakTransform, &[41, 193, 28, 194], 1327);
-                step(f, Op::SubF, &[847, 496, 509], 1328);
-                step(f, Op::MulF, &[10, 7, 510], 1329);
-                step(f, Op::MulF, &[509, 510, 511], 1330);
-                step(f, Op::ScaleV, &[2, 511, 195], 1331);
-                step(f, Op::AddV, &[193, 195, 196], 1332);
-                step(f, Op::MakeTransform, &[196, 92, 465, 57], 1333);
-                step(f, Op::ArraySetAt(Elem::Transform), &[4, 3, 57], 1334);
-                step(f, Op::ArrayAt(Elem::Transform), &[5, 3, 74], 1335);
-                step(f, Op::BreakTransform, &[74, 340, 52, 341], 1336);
-                step(f, Op::MakeVector, &[845, 845, 50, 350], 1337);
-                step(f, Op::AddV, &[340, 350, 351], 1338);
-                step(f, Op::GetTransform, &[0, 71, 122, 76], 1339);
-                step(f, Op::BreakTransform, &[76, 345, 54, 346], 1340);
-                step(f, Op::MakeTransform, &[351, 54, 465, 78], 1341);
-                step(f, Op::ArrayAt(Elem::Bone), &[2, 3, 20], 1342);
-                step(f, Op::GetTransform, &[20, 71, 122, 77], 1343);
-                step(f, Op::BreakTransform, &[77, 347, 55, 348], 1344);
-                step(f, Op::SubV, &[347, 345, 349], 1345);
-                step(f, Op::AddV, &[351, 349, 352], 1346);
-                step(f, Op::FootPivots, &[351, 352, 52, 51, 50, 53, 353, 354, 355], 1347);
-                step(f, Op::GetParent, &[0, 18], 1348);
-                step(f, Op::GetParent, &[18, 19], 1349);
-                step(f, Op::GetTransform, &[19, 71, 123, 75], 1350);
-                step(f, Op::BreakTransform, &[75, 342, 53, 343], 1351);
-                step(f, Op::SubV, &[340, 342, 344], 1352);
-                step(f, Op::DotV, &[344, 470, 682], 1353);
-                step(f, Op::RemapF, &[682, 85, 84, 86, 845, 122, 685], 1354);
-                step(f, Op::LengthV, &[2, 683], 1355);
-                step(f, Op::RemapF, &[683, 845, 96, 845, 847, 122, 684], 1356);
-                step(f, Op::MulF, &[685, 684, 686], 1357);
-                step(f, Op::QuatFromAxisAngle, &[472, 686, 56], 1358);
-                step(f, Op::RotateAroundPoint, &[78, 353, 56, 79], 1359);
-                step(f, Op::ArrayAt(Elem::Float), &[2, 3, 687], 1360);
-                step(f, Op::SmoothStepF, &[687, 845, 90, 689], 1361);
-                step(f, Op::SubF, &[847, 687, 688], 1362);
-                step(f, Op::SmoothStepF, &[688, 845, 90, 690], 1363);
-                step(f, Op::MulF, &[689, 690, 691], 1364);
-                step(f, Op::LerpF, &[89, 847, 691, 692], 1365);
-                step(f, Op::MulF, &[686, 692, 693], 1366);
-                step(f, Op::QuatFromAxisAngle, &[472, 693, 57], 1367);
-                step(f, Op::SubV, &[354, 353, 356], 1368);
-                step(f, Op::RotateVector, &[57, 356, 357], 1369);
-                step(f, Op::AddV, &[353, 357, 358], 1370);
-                step(f, Op::RemapF, &[682, 87, 85, 88, 845, 122, 694], 1371);
-                step(f, Op::MulF, &[694, 684, 695], 1372);
-                step(f, Op::QuatFromAxisAngle, &[472, 695, 58], 1373);
-                step(f, Op::RotateAroundPoint, &[79, 358, 58, 80], 1374);
-                step(f, Op::RemapF, &[682, 91, 92, 845, 93, 122, 696], 1375);
-                step(f, Op::RotateVector, &[52, 468, 359], 1376);
-                step(f, Op::BreakVector, &[359, 697, 698, 699], 1377);
-                step(f, Op::CosF, &[95, 701], 1378);
-                step(f, Op::CosF, &[94, 700], 1379);
-                step(f, Op::RemapF, &[699, 701, 700, 845, 847, 122, 702], 1380);
-                step(f, Op::MulF, &[684, 702, 703], 1381);
-                step(f, Op::MulF, &[696, 703, 704], 1382);
-                step(f, Op::QuatFromAxisAngle, &[472, 704, 59], 1383);
-                step(f, Op::RotateAroundPoint, &[80, 355, 59, 81], 1384);
-                step(f, Op::SubF, &[847, 15, 705], 1385);
-                step(f, Op::MulF, &[14, 705, 706], 1386);
-                step(f, Op::LimitRotationAroundZ, &[52, 706, 97, 60], 1387);
-                step(f, Op::RotateAroundPoint, &[81, 340, 60, 82], 1388);
-                step(f, Op::ArraySetAt(Elem::Transform), &[7, 3, 82], 1389);
-                step(f, Op::JumpIfFalse, &[8, 1395], 1390)
+            1361 => {
+                step(f, Op::ArrayAt(Elem::Transform), &[5, 3, 71], 1362);
+                step(f, Op::BreakTransform, &[71, 310, 44, 311], 1363);
+                step(f, Op::ArrayAt(Elem::Transform), &[8, 3, 72], 1364);
+                step(f, Op::BreakTransform, &[72, 312, 45, 313], 1365);
+                step(f, Op::MulF, &[21, 21, 666], 1366);
+                step(f, Op::LerpV, &[310, 312, 666, 314], 1367);
+                step(f, Op::SubF, &[888, 21, 667], 1368);
+                step(f, Op::MulF, &[21, 667, 668], 1369);
+                step(f, Op::MulF, &[135, 891, 669], 1370);
+                step(f, Op::MulF, &[668, 669, 670], 1371);
+                step(f, Op::MakeVector, &[886, 886, 670, 315], 1372);
+                step(f, Op::AddV, &[314, 315, 316], 1373);
+                step(f, Op::SlerpQ, &[44, 45, 21, 46], 1374);
+                step(f, Op::MakeTransform, &[316, 46, 477, 73], 1375);
+                step(f, Op::ArraySetAt(Elem::Transform), &[5, 3, 73], 1376);
+                step(f, Op::ArrayAt(Elem::Transform), &[5, 3, 71], 1377);
+                step(f, Op::BreakTransform, &[71, 310, 44, 311], 1378);
+                step(f, Op::LerpV, &[310, 312, 666, 314], 1379);
+                step(f, Op::AddV, &[314, 315, 316], 1380);
+                step(f, Op::SlerpQ, &[44, 45, 21, 46], 1381);
+                step(f, Op::MakeTransform, &[316, 46, 477, 73], 1382);
+                step(f, Op::ArraySetAt(Elem::Transform), &[6, 3, 73], 1383);
+                step(f, Op::Jump, &[1384], 1384)
             }
-            1390 => {
-                step(f, Op::DrawPoint, &[355, 863, 472], 1391);
-                step(f, Op::DrawPoint, &[353, 863, 470], 1392);
-                step(f, Op::DrawPoint, &[358, 863, 468], 1393);
-                step(f, Op::DrawTransform, &[74, 862, 846], 1394);
-                step(f, Op::Jump, &[1395], 1395)
+            1384 => {
+                step(f, Op::GreaterEqualF, &[514, 888, 89], 1385);
+                step(f, Op::ArraySetAt(Elem::Bool), &[0, 3, 89], 1386);
+                step(f, Op::ArrayAt(Elem::Transform), &[1, 3, 41], 1387);
+                step(f, Op::BreakTransform, &[41, 197, 28, 198], 1388);
+                step(f, Op::SubF, &[888, 514, 537], 1389);
+                step(f, Op::MulF, &[10, 7, 538], 1390);
+                step(f, Op::MulF, &[537, 538, 539], 1391);
+                step(f, Op::ScaleV, &[2, 539, 199], 1392);
+                step(f, Op::AddV, &[197, 199, 200], 1393);
+                step(f, Op::Equals(Elem::Int), &[3, 71, 90], 1394);
+                step(f, Op::Select(ValueType::Int), &[90, 72, 71, 59], 1395);
+                step(f, Op::ArrayAt(Elem::Bool), &[0, 59, 93], 1396);
+                step(f, Op::ArrayAt(Elem::Transform), &[0, 59, 42], 1397);
+                step(f, Op::ArrayAt(Elem::Transform), &[3, 59, 43], 1398);
+                step(f, Op::Select(ValueType::Transform), &[93, 42, 43, 44], 1399);
+                step(f, Op::InterpolateTransform, &[2, 121, 22, 33], 1400);
+                step(f, Op::Select(ValueType::Transform), &[91, 33, 2, 34], 1401);
+                step(f, Op::MakeAbsolute, &[44, 34, 45], 1402);
+                step(f, Op::Select(ValueType::Transform), &[90, 45, 44, 46], 1403);
+                step(f, Op::BreakTransform, &[46, 201, 29, 202], 1404);
+                step(f, Op::MulF, &[14, 541, 542], 1405);
+                step(f, Op::FootAvoidance, &[200, 201, 542, 90, 83, 203], 1406);
+                step(f, Op::RemapF, &[15, 86, 888, 886, 888, 125, 540], 1407);
+                step(f, Op::LerpV, &[200, 203, 540, 204], 1408);
+                step(f, Op::MakeTransform, &[204, 94, 477, 62], 1409);
+                step(f, Op::ArraySetAt(Elem::Transform), &[4, 3, 62], 1410);
+                step(f, Op::ArrayAt(Elem::Transform), &[5, 3, 79], 1411);
+                step(f, Op::BreakTransform, &[79, 348, 53, 349], 1412);
+                step(f, Op::MakeVector, &[886, 886, 52, 358], 1413);
+                step(f, Op::AddV, &[348, 358, 359], 1414);
+                step(f, Op::GetTransform, &[0, 71, 125, 81], 1415);
+                step(f, Op::BreakTransform, &[81, 353, 55, 354], 1416);
+                step(f, Op::MakeTransform, &[359, 55, 477, 83], 1417);
+                step(f, Op::ArrayAt(Elem::Bone), &[2, 3, 20], 1418);
+                step(f, Op::GetTransform, &[20, 71, 125, 82], 1419);
+                step(f, Op::BreakTransform, &[82, 355, 56, 356], 1420);
+                step(f, Op::SubV, &[355, 353, 357], 1421);
+                step(f, Op::AddV, &[359, 357, 360], 1422);
+                step(f, Op::FootPivots, &[359, 360, 54, 53, 52, 55, 361, 362, 363], 1423);
+                step(f, Op::GetParent, &[0, 18], 1424);
+                step(f, Op::GetParent, &[18, 19], 1425);
+                step(f, Op::GetTransform, &[19, 71, 126, 80], 1426);
+                step(f, Op::BreakTransform, &[80, 350, 54, 351], 1427);
+                step(f, Op::SubV, &[348, 350, 352], 1428);
+                step(f, Op::DotV, &[352, 481, 718], 1429);
+                step(f, Op::RemapF, &[718, 88, 87, 89, 886, 125, 721], 1430);
+                step(f, Op::LengthV, &[2, 719], 1431);
+                step(f, Op::RemapF, &[719, 886, 99, 886, 888, 125, 720], 1432);
+                step(f, Op::MulF, &[721, 720, 722], 1433);
+                step(f, Op::QuatFromAxisAngle, &[484, 722, 57], 1434);
+                step(f, Op::RotateAroundPoint, &[83, 361, 57, 84], 1435);
+                step(f, Op::ArrayAt(Elem::Float), &[2, 3, 723], 1436);
+                step(f, Op::SmoothStepF, &[723, 886, 93, 725], 1437);
+                step(f, Op::SubF, &[888, 723, 724], 1438);
+                step(f, Op::SmoothStepF, &[724, 886, 93, 726], 1439);
+                step(f, Op::MulF, &[725, 726, 727], 1440);
+                step(f, Op::LerpF, &[92, 888, 727, 728], 1441);
+                step(f, Op::MulF, &[722, 728, 729], 1442);
+                step(f, Op::QuatFromAxisAngle, &[484, 729, 58], 1443);
+                step(f, Op::SubV, &[362, 361, 364], 1444);
+                step(f, Op::RotateVector, &[58, 364, 365], 1445);
+                step(f, Op::AddV, &[361, 365, 366], 1446);
+                step(f, Op::RemapF, &[718, 90, 88, 91, 886, 125, 730], 1447);
+                step(f, Op::MulF, &[730, 720, 731], 1448);
+                step(f, Op::QuatFromAxisAngle, &[484, 731, 59], 1449);
+                step(f, Op::RotateAroundPoint, &[84, 366, 59, 85], 1450);
+                step(f, Op::RemapF, &[718, 94, 95, 886, 96, 125, 732], 1451);
+                step(f, Op::RotateVector, &[53, 480, 367], 1452);
+                step(f, Op::BreakVector, &[367, 733, 734, 735], 1453);
+                step(f, Op::CosF, &[98, 737], 1454);
+                step(f, Op::CosF, &[97, 736], 1455);
+                step(f, Op::RemapF, &[735, 737, 736, 886, 888, 125, 738], 1456);
+                step(f, Op::MulF, &[720, 738, 739], 1457);
+                step(f, Op::MulF, &[732, 739, 740], 1458);
+                step(f, Op::QuatFromAxisAngle, &[484, 740, 60], 1459);
+                step(f, Op::RotateAroundPoint, &[85, 363, 60, 86], 1460);
+                step(f, Op::SubF, &[888, 15, 741], 1461);
+                step(f, Op::MulF, &[14, 741, 742], 1462);
+                step(f, Op::LimitRotationAroundZ, &[53, 742, 100, 61], 1463);
+                step(f, Op::RotateAroundPoint, &[86, 348, 61, 87], 1464);
+                step(f, Op::BreakTransform, &[87, 368, 62, 369], 1465);
+                step(f, Op::ArrayAt(Elem::Float), &[4, 3, 743], 1466);
+                step(f, Op::MulF, &[743, 101, 744], 1467);
+                step(f, Op::MulF, &[744, 102, 745], 1468);
+                step(f, Op::AddF, &[744, 102, 746], 1469);
+                step(f, Op::DivF, &[745, 746, 747], 1470);
+                step(f, Op::MakeVector, &[886, 886, 747, 370], 1471);
+                step(f, Op::AddV, &[368, 370, 371], 1472);
+                step(f, Op::MakeTransform, &[371, 62, 369, 88], 1473);
+                step(f, Op::ArraySetAt(Elem::Transform), &[7, 3, 88], 1474);
+                step(f, Op::JumpIfFalse, &[8, 1480], 1475)
             }
-            1395 => {
-                step(f, Op::Jump, &[593], 1396)
+            1475 => {
+                step(f, Op::DrawPoint, &[363, 904, 484], 1476);
+                step(f, Op::DrawPoint, &[361, 904, 481], 1477);
+                step(f, Op::DrawPoint, &[366, 904, 480], 1478);
+                step(f, Op::DrawTransform, &[79, 903, 887], 1479);
+                step(f, Op::Jump, &[1480], 1480)
             }
-            1396 => {
-                step(f, Op::Copy(ValueType::Array(Elem::Bone)), &[1, 5], 1397);
-                step(f, Op::Copy(ValueType::Int), &[71, 5], 1398);
-                1398
+            1480 => {
+                step(f, Op::Jump, &[605], 1481)
             }
-            1398 => {
-                step(f, Op::ForEachNext(Elem::Bone), &[5, 5, 1, 6, 7, 1438], 1399)
+            1481 => {
+                step(f, Op::Copy(ValueType::Array(Elem::Bone)), &[1, 5], 1482);
+                step(f, Op::Copy(ValueType::Int), &[71, 5], 1483);
+                1483
             }
-            1399 => {
-                step(f, Op::GetParent, &[1, 22], 1400);
-                step(f, Op::GetParent, &[22, 23], 1401);
-                step(f, Op::GetParent, &[23, 24], 1402);
-                step(f, Op::GetTransform, &[24, 71, 123, 83], 1403);
-                step(f, Op::BreakTransform, &[83, 360, 61, 361], 1404);
-                step(f, Op::LengthV, &[1, 708], 1405);
-                step(f, Op::ClavicleOffset, &[12, 708, 102, 105, 709], 1406);
-                step(f, Op::MakeVector, &[845, 845, 709, 362], 1407);
-                step(f, Op::AddV, &[360, 362, 363], 1408);
-                step(f, Op::MakeTransform, &[363, 61, 465, 84], 1409);
-                step(f, Op::SetTransform, &[24, 84, 71, 122, 847], 1410);
-                step(f, Op::GetTransform, &[1, 71, 123, 85], 1411);
-                step(f, Op::GetTransform, &[23, 71, 123, 86], 1412);
-                step(f, Op::BreakTransform, &[86, 364, 63, 365], 1413);
-                step(f, Op::Equals(Elem::Int), &[6, 71, 105], 1414);
-                step(f, Op::Select(ValueType::Int), &[105, 72, 71, 62], 1415);
-                step(f, Op::ArrayAt(Elem::Float), &[0, 62, 707], 1416);
-                step(f, Op::ArmSwingRotation, &[707, 1, 0, 103, 854, 864, 847, 102, 100, 101, 854, 854, 847, 710], 1417);
-                step(f, Op::QuatFromAxisAngle, &[472, 710, 62], 1418);
-                step(f, Op::RotateAroundPoint, &[85, 364, 62, 87], 1419);
-                step(f, Op::BreakTransform, &[87, 366, 64, 367], 1420);
-                step(f, Op::RemapF, &[708, 845, 102, 845, 104, 122, 711], 1421);
-                step(f, Op::MakeVector, &[845, 845, 711, 368], 1422);
-                step(f, Op::AddV, &[366, 368, 369], 1423);
-                step(f, Op::MakeTransform, &[369, 64, 465, 88], 1424);
-                step(f, Op::Select(ValueType::Vec3), &[105, 473, 472, 371], 1425);
-                step(f, Op::Select(ValueType::Vec3), &[105, 470, 474, 372], 1426);
-                step(f, Op::ArrayAt(Elem::Vec3), &[4, 6, 370], 1427);
-                step(f, Op::TwoBoneIK, &[23, 22, 1, 88, 371, 372, 370, 71, 847, 123, 865, 866, 122, 106, 712], 1428);
-                step(f, Op::JumpIfFalse, &[8, 1437], 1429)
+            1483 => {
+                step(f, Op::ForEachNext(Elem::Bone), &[5, 5, 1, 6, 7, 1523], 1484)
             }
-            1429 => {
-                step(f, Op::GetTransform, &[23, 71, 123, 86], 1430);
-                step(f, Op::BreakTransform, &[86, 364, 63, 365], 1431);
-                step(f, Op::GetTransform, &[1, 71, 123, 85], 1432);
-                step(f, Op::RotateAroundPoint, &[85, 364, 62, 87], 1433);
-                step(f, Op::BreakTransform, &[87, 366, 64, 367], 1434);
-                step(f, Op::AddV, &[366, 368, 369], 1435);
-                step(f, Op::DrawLine, &[364, 369, 846, 470], 1436);
-                step(f, Op::Jump, &[1437], 1437)
+            1484 => {
+                step(f, Op::GetParent, &[1, 22], 1485);
+                step(f, Op::GetParent, &[22, 23], 1486);
+                step(f, Op::GetParent, &[23, 24], 1487);
+                step(f, Op::GetTransform, &[24, 71, 126, 89], 1488);
+                step(f, Op::BreakTransform, &[89, 372, 63, 373], 1489);
+                step(f, Op::LengthV, &[1, 749], 1490);
+                step(f, Op::ClavicleOffset, &[12, 749, 108, 112, 750], 1491);
+                step(f, Op::MakeVector, &[886, 886, 750, 374], 1492);
+                step(f, Op::AddV, &[372, 374, 375], 1493);
+                step(f, Op::MakeTransform, &[375, 63, 477, 90], 1494);
+                step(f, Op::SetTransform, &[24, 90, 71, 125, 888], 1495);
+                step(f, Op::GetTransform, &[1, 71, 126, 91], 1496);
+                step(f, Op::GetTransform, &[23, 71, 126, 92], 1497);
+                step(f, Op::BreakTransform, &[92, 376, 65, 377], 1498);
+                step(f, Op::Equals(Elem::Int), &[6, 71, 108], 1499);
+                step(f, Op::Select(ValueType::Int), &[108, 72, 71, 62], 1500);
+                step(f, Op::ArrayAt(Elem::Float), &[0, 62, 748], 1501);
+                step(f, Op::ArmSwingRotation, &[748, 1, 0, 109, 895, 905, 888, 108, 106, 107, 110, 895, 888, 751], 1502);
+                step(f, Op::QuatFromAxisAngle, &[484, 751, 64], 1503);
+                step(f, Op::RotateAroundPoint, &[91, 376, 64, 93], 1504);
+                step(f, Op::BreakTransform, &[93, 378, 66, 379], 1505);
+                step(f, Op::RemapF, &[749, 886, 108, 886, 111, 125, 752], 1506);
+                step(f, Op::MakeVector, &[886, 886, 752, 380], 1507);
+                step(f, Op::AddV, &[378, 380, 381], 1508);
+                step(f, Op::MakeTransform, &[381, 66, 477, 94], 1509);
+                step(f, Op::Select(ValueType::Vec3), &[108, 485, 484, 383], 1510);
+                step(f, Op::Select(ValueType::Vec3), &[108, 481, 486, 384], 1511);
+                step(f, Op::ArrayAt(Elem::Vec3), &[4, 6, 382], 1512);
+                step(f, Op::TwoBoneIK, &[23, 22, 1, 94, 383, 384, 382, 71, 888, 126, 906, 907, 125, 109, 753], 1513);
+                step(f, Op::JumpIfFalse, &[8, 1522], 1514)
             }
-            1437 => {
-                step(f, Op::Jump, &[1398], 1438)
+            1514 => {
+                step(f, Op::GetTransform, &[23, 71, 126, 92], 1515);
+                step(f, Op::BreakTransform, &[92, 376, 65, 377], 1516);
+                step(f, Op::GetTransform, &[1, 71, 126, 91], 1517);
+                step(f, Op::RotateAroundPoint, &[91, 376, 64, 93], 1518);
+                step(f, Op::BreakTransform, &[93, 378, 66, 379], 1519);
+                step(f, Op::AddV, &[378, 380, 381], 1520);
+                step(f, Op::DrawLine, &[376, 381, 887, 481], 1521);
+                step(f, Op::Jump, &[1522], 1522)
             }
-            1438 => {
-                step(f, Op::NegF, &[3, 823], 1439);
-                step(f, Op::MakeVector, &[845, 845, 823, 447], 1440);
-                step(f, Op::MakeTransform, &[447, 92, 465, 109], 1441);
-                step(f, Op::SetTransform, &[36, 109, 71, 122, 847], 1442);
-                step(f, Op::Copy(ValueType::Float), &[852, 716], 1443);
-                step(f, Op::Copy(ValueType::Bool), &[123, 107], 1444);
-                step(f, Op::Copy(ValueType::Array(Elem::Transform)), &[5, 11], 1445);
-                step(f, Op::Copy(ValueType::Int), &[71, 63], 1446);
-                step(f, Op::MakeVector, &[845, 845, 55, 375], 1447);
-                1447
+            1522 => {
+                step(f, Op::Jump, &[1483], 1523)
             }
-            1447 => {
-                step(f, Op::ForEachNext(Elem::Transform), &[11, 63, 89, 64, 65, 1460], 1448)
+            1523 => {
+                step(f, Op::NegF, &[3, 864], 1524);
+                step(f, Op::MakeVector, &[886, 886, 864, 459], 1525);
+                step(f, Op::MakeTransform, &[459, 94, 477, 115], 1526);
+                step(f, Op::SetTransform, &[36, 115, 71, 125, 888], 1527);
+                step(f, Op::Copy(ValueType::Float), &[893, 757], 1528);
+                step(f, Op::Copy(ValueType::Bool), &[126, 110], 1529);
+                step(f, Op::Copy(ValueType::Array(Elem::Transform)), &[5, 11], 1530);
+                step(f, Op::Copy(ValueType::Int), &[71, 63], 1531);
+                step(f, Op::MakeVector, &[886, 886, 57, 387], 1532);
+                1532
             }
-            1448 => {
-                step(f, Op::BreakTransform, &[89, 373, 65, 374], 1449);
-                step(f, Op::AddV, &[373, 375, 376], 1450);
-                step(f, Op::SubV, &[373, 375, 377], 1451);
-                step(f, Op::SphereTrace, &[376, 377, 54, 108, 378, 379, 717], 1452);
-                step(f, Op::BreakVector, &[378, 718, 719, 720], 1453);
-                step(f, Op::LessF, &[720, 716, 109], 1454);
-                step(f, Op::And, &[108, 109, 110], 1455);
-                step(f, Op::JumpIfFalse, &[110, 1459], 1456)
+            1532 => {
+                step(f, Op::ForEachNext(Elem::Transform), &[11, 63, 95, 64, 65, 1545], 1533)
             }
-            1456 => {
-                step(f, Op::Copy(ValueType::Float), &[720, 716], 1457);
-                step(f, Op::Copy(ValueType::Bool), &[122, 107], 1458);
-                step(f, Op::Jump, &[1459], 1459)
+            1533 => {
+                step(f, Op::BreakTransform, &[95, 385, 67, 386], 1534);
+                step(f, Op::AddV, &[385, 387, 388], 1535);
+                step(f, Op::SubV, &[385, 387, 389], 1536);
+                step(f, Op::SphereTrace, &[388, 389, 56, 111, 390, 391, 758], 1537);
+                step(f, Op::BreakVector, &[390, 759, 760, 761], 1538);
+                step(f, Op::LessF, &[761, 757, 112], 1539);
+                step(f, Op::And, &[111, 112, 113], 1540);
+                step(f, Op::JumpIfFalse, &[113, 1544], 1541)
             }
-            1459 => {
-                step(f, Op::Jump, &[1447], 1460)
+            1541 => {
+                step(f, Op::Copy(ValueType::Float), &[761, 757], 1542);
+                step(f, Op::Copy(ValueType::Bool), &[125, 110], 1543);
+                step(f, Op::Jump, &[1544], 1544)
             }
-            1460 => {
-                step(f, Op::Select(ValueType::Float), &[107, 716, 845, 721], 1461);
-                step(f, Op::ClampF, &[721, 60, 61, 722], 1462);
-                step(f, Op::Copy(ValueType::Float), &[722, 715], 1463);
-                step(f, Op::SubF, &[847, 21, 714], 1464);
-                step(f, Op::MulF, &[715, 714, 723], 1465);
-                step(f, Op::SubF, &[847, 125, 724], 1466);
-                step(f, Op::MulF, &[3, 724, 725], 1467);
-                step(f, Op::AddF, &[723, 725, 726], 1468);
-                step(f, Op::MakeVector, &[16, 845, 845, 380], 1469);
-                step(f, Op::MakeVector, &[726, 845, 845, 381], 1470);
-                step(f, Op::Select(ValueType::Float), &[2, 726, 17, 727], 1471);
-                step(f, Op::MakeVector, &[727, 845, 845, 382], 1472);
-                step(f, Op::Copy(ValueType::Float), &[48, 728], 1473);
-                step(f, Op::Copy(ValueType::Float), &[49, 729], 1474);
-                step(f, Op::SubV, &[381, 382, 387], 1475);
-                step(f, Op::DeltaTime, &[730], 1476);
-                step(f, Op::DivF, &[729, 730, 731], 1477);
-                step(f, Op::ScaleV, &[387, 731, 388], 1478);
-                step(f, Op::AddV, &[381, 388, 389], 1479);
-                step(f, Op::AddV, &[382, 388, 390], 1480);
-                step(f, Op::SubV, &[380, 390, 391], 1481);
-                step(f, Op::FloatLerp, &[845, 847, 728, 732], 1482);
-                step(f, Op::SubF, &[847, 732, 733], 1483);
-                step(f, Op::ScaleV, &[391, 733, 392], 1484);
-                step(f, Op::AddV, &[389, 392, 394], 1485);
-                step(f, Op::MulF, &[728, 730, 734], 1486);
-                step(f, Op::GreaterF, &[734, 845, 111], 1487);
-                step(f, Op::DivF, &[732, 734, 735], 1488);
-                step(f, Op::Select(ValueType::Float), &[111, 735, 847, 736], 1489);
-                step(f, Op::ScaleV, &[387, 736, 393], 1490);
-                step(f, Op::SubV, &[394, 393, 395], 1491);
-                step(f, Op::Copy(ValueType::Vec3), &[395, 386], 1492);
-                step(f, Op::BreakVector, &[386, 737, 738, 739], 1493);
-                step(f, Op::Select(ValueType::Float), &[1, 726, 737, 740], 1494);
-                step(f, Op::Copy(ValueType::Float), &[740, 16], 1495);
-                step(f, Op::Copy(ValueType::Float), &[726, 17], 1496);
-                step(f, Op::GetTransform, &[37, 71, 122, 94], 1497);
-                step(f, Op::BreakTransform, &[94, 408, 72, 409], 1498);
-                step(f, Op::PelvisLean, &[1, 108, 113, 114, 758, 759], 1499);
-                step(f, Op::LengthV, &[2, 713], 1500);
-                step(f, Op::RemapF, &[713, 845, 108, 845, 106, 122, 741], 1501);
-                step(f, Op::MulF, &[15, 107, 744], 1502);
-                step(f, Op::SubF, &[847, 744, 745], 1503);
-                step(f, Op::MulF, &[741, 745, 746], 1504);
-                step(f, Op::MulF, &[12, 867, 742], 1505);
-                step(f, Op::SinF, &[742, 743], 1506);
-                step(f, Op::MulF, &[746, 743, 747], 1507);
-                step(f, Op::MulF, &[747, 714, 748], 1508);
-                step(f, Op::AddF, &[748, 16, 749], 1509);
-                step(f, Op::SubF, &[749, 3, 750], 1510);
-                step(f, Op::MakeVector, &[845, 759, 750, 410], 1511);
-                step(f, Op::AddV, &[408, 410, 411], 1512);
-                step(f, Op::ArrayAt(Elem::Transform), &[7, 71, 90], 1513);
-                step(f, Op::BreakTransform, &[90, 396, 66, 397], 1514);
-                step(f, Op::BreakVector, &[396, 760, 761, 762], 1515);
-                step(f, Op::ArrayAt(Elem::Transform), &[7, 72, 91], 1516);
-                step(f, Op::BreakTransform, &[91, 398, 67, 399], 1517);
-                step(f, Op::BreakVector, &[398, 763, 764, 765], 1518);
-                step(f, Op::SubF, &[762, 765, 766], 1519);
-                step(f, Op::PelvisSideLean, &[766, 115, 116, 767], 1520);
-                step(f, Op::ArrayAt(Elem::Transform), &[5, 71, 92], 1521);
-                step(f, Op::BreakTransform, &[92, 402, 68, 403], 1522);
-                step(f, Op::ArrayAt(Elem::Transform), &[5, 72, 93], 1523);
-                step(f, Op::BreakTransform, &[93, 404, 69, 405], 1524);
-                step(f, Op::SlerpQ, &[68, 69, 846, 70], 1525);
-                step(f, Op::EulerFromQuat, &[70, 71, 406], 1526);
-                step(f, Op::BreakVector, &[406, 754, 755, 756], 1527);
-                step(f, Op::RemapF, &[713, 109, 108, 845, 110, 122, 752], 1528);
-                step(f, Op::SubV, &[396, 398, 400], 1529);
-                step(f, Op::RotateVector, &[0, 470, 401], 1530);
-                step(f, Op::DotV, &[400, 401, 751], 1531);
-                step(f, Op::MulF, &[752, 751, 753], 1532);
-                step(f, Op::AddF, &[756, 753, 757], 1533);
-                step(f, Op::MakeVector, &[758, 767, 757, 407], 1534);
-                step(f, Op::QuatFromEuler, &[407, 71, 71], 1535);
-                step(f, Op::MakeTransform, &[411, 71, 465, 95], 1536);
-                step(f, Op::SetTransform, &[38, 95, 71, 122, 847], 1537);
-                step(f, Op::GetTransform, &[39, 72, 122, 96], 1538);
-                step(f, Op::BreakTransform, &[96, 412, 76, 413], 1539);
-                step(f, Op::QuatFromAxisAngle, &[468, 753, 73], 1540);
-                step(f, Op::DivF, &[111, 863, 768], 1541);
-                step(f, Op::QuatScale, &[73, 768, 74], 1542);
-                step(f, Op::MulQ, &[76, 74, 80], 1543);
-                step(f, Op::MakeTransform, &[412, 80, 465, 100], 1544);
-                step(f, Op::SetTransform, &[40, 100, 72, 122, 847], 1545);
-                step(f, Op::GetTransform, &[41, 72, 122, 97], 1546);
-                step(f, Op::BreakTransform, &[97, 414, 77, 415], 1547);
-                step(f, Op::MulQ, &[77, 74, 81], 1548);
-                step(f, Op::MakeTransform, &[414, 81, 465, 101], 1549);
-                step(f, Op::SetTransform, &[42, 101, 72, 122, 847], 1550);
-                step(f, Op::GetTransform, &[43, 72, 122, 98], 1551);
-                step(f, Op::BreakTransform, &[98, 416, 78, 417], 1552);
-                step(f, Op::MulQ, &[78, 74, 82], 1553);
-                step(f, Op::MakeTransform, &[416, 82, 465, 102], 1554);
-                step(f, Op::SetTransform, &[44, 102, 72, 122, 847], 1555);
-                step(f, Op::GetTransform, &[45, 72, 122, 99], 1556);
-                step(f, Op::BreakTransform, &[99, 418, 79, 419], 1557);
-                step(f, Op::QuatScale, &[73, 112, 75], 1558);
-                step(f, Op::MulQ, &[79, 75, 83], 1559);
-                step(f, Op::MakeTransform, &[418, 83, 465, 103], 1560);
-                step(f, Op::SetTransform, &[46, 103, 72, 122, 847], 1561);
-                step(f, Op::Or, &[1, 2, 117], 1562);
-                step(f, Op::Copy(ValueType::Float), &[845, 770], 1563);
-                step(f, Op::Copy(ValueType::Array(Elem::Bone)), &[0, 15], 1564);
-                step(f, Op::Copy(ValueType::Int), &[71, 66], 1565);
-                1565
+            1544 => {
+                step(f, Op::Jump, &[1532], 1545)
             }
-            1565 => {
-                step(f, Op::ForEachNext(Elem::Bone), &[15, 66, 25, 67, 68, 1612], 1566)
+            1545 => {
+                step(f, Op::Select(ValueType::Float), &[110, 757, 886, 762], 1546);
+                step(f, Op::ClampF, &[762, 62, 63, 763], 1547);
+                step(f, Op::Copy(ValueType::Float), &[763, 756], 1548);
+                step(f, Op::SubF, &[888, 21, 755], 1549);
+                step(f, Op::MulF, &[756, 755, 764], 1550);
+                step(f, Op::SubF, &[888, 132, 765], 1551);
+                step(f, Op::MulF, &[3, 765, 766], 1552);
+                step(f, Op::AddF, &[764, 766, 767], 1553);
+                step(f, Op::MakeVector, &[16, 886, 886, 392], 1554);
+                step(f, Op::MakeVector, &[767, 886, 886, 393], 1555);
+                step(f, Op::Select(ValueType::Float), &[2, 767, 17, 768], 1556);
+                step(f, Op::MakeVector, &[768, 886, 886, 394], 1557);
+                step(f, Op::Copy(ValueType::Float), &[50, 769], 1558);
+                step(f, Op::Copy(ValueType::Float), &[51, 770], 1559);
+                step(f, Op::SubV, &[393, 394, 399], 1560);
+                step(f, Op::DeltaTime, &[771], 1561);
+                step(f, Op::DivF, &[770, 771, 772], 1562);
+                step(f, Op::ScaleV, &[399, 772, 400], 1563);
+                step(f, Op::AddV, &[393, 400, 401], 1564);
+                step(f, Op::AddV, &[394, 400, 402], 1565);
+                step(f, Op::SubV, &[392, 402, 403], 1566);
+                step(f, Op::FloatLerp, &[886, 888, 769, 773], 1567);
+                step(f, Op::SubF, &[888, 773, 774], 1568);
+                step(f, Op::ScaleV, &[403, 774, 404], 1569);
+                step(f, Op::AddV, &[401, 404, 406], 1570);
+                step(f, Op::MulF, &[769, 771, 775], 1571);
+                step(f, Op::GreaterF, &[775, 886, 114], 1572);
+                step(f, Op::DivF, &[773, 775, 776], 1573);
+                step(f, Op::Select(ValueType::Float), &[114, 776, 888, 777], 1574);
+                step(f, Op::ScaleV, &[399, 777, 405], 1575);
+                step(f, Op::SubV, &[406, 405, 407], 1576);
+                step(f, Op::Copy(ValueType::Vec3), &[407, 398], 1577);
+                step(f, Op::BreakVector, &[398, 778, 779, 780], 1578);
+                step(f, Op::Select(ValueType::Float), &[1, 767, 778, 781], 1579);
+                step(f, Op::Copy(ValueType::Float), &[781, 16], 1580);
+                step(f, Op::Copy(ValueType::Float), &[767, 17], 1581);
+                step(f, Op::GetTransform, &[37, 71, 125, 100], 1582);
+                step(f, Op::BreakTransform, &[100, 420, 74, 421], 1583);
+                step(f, Op::PelvisLean, &[1, 115, 120, 121, 799, 800], 1584);
+                step(f, Op::LengthV, &[2, 754], 1585);
+                step(f, Op::RemapF, &[754, 886, 115, 886, 113, 125, 782], 1586);
+                step(f, Op::MulF, &[15, 114, 785], 1587);
+                step(f, Op::SubF, &[888, 785, 786], 1588);
+                step(f, Op::MulF, &[782, 786, 787], 1589);
+                step(f, Op::MulF, &[12, 908, 783], 1590);
+                step(f, Op::SinF, &[783, 784], 1591);
+                step(f, Op::MulF, &[787, 784, 788], 1592);
+                step(f, Op::MulF, &[788, 755, 789], 1593);
+                step(f, Op::AddF, &[789, 16, 790], 1594);
+                step(f, Op::SubF, &[790, 3, 791], 1595);
+                step(f, Op::MakeVector, &[886, 800, 791, 422], 1596);
+                step(f, Op::AddV, &[420, 422, 423], 1597);
+                step(f, Op::ArrayAt(Elem::Transform), &[7, 71, 96], 1598);
+                step(f, Op::BreakTransform, &[96, 408, 68, 409], 1599);
+                step(f, Op::BreakVector, &[408, 801, 802, 803], 1600);
+                step(f, Op::ArrayAt(Elem::Transform), &[7, 72, 97], 1601);
+                step(f, Op::BreakTransform, &[97, 410, 69, 411], 1602);
+                step(f, Op::BreakVector, &[410, 804, 805, 806], 1603);
+                step(f, Op::SubF, &[803, 806, 807], 1604);
+                step(f, Op::PelvisSideLean, &[807, 122, 123, 808], 1605);
+                step(f, Op::ArrayAt(Elem::Transform), &[5, 71, 98], 1606);
+                step(f, Op::BreakTransform, &[98, 414, 70, 415], 1607);
+                step(f, Op::ArrayAt(Elem::Transform), &[5, 72, 99], 1608);
+                step(f, Op::BreakTransform, &[99, 416, 71, 417], 1609);
+                step(f, Op::SlerpQ, &[70, 71, 887, 72], 1610);
+                step(f, Op::EulerFromQuat, &[72, 71, 418], 1611);
+                step(f, Op::BreakVector, &[418, 795, 796, 797], 1612);
+                step(f, Op::RemapF, &[754, 116, 115, 886, 117, 125, 793], 1613);
+                step(f, Op::SubV, &[408, 410, 412], 1614);
+                step(f, Op::RotateVector, &[0, 481, 413], 1615);
+                step(f, Op::DotV, &[412, 413, 792], 1616);
+                step(f, Op::MulF, &[793, 792, 794], 1617);
+                step(f, Op::AddF, &[797, 794, 798], 1618);
+                step(f, Op::MakeVector, &[799, 808, 798, 419], 1619);
+                step(f, Op::QuatFromEuler, &[419, 71, 73], 1620);
+                step(f, Op::MakeTransform, &[423, 73, 477, 101], 1621);
+                step(f, Op::SetTransform, &[38, 101, 71, 125, 888], 1622);
+                step(f, Op::GetTransform, &[39, 72, 125, 102], 1623);
+                step(f, Op::BreakTransform, &[102, 424, 78, 425], 1624);
+                step(f, Op::QuatFromAxisAngle, &[480, 794, 75], 1625);
+                step(f, Op::DivF, &[118, 904, 809], 1626);
+                step(f, Op::QuatScale, &[75, 809, 76], 1627);
+                step(f, Op::MulQ, &[78, 76, 82], 1628);
+                step(f, Op::MakeTransform, &[424, 82, 477, 106], 1629);
+                step(f, Op::SetTransform, &[40, 106, 72, 125, 888], 1630);
+                step(f, Op::GetTransform, &[41, 72, 125, 103], 1631);
+                step(f, Op::BreakTransform, &[103, 426, 79, 427], 1632);
+                step(f, Op::MulQ, &[79, 76, 83], 1633);
+                step(f, Op::MakeTransform, &[426, 83, 477, 107], 1634);
+                step(f, Op::SetTransform, &[42, 107, 72, 125, 888], 1635);
+                step(f, Op::GetTransform, &[43, 72, 125, 104], 1636);
+                step(f, Op::BreakTransform, &[104, 428, 80, 429], 1637);
+                step(f, Op::MulQ, &[80, 76, 84], 1638);
+                step(f, Op::MakeTransform, &[428, 84, 477, 108], 1639);
+                step(f, Op::SetTransform, &[44, 108, 72, 125, 888], 1640);
+                step(f, Op::GetTransform, &[45, 72, 125, 105], 1641);
+                step(f, Op::BreakTransform, &[105, 430, 81, 431], 1642);
+                step(f, Op::QuatScale, &[75, 119, 77], 1643);
+                step(f, Op::MulQ, &[81, 77, 85], 1644);
+                step(f, Op::MakeTransform, &[430, 85, 477, 109], 1645);
+                step(f, Op::SetTransform, &[46, 109, 72, 125, 888], 1646);
+                step(f, Op::Or, &[1, 2, 120], 1647);
+                step(f, Op::Copy(ValueType::Float), &[886, 811], 1648);
+                step(f, Op::Copy(ValueType::Array(Elem::Bone)), &[0, 15], 1649);
+                step(f, Op::Copy(ValueType::Int), &[71, 66], 1650);
+                1650
             }
-            1566 => {
-                step(f, Op::ArrayAt(Elem::Bool), &[0, 67, 112], 1567);
-                step(f, Op::GetParent, &[25, 26], 1568);
-                step(f, Op::GetParent, &[26, 27], 1569);
-                step(f, Op::GetTransform, &[27, 71, 123, 104], 1570);
-                step(f, Op::BreakTransform, &[104, 420, 84, 421], 1571);
-                step(f, Op::BreakVector, &[420, 771, 772, 773], 1572);
-                step(f, Op::ArrayAt(Elem::Transform), &[7, 67, 105], 1573);
-                step(f, Op::BreakTransform, &[105, 422, 85, 423], 1574);
-                step(f, Op::BreakVector, &[422, 774, 775, 776], 1575);
-                step(f, Op::ArrayAt(Elem::Float), &[1, 67, 780], 1576);
-                step(f, Op::MulF, &[780, 117, 781], 1577);
-                step(f, Op::MulF, &[781, 781, 782], 1578);
-                step(f, Op::SubF, &[771, 774, 777], 1579);
-                step(f, Op::SubF, &[772, 775, 778], 1580);
-                step(f, Op::MakeVector, &[777, 778, 845, 424], 1581);
-                step(f, Op::DotV, &[424, 424, 779], 1582);
-                step(f, Op::SubF, &[782, 779, 783], 1583);
-                step(f, Op::SqrtF, &[783, 784], 1584);
-                step(f, Op::AddF, &[776, 784, 785], 1585);
-                step(f, Op::SubF, &[773, 785, 786], 1586);
-                step(f, Op::ArrayAt(Elem::Transform), &[3, 67, 106], 1587);
-                step(f, Op::BreakTransform, &[106, 425, 86, 426], 1588);
-                step(f, Op::BreakVector, &[425, 787, 788, 789], 1589);
-                step(f, Op::AddF, &[789, 50, 790], 1590);
-                step(f, Op::MinF, &[776, 790, 791], 1591);
-                step(f, Op::AddF, &[791, 784, 792], 1592);
-                step(f, Op::SubF, &[773, 792, 793], 1593);
-                step(f, Op::Equals(Elem::Int), &[67, 71, 113], 1594);
-                step(f, Op::Select(ValueType::Int), &[113, 72, 71, 69], 1595);
-                step(f, Op::ArrayAt(Elem::Bool), &[0, 69, 114], 1596);
-                step(f, Op::ArrayAt(Elem::Float), &[2, 69, 797], 1597);
-                step(f, Op::RemapF, &[797, 846, 847, 845, 847, 122, 798], 1598);
-                step(f, Op::RemapF, &[797, 845, 120, 847, 845, 122, 799], 1599);
-                step(f, Op::MaxF, &[798, 799, 800], 1600);
-                step(f, Op::Select(ValueType::Float), &[114, 847, 800, 801], 1601);
-                step(f, Op::LerpF, &[786, 793, 801, 802], 1602);
-                step(f, Op::ArrayAt(Elem::Float), &[2, 67, 794], 1603);
-                step(f, Op::RemapF, &[794, 846, 847, 845, 847, 122, 795], 1604);
-                step(f, Op::MulF, &[802, 795, 803], 1605);
-                step(f, Op::RemapF, &[794, 845, 120, 847, 845, 122, 796], 1606);
-                step(f, Op::MulF, &[786, 796, 804], 1607);
-                step(f, Op::MaxF, &[803, 804, 805], 1608);
-                step(f, Op::Select(ValueType::Float), &[112, 786, 805, 806], 1609);
-                step(f, Op::MaxF, &[770, 806, 807], 1610);
-                step(f, Op::Copy(ValueType::Float), &[807, 770], 1611);
-                step(f, Op::Jump, &[1565], 1612)
+            1650 => {
+                step(f, Op::ForEachNext(Elem::Bone), &[15, 66, 25, 67, 68, 1697], 1651)
             }
-            1612 => {
-                step(f, Op::ClampF, &[770, 845, 118, 808], 1613);
-                step(f, Op::Copy(ValueType::Float), &[808, 769], 1614);
-                step(f, Op::MakeVector, &[18, 845, 845, 427], 1615);
-                step(f, Op::MakeVector, &[769, 845, 845, 428], 1616);
-                step(f, Op::MakeVector, &[19, 845, 845, 429], 1617);
-                step(f, Op::GreaterF, &[769, 18, 115], 1618);
-                step(f, Op::Select(ValueType::Float), &[115, 122, 119, 809], 1619);
-                step(f, Op::Copy(ValueType::Float), &[49, 811], 1620);
-                step(f, Op::SubV, &[428, 429, 434], 1621);
-                step(f, Op::DeltaTime, &[812], 1622);
-                step(f, Op::DivF, &[811, 812, 813], 1623);
-                step(f, Op::ScaleV, &[434, 813, 435], 1624);
-                step(f, Op::AddV, &[428, 435, 436], 1625);
-                step(f, Op::AddV, &[429, 435, 437], 1626);
-                step(f, Op::SubV, &[427, 437, 438], 1627);
-                step(f, Op::FloatLerp, &[845, 847, 809, 814], 1628);
-                step(f, Op::SubF, &[847, 814, 815], 1629);
-                step(f, Op::ScaleV, &[438, 815, 439], 1630);
-                step(f, Op::AddV, &[436, 439, 441], 1631);
-                step(f, Op::MulF, &[809, 812, 816], 1632);
-                step(f, Op::GreaterF, &[816, 845, 116], 1633);
-                step(f, Op::DivF, &[814, 816, 817], 1634);
-                step(f, Op::Select(ValueType::Float), &[116, 817, 847, 818], 1635);
-                step(f, Op::ScaleV, &[434, 818, 440], 1636);
-                step(f, Op::SubV, &[441, 440, 442], 1637);
-                step(f, Op::Copy(ValueType::Vec3), &[442, 433], 1638);
-                step(f, Op::BreakVector, &[433, 819, 820, 821], 1639);
-                step(f, Op::Select(ValueType::Float), &[117, 769, 819, 822], 1640);
-                step(f, Op::Copy(ValueType::Float), &[822, 18], 1641);
-                step(f, Op::Copy(ValueType::Float), &[769, 19], 1642);
-                step(f, Op::GetTransform, &[47, 71, 123, 107], 1643);
-                step(f, Op::BreakTransform, &[107, 443, 87, 444], 1644);
-                step(f, Op::MakeVector, &[845, 845, 18, 445], 1645);
-                step(f, Op::SubV, &[443, 445, 446], 1646);
-                step(f, Op::MakeTransform, &[446, 87, 465, 108], 1647);
-                step(f, Op::SetTransform, &[48, 108, 71, 122, 847], 1648);
-                step(f, Op::JumpIfFalse, &[8, 1655], 1649)
+            1651 => {
+                step(f, Op::ArrayAt(Elem::Bool), &[0, 67, 115], 1652);
+                step(f, Op::GetParent, &[25, 26], 1653);
+                step(f, Op::GetParent, &[26, 27], 1654);
+                step(f, Op::GetTransform, &[27, 71, 126, 110], 1655);
+                step(f, Op::BreakTransform, &[110, 432, 86, 433], 1656);
+                step(f, Op::BreakVector, &[432, 812, 813, 814], 1657);
+                step(f, Op::ArrayAt(Elem::Transform), &[7, 67, 111], 1658);
+                step(f, Op::BreakTransform, &[111, 434, 87, 435], 1659);
+                step(f, Op::BreakVector, &[434, 815, 816, 817], 1660);
+                step(f, Op::ArrayAt(Elem::Float), &[1, 67, 821], 1661);
+                step(f, Op::MulF, &[821, 124, 822], 1662);
+                step(f, Op::MulF, &[822, 822, 823], 1663);
+                step(f, Op::SubF, &[812, 815, 818], 1664);
+                step(f, Op::SubF, &[813, 816, 819], 1665);
+                step(f, Op::MakeVector, &[818, 819, 886, 436], 1666);
+                step(f, Op::DotV, &[436, 436, 820], 1667);
+                step(f, Op::SubF, &[823, 820, 824], 1668);
+                step(f, Op::SqrtF, &[824, 825], 1669);
+                step(f, Op::AddF, &[817, 825, 826], 1670);
+                step(f, Op::SubF, &[814, 826, 827], 1671);
+                step(f, Op::ArrayAt(Elem::Transform), &[3, 67, 112], 1672);
+                step(f, Op::BreakTransform, &[112, 437, 88, 438], 1673);
+                step(f, Op::BreakVector, &[437, 828, 829, 830], 1674);
+                step(f, Op::AddF, &[830, 52, 831], 1675);
+                step(f, Op::MinF, &[817, 831, 832], 1676);
+                step(f, Op::AddF, &[832, 825, 833], 1677);
+                step(f, Op::SubF, &[814, 833, 834], 1678);
+                step(f, Op::Equals(Elem::Int), &[67, 71, 116], 1679);
+                step(f, Op::Select(ValueType::Int), &[116, 72, 71, 69], 1680);
+                step(f, Op::ArrayAt(Elem::Bool), &[0, 69, 117], 1681);
+                step(f, Op::ArrayAt(Elem::Float), &[2, 69, 838], 1682);
+                step(f, Op::RemapF, &[838, 887, 888, 886, 888, 125, 839], 1683);
+                step(f, Op::RemapF, &[838, 886, 127, 888, 886, 125, 840], 1684);
+                step(f, Op::MaxF, &[839, 840, 841], 1685);
+                step(f, Op::Select(ValueType::Float), &[117, 888, 841, 842], 1686);
+                step(f, Op::LerpF, &[827, 834, 842, 843], 1687);
+                step(f, Op::ArrayAt(Elem::Float), &[2, 67, 835], 1688);
+                step(f, Op::RemapF, &[835, 887, 888, 886, 888, 125, 836], 1689);
+                step(f, Op::MulF, &[843, 836, 844], 1690);
+                step(f, Op::RemapF, &[835, 886, 127, 888, 886, 125, 837], 1691);
+                step(f, Op::MulF, &[827, 837, 845], 1692);
+                step(f, Op::MaxF, &[844, 845, 846], 1693);
+                step(f, Op::Select(ValueType::Float), &[115, 827, 846, 847], 1694);
+                step(f, Op::MaxF, &[811, 847, 848], 1695);
+                step(f, Op::Copy(ValueType::Float), &[848, 811], 1696);
+                step(f, Op::Jump, &[1650], 1697)
             }
-            1649 => {
-                step(f, Op::GetTransform, &[47, 71, 123, 107], 1650);
-                step(f, Op::BreakTransform, &[107, 443, 87, 444], 1651);
-                step(f, Op::SubV, &[443, 445, 446], 1652);
-                step(f, Op::MakeTransform, &[446, 87, 465, 108], 1653);
-                step(f, Op::DrawTransform, &[108, 868, 846], 1654);
-                step(f, Op::Jump, &[1655], 1655)
+            1697 => {
+                step(f, Op::ClampF, &[811, 886, 125, 849], 1698);
+                step(f, Op::Copy(ValueType::Float), &[849, 810], 1699);
+                step(f, Op::MakeVector, &[18, 886, 886, 439], 1700);
+                step(f, Op::MakeVector, &[810, 886, 886, 440], 1701);
+                step(f, Op::MakeVector, &[19, 886, 886, 441], 1702);
+                step(f, Op::GreaterF, &[810, 18, 118], 1703);
+                step(f, Op::Select(ValueType::Float), &[118, 129, 126, 850], 1704);
+                step(f, Op::Copy(ValueType::Float), &[51, 852], 1705);
+                step(f, Op::SubV, &[440, 441, 446], 1706);
+                step(f, Op::DeltaTime, &[853], 1707);
+                step(f, Op::DivF, &[852, 853, 854], 1708);
+                step(f, Op::ScaleV, &[446, 854, 447], 1709);
+                step(f, Op::AddV, &[440, 447, 448], 1710);
+                step(f, Op::AddV, &[441, 447, 449], 1711);
+                step(f, Op::SubV, &[439, 449, 450], 1712);
+                step(f, Op::FloatLerp, &[886, 888, 850, 855], 1713);
+                step(f, Op::SubF, &[888, 855, 856], 1714);
+                step(f, Op::ScaleV, &[450, 856, 451], 1715);
+                step(f, Op::AddV, &[448, 451, 453], 1716);
+                step(f, Op::MulF, &[850, 853, 857], 1717);
+                step(f, Op::GreaterF, &[857, 886, 119], 1718);
+                step(f, Op::DivF, &[855, 857, 858], 1719);
+                step(f, Op::Select(ValueType::Float), &[119, 858, 888, 859], 1720);
+                step(f, Op::ScaleV, &[446, 859, 452], 1721);
+                step(f, Op::SubV, &[453, 452, 454], 1722);
+                step(f, Op::Copy(ValueType::Vec3), &[454, 445], 1723);
+                step(f, Op::BreakVector, &[445, 860, 861, 862], 1724);
+                step(f, Op::Select(ValueType::Float), &[120, 810, 860, 863], 1725);
+                step(f, Op::Copy(ValueType::Float), &[863, 18], 1726);
+                step(f, Op::Copy(ValueType::Float), &[810, 19], 1727);
+                step(f, Op::GetTransform, &[47, 71, 126, 113], 1728);
+                step(f, Op::BreakTransform, &[113, 455, 89, 456], 1729);
+                step(f, Op::MakeVector, &[886, 886, 18, 457], 1730);
+                step(f, Op::SubV, &[455, 457, 458], 1731);
+                step(f, Op::MakeTransform, &[458, 89, 477, 114], 1732);
+                step(f, Op::SetTransform, &[48, 114, 71, 125, 888], 1733);
+                step(f, Op::JumpIfFalse, &[8, 1740], 1734)
             }
-            1655 => {
-                step(f, Op::Copy(ValueType::Array(Elem::Bone)), &[0, 6], 1656);
-                step(f, Op::Copy(ValueType::Int), &[71, 8], 1657);
-                1657
+            1734 => {
+                step(f, Op::GetTransform, &[47, 71, 126, 113], 1735);
+                step(f, Op::BreakTransform, &[113, 455, 89, 456], 1736);
+                step(f, Op::SubV, &[455, 457, 458], 1737);
+                step(f, Op::MakeTransform, &[458, 89, 477, 114], 1738);
+                step(f, Op::DrawTransform, &[114, 909, 887], 1739);
+                step(f, Op::Jump, &[1740], 1740)
             }
-            1657 => {
-                step(f, Op::ForEachNext(Elem::Bone), &[6, 8, 2, 9, 10, 1706], 1658)
+            1740 => {
+                step(f, Op::Copy(ValueType::Array(Elem::Bone)), &[0, 6], 1741);
+                step(f, Op::Copy(ValueType::Int), &[71, 8], 1742);
+                1742
             }
-            1658 => {
-                step(f, Op::GetParent, &[2, 29], 1659);
-                step(f, Op::GetParent, &[29, 30], 1660);
-                step(f, Op::GetTransform, &[30, 71, 123, 110], 1661);
-                step(f, Op::BreakTransform, &[110, 448, 88, 449], 1662);
-                step(f, Op::ArrayAt(Elem::Transform), &[7, 9, 111], 1663);
-                step(f, Op::BreakTransform, &[111, 450, 89, 451], 1664);
-                step(f, Op::SubV, &[450, 448, 452], 1665);
-                step(f, Op::LengthV, &[452, 835], 1666);
-                step(f, Op::ArrayAt(Elem::Float), &[1, 9, 824], 1667);
-                step(f, Op::MulF, &[824, 129, 825], 1668);
-                step(f, Op::ArrayAt(Elem::Bool), &[0, 9, 118], 1669);
-                step(f, Op::ArrayAt(Elem::Float), &[2, 9, 826], 1670);
-                step(f, Op::ClampF, &[826, 845, 847, 827], 1671);
-                step(f, Op::LessF, &[827, 846, 119], 1672);
-                step(f, Op::SmoothStepF, &[827, 131, 132, 830], 1673);
-                step(f, Op::MulF, &[827, 855, 828], 1674);
-                step(f, Op::SinF, &[828, 829], 1675);
-                step(f, Op::MaxF, &[830, 829, 831], 1676);
-                step(f, Op::Select(ValueType::Float), &[119, 831, 829, 832], 1677);
-                step(f, Op::MulF, &[832, 130, 833], 1678);
-                step(f, Op::Select(ValueType::Float), &[118, 845, 833, 834], 1679);
-                step(f, Op::SubF, &[825, 834, 836], 1680);
-                step(f, Op::SubF, &[835, 836, 837], 1681);
-                step(f, Op::MaxF, &[837, 845, 838], 1682);
-                step(f, Op::MulF, &[838, 838, 839], 1683);
-                step(f, Op::AddF, &[838, 834, 840], 1684);
-                step(f, Op::DivF, &[839, 840, 841], 1685);
-                step(f, Op::SubF, &[835, 841, 842], 1686);
-                step(f, Op::DivF, &[842, 835, 843], 1687);
-                step(f, Op::ScaleV, &[452, 843, 453], 1688);
-                step(f, Op::AddV, &[448, 453, 454], 1689);
-                step(f, Op::ClampSpatially, &[454, 448, 845, 825, 455], 1690);
-                step(f, Op::MakeTransform, &[455, 89, 465, 112], 1691);
-                step(f, Op::Equals(Elem::Int), &[9, 71, 120], 1692);
-                step(f, Op::Select(ValueType::Vec3), &[120, 473, 472, 460], 1693);
-                step(f, Op::Select(ValueType::Vec3), &[120, 470, 474, 461], 1694);
-                step(f, Op::ArrayAt(Elem::Transform), &[5, 9, 113], 1695);
-                step(f, Op::BreakTransform, &[113, 456, 90, 457], 1696);
-                step(f, Op::ArrayAt(Elem::Vec3), &[3, 9, 458], 1697);
-                step(f, Op::KneeVector, &[90, 0, 458, 133, 134, 459], 1698);
-                step(f, Op::TwoBoneIK, &[30, 29, 2, 112, 460, 461, 459, 71, 847, 123, 865, 866, 122, 121, 844], 1699);
-                step(f, Op::JumpIfFalse, &[8, 1705], 1700)
+            1742 => {
+                step(f, Op::ForEachNext(Elem::Bone), &[6, 8, 2, 9, 10, 1791], 1743)
             }
-            1700 => {
-                step(f, Op::GetTransform, &[29, 71, 123, 114], 1701);
-                step(f, Op::BreakTransform, &[114, 462, 91, 463], 1702);
-                step(f, Op::AddV, &[462, 459, 464], 1703);
-                step(f, Op::DrawLine, &[462, 464, 846, 475], 1704);
-                step(f, Op::Jump, &[1705], 1705)
+            1743 => {
+                step(f, Op::GetParent, &[2, 29], 1744);
+                step(f, Op::GetParent, &[29, 30], 1745);
+                step(f, Op::GetTransform, &[30, 71, 126, 116], 1746);
+                step(f, Op::BreakTransform, &[116, 460, 90, 461], 1747);
+                step(f, Op::ArrayAt(Elem::Transform), &[7, 9, 117], 1748);
+                step(f, Op::BreakTransform, &[117, 462, 91, 463], 1749);
+                step(f, Op::SubV, &[462, 460, 464], 1750);
+                step(f, Op::LengthV, &[464, 876], 1751);
+                step(f, Op::ArrayAt(Elem::Float), &[1, 9, 865], 1752);
+                step(f, Op::MulF, &[865, 136, 866], 1753);
+                step(f, Op::ArrayAt(Elem::Bool), &[0, 9, 121], 1754);
+                step(f, Op::ArrayAt(Elem::Float), &[2, 9, 867], 1755);
+                step(f, Op::ClampF, &[867, 886, 888, 868], 1756);
+                step(f, Op::LessF, &[868, 887, 122], 1757);
+                step(f, Op::SmoothStepF, &[868, 138, 139, 871], 1758);
+                step(f, Op::MulF, &[868, 896, 869], 1759);
+                step(f, Op::SinF, &[869, 870], 1760);
+                step(f, Op::MaxF, &[871, 870, 872], 1761);
+                step(f, Op::Select(ValueType::Float), &[122, 872, 870, 873], 1762);
+                step(f, Op::MulF, &[873, 137, 874], 1763);
+                step(f, Op::Select(ValueType::Float), &[121, 886, 874, 875], 1764);
+                step(f, Op::SubF, &[866, 875, 877], 1765);
+                step(f, Op::SubF, &[876, 877, 878], 1766);
+                step(f, Op::MaxF, &[878, 886, 879], 1767);
+                step(f, Op::MulF, &[879, 879, 880], 1768);
+                step(f, Op::AddF, &[879, 875, 881], 1769);
+                step(f, Op::DivF, &[880, 881, 882], 1770);
+                step(f, Op::SubF, &[876, 882, 883], 1771);
+                step(f, Op::DivF, &[883, 876, 884], 1772);
+                step(f, Op::ScaleV, &[464, 884, 465], 1773);
+                step(f, Op::AddV, &[460, 465, 466], 1774);
+                step(f, Op::ClampSpatially, &[466, 460, 886, 866, 467], 1775);
+                step(f, Op::MakeTransform, &[467, 91, 477, 118], 1776);
+                step(f, Op::Equals(Elem::Int), &[9, 71, 123], 1777);
+                step(f, Op::Select(ValueType::Vec3), &[123, 485, 484, 472], 1778);
+                step(f, Op::Select(ValueType::Vec3), &[123, 481, 486, 473], 1779);
+                step(f, Op::ArrayAt(Elem::Transform), &[5, 9, 119], 1780);
+                step(f, Op::BreakTransform, &[119, 468, 92, 469], 1781);
+                step(f, Op::ArrayAt(Elem::Vec3), &[3, 9, 470], 1782);
+                step(f, Op::KneeVector, &[92, 0, 470, 140, 141, 471], 1783);
+                step(f, Op::TwoBoneIK, &[30, 29, 2, 118, 472, 473, 471, 71, 888, 126, 906, 907, 125, 124, 885], 1784);
+                step(f, Op::JumpIfFalse, &[8, 1790], 1785)
             }
-            1705 => {
-                step(f, Op::Jump, &[1657], 1706)
+            1785 => {
+                step(f, Op::GetTransform, &[29, 71, 126, 120], 1786);
+                step(f, Op::BreakTransform, &[120, 474, 93, 475], 1787);
+                step(f, Op::AddV, &[474, 471, 476], 1788);
+                step(f, Op::DrawLine, &[474, 476, 887, 487], 1789);
+                step(f, Op::Jump, &[1790], 1790)
             }
-            1706 => {
-                step(f, Op::End, &[], 1707)
+            1790 => {
+                step(f, Op::Jump, &[1742], 1791)
+            }
+            1791 => {
+                step(f, Op::End, &[], 1792)
             }
             _ => return,
         } };
