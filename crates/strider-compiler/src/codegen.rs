@@ -251,6 +251,8 @@ struct Gen<'a> {
     /// in one is copied into the function's input (a variable may be set again while the
     /// body runs, or later in the frame, where the inspector would show its new value).
     variable_slots: FxHashSet<(ValueType, u32)>,
+    /// The `Return` being emitted is its body's last step (see [`Gen::exec_list`]).
+    tail_return: bool,
 }
 
 pub(crate) fn generate(loaded: &LoadedGraph, checked: &Checked) -> Program {
@@ -306,6 +308,7 @@ pub(crate) fn generate(loaded: &LoadedGraph, checked: &Checked) -> Program {
         reads: ReadsTable::default(),
         call_facts: checked.functions.iter().map(CallFacts::of).collect(),
         variable_slots: FxHashSet::default(),
+        tail_return: false,
     };
     for v in &checked.globals {
         let slot = g.pb.alloc(v.ty);
@@ -339,9 +342,7 @@ pub(crate) fn generate(loaded: &LoadedGraph, checked: &Checked) -> Program {
         } else {
             g.pb.set_forward_entry(entry);
         }
-        let mut rets = Vec::new();
-        g.steps(top, steps, doc, &mut rets);
-        g.patch_returns(rets);
+        g.exec_list(top, steps, doc);
         let origin = g.pb.intern_origin(InstrOrigin {
             kind: OriginKind::Step,
             node_id: None,
@@ -750,23 +751,24 @@ impl<'a> Gen<'a> {
                 }
                 // The inputs were just copied: nothing of an earlier run of the body holds.
                 self.avail[callee].clear();
-                let mut rets = Vec::new();
                 let exec = &self.checked.functions[f].exec;
                 let doc = &self.fn_decls[f].exec;
-                self.steps(callee, exec, doc, &mut rets);
-                self.patch_returns(rets);
+                self.exec_list(callee, exec, doc);
             }
         }
     }
 
-    /// Points the jumps of a body's `Return`s (`rets`, in emission order) past its end. A
-    /// body ending in a `Return` would jump to the very next instruction: that jump is
-    /// dropped (it is the last instruction, and nothing was emitted after it that could
-    /// target the position past it).
-    fn patch_returns(&mut self, mut rets: Vec<u32>) {
-        if rets.last().is_some_and(|&r| r + 1 == self.pb.here()) {
-            self.pb.drop_last();
-            rets.pop();
+    /// Emits the exec list of a function body or an event, its `Return`s jumping past its
+    /// end. A `Return` that is the list's last step has its end next: it jumps nowhere.
+    fn exec_list(&mut self, frame: usize, steps: &[CStep], doc: &[Step]) {
+        let mut rets = Vec::new();
+        match steps.split_last() {
+            Some((last @ CStep::Return(_), init)) => {
+                self.steps(frame, init, doc, &mut rets);
+                self.tail_return = true;
+                self.step(frame, last, doc.get(init.len()), &mut rets);
+            }
+            _ => self.steps(frame, steps, doc, &mut rets),
         }
         let end = self.pb.here();
         for r in rets {
@@ -826,12 +828,15 @@ impl<'a> Gen<'a> {
                 let before = self.avail[frame].clone();
                 self.steps(frame, then, then_doc, rets);
                 let after_then = std::mem::replace(&mut self.avail[frame], before);
-                let j = self.pb.emit(Op::Jump, &[0]);
+                // Without an else arm the then arm runs on into what follows.
+                let j = (!otherwise.is_empty()).then(|| self.pb.emit(Op::Jump, &[0]));
                 let else_at = self.pb.here();
                 self.pb.patch(jf, 1, else_at);
                 self.steps(frame, otherwise, else_doc, rets);
                 let end = self.pb.here();
-                self.pb.patch(j, 0, end);
+                if let Some(j) = j {
+                    self.pb.patch(j, 0, end);
+                }
                 self.avail[frame].retain(|n| after_then.contains(n));
             }
             CStep::ForEach { items, lp, body } => {
@@ -899,8 +904,10 @@ impl<'a> Gen<'a> {
                     let ty = self.body(frame).outputs[*o];
                     self.pb.emit(Op::Copy(ty), &[from, to]);
                 }
-                let j = self.pb.emit(Op::Jump, &[0]);
-                rets.push(j);
+                if !std::mem::take(&mut self.tail_return) {
+                    let j = self.pb.emit(Op::Jump, &[0]);
+                    rets.push(j);
+                }
             }
         }
     }
@@ -1016,13 +1023,14 @@ mod tests {
         assert_eq!(read(&[1], PinOwner::Local, "scratch"), Value::Float(1.5));
     }
 
-    /// `Bump` sets the variable it may be given; `Maybe` returns a value on one path only.
+    /// `Bump` sets the variable it may be given; `Maybe` returns a value on one path only;
+    /// `Either` ends in a branch that returns from both arms.
     const CALLS: &str = r#"Graph(
         version: 1,
         name: "calls",
         variables: {
             "A": (type: Float, default: 7.0), "Flag": (type: Bool, default: true),
-            "Seen": (type: Float), "Got": (type: Float),
+            "Seen": (type: Float), "Got": (type: Float), "Which": (type: Float),
         },
         functions: {
             "Bump": (
@@ -1036,9 +1044,25 @@ mod tests {
                 outputs: { "v": Float },
                 exec: [ Branch(condition: "flag", then: [ Return(v: 5.0) ]) ],
             ),
+            "Either": (
+                inputs: { "flag": Bool },
+                outputs: { "v": Float },
+                exec: [
+                    Branch(condition: "flag", then: [ Return(v: 1.0) ], else: [ Return(v: 2.0) ]),
+                ],
+            ),
         },
-        nodes: { "bump": Bump(x: var("A")), "maybe": Maybe(flag: var("Flag")) },
-        events: { forward: [ Run("bump"), Set("Seen", "bump.y"), Set("Got", "maybe.v") ] },
+        nodes: {
+            "bump": Bump(x: var("A")),
+            "maybe": Maybe(flag: var("Flag")),
+            "either": Either(flag: var("Flag")),
+        },
+        events: {
+            forward: [
+                Run("bump"), Set("Seen", "bump.y"), Set("Got", "maybe.v"),
+                Set("Which", "either.v"),
+            ],
+        },
     )"#;
 
     #[test]
@@ -1065,12 +1089,14 @@ mod tests {
         assert_eq!(instance.variable(var("Seen")), Value::Float(8.0));
         assert_eq!(instance.variable(var("A")), Value::Float(100.0));
         assert_eq!(instance.variable(var("Got")), Value::Float(5.0));
+        assert_eq!(instance.variable(var("Which")), Value::Float(1.0));
         // Leaving without a `Return` gives the output's zero, not the last call's value.
         instance
             .set_variable(var("Flag"), &Value::Bool(false))
             .expect("set");
         instance.run_forward(&FrameInput::default(), &EmptyWorld, false);
         assert_eq!(instance.variable(var("Got")), Value::Float(0.0));
+        assert_eq!(instance.variable(var("Which")), Value::Float(2.0));
     }
 
     /// Pure values are kept between steps only while what they read is unchanged.

@@ -431,17 +431,6 @@ impl ProgramBuilder {
         (self.program.code.len() - 1) as u32
     }
 
-    /// Removes the last instruction emitted (with its operands and origin). Sound only when
-    /// no jump targets the position past it: one that targets its own position lands on
-    /// whatever is emitted next.
-    pub fn drop_last(&mut self) {
-        let p = self.p();
-        if let Some(last) = p.code.pop() {
-            p.operands.truncate(last.args as usize);
-            p.instr_origins.pop();
-        }
-    }
-
     /// The id of `origin` in the program's origin table, adding it if new.
     pub fn intern_origin(&mut self, origin: InstrOrigin) -> OriginId {
         if let Some(&id) = self.origin_ids.get(&origin) {
