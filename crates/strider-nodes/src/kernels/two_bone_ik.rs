@@ -186,22 +186,9 @@ impl TwoBoneIk {
         }
 
         let normal = dir.cross(side);
-        let qa_solved = bone_rotation(
-            ga.rotation,
-            self.primary_axis,
-            self.secondary_axis,
-            mid - root,
-            new_mid - root,
-            normal,
-        );
-        let qb_solved = bone_rotation(
-            gb.rotation,
-            self.primary_axis,
-            self.secondary_axis,
-            end - mid,
-            new_end - new_mid,
-            normal,
-        );
+        let axes = BoneAxes::new(self.primary_axis, self.secondary_axis);
+        let qa_solved = bone_rotation(ga.rotation, axes, mid - root, new_mid - root, normal);
+        let qb_solved = bone_rotation(gb.rotation, axes, end - mid, new_end - new_mid, normal);
         let (qa, qb, mid_w, end_w) = if w >= 1.0 {
             (qa_solved, qb_solved, new_mid, new_end)
         } else {
@@ -395,13 +382,37 @@ fn place_joints(
     Some((new_mid, new_end))
 }
 
-/// New global rotation of one bone: `current` swung so the local `primary` axis points along
-/// `new_offset`, then twisted about it so the local `secondary` axis points to the bend
+/// A solve's local bone axes, normalised once for both bones.
+#[derive(Clone, Copy)]
+struct BoneAxes {
+    /// The secondary axis as given (made perpendicular to each bone's own direction when
+    /// the primary axis is unusable).
+    secondary: Vec3,
+    /// The unit primary axis; `None` when zero or not finite (each bone then uses its own
+    /// direction towards its child).
+    primary: Option<Vec3>,
+    /// The secondary axis made perpendicular to `primary` and normalised, when both are
+    /// usable.
+    local_secondary: Option<Vec3>,
+}
+
+impl BoneAxes {
+    fn new(primary: Vec3, secondary: Vec3) -> Self {
+        let primary = direction(primary);
+        Self {
+            secondary,
+            primary,
+            local_secondary: primary.and_then(|p| perpendicular(secondary, p)),
+        }
+    }
+}
+
+/// New global rotation of one bone: `current` swung so the local primary axis points along
+/// `new_offset`, then twisted about it so the local secondary axis points to the bend
 /// plane's pole side, `normal × dir`. A zero-length bone keeps `current`.
 fn bone_rotation(
     current: Quat,
-    primary: Vec3,
-    secondary: Vec3,
+    axes: BoneAxes,
     old_offset: Vec3,
     new_offset: Vec3,
     normal: Vec3,
@@ -409,10 +420,16 @@ fn bone_rotation(
     let (Some(old_dir), Some(dir)) = (direction(old_offset), direction(new_offset)) else {
         return current;
     };
-    let primary = direction(primary).unwrap_or_else(|| current.inverse() * old_dir);
+    let (primary, local_secondary) = match axes.primary {
+        Some(p) => (p, axes.local_secondary),
+        None => {
+            let p = current.inverse() * old_dir;
+            (p, perpendicular(axes.secondary, p))
+        }
+    };
     let swung = unit_q(find_quat_between(current * primary, dir) * current);
 
-    let Some(local_secondary) = perpendicular(secondary, primary) else {
+    let Some(local_secondary) = local_secondary else {
         return swung;
     };
     let Some(have) = perpendicular(swung * local_secondary, dir) else {
