@@ -898,13 +898,16 @@ impl<'a> Gen<'a> {
                 }
             }
             CStep::Return(values) => {
+                // Taken before the values are pulled: a pure call pulled here emits a body
+                // of its own, whose `Return`s must not see this one's flag.
+                let tail = std::mem::take(&mut self.tail_return);
                 for (o, arg) in values {
                     let from = self.pull(frame, std::slice::from_ref(arg))[0];
                     let to = self.frames[frame].outputs[*o];
                     let ty = self.body(frame).outputs[*o];
                     self.pb.emit(Op::Copy(ty), &[from, to]);
                 }
-                if !std::mem::take(&mut self.tail_return) {
+                if !tail {
                     let j = self.pb.emit(Op::Jump, &[0]);
                     rets.push(j);
                 }
@@ -1024,13 +1027,15 @@ mod tests {
     }
 
     /// `Bump` sets the variable it may be given; `Maybe` returns a value on one path only;
-    /// `Either` ends in a branch that returns from both arms.
+    /// `Either` ends in a branch that returns from both arms; `Wrap`'s final `Return` pulls
+    /// `Pick`, which returns early from a branch.
     const CALLS: &str = r#"Graph(
         version: 1,
         name: "calls",
         variables: {
             "A": (type: Float, default: 7.0), "Flag": (type: Bool, default: true),
             "Seen": (type: Float), "Got": (type: Float), "Which": (type: Float),
+            "Wrapped": (type: Float),
         },
         functions: {
             "Bump": (
@@ -1051,16 +1056,28 @@ mod tests {
                     Branch(condition: "flag", then: [ Return(v: 1.0) ], else: [ Return(v: 2.0) ]),
                 ],
             ),
+            "Pick": (
+                inputs: { "flag": Bool },
+                outputs: { "v": Float },
+                exec: [ Branch(condition: "flag", then: [ Return(v: 3.0) ]), Return(v: 4.0) ],
+            ),
+            "Wrap": (
+                inputs: { "flag": Bool },
+                outputs: { "w": Float },
+                nodes: { "picked": Pick(flag: "flag") },
+                exec: [ Return(w: "picked.v") ],
+            ),
         },
         nodes: {
             "bump": Bump(x: var("A")),
             "maybe": Maybe(flag: var("Flag")),
             "either": Either(flag: var("Flag")),
+            "wrap": Wrap(flag: var("Flag")),
         },
         events: {
             forward: [
                 Run("bump"), Set("Seen", "bump.y"), Set("Got", "maybe.v"),
-                Set("Which", "either.v"),
+                Set("Which", "either.v"), Set("Wrapped", "wrap.w"),
             ],
         },
     )"#;
@@ -1090,6 +1107,8 @@ mod tests {
         assert_eq!(instance.variable(var("A")), Value::Float(100.0));
         assert_eq!(instance.variable(var("Got")), Value::Float(5.0));
         assert_eq!(instance.variable(var("Which")), Value::Float(1.0));
+        // `Pick`, pulled by `Wrap`'s final `Return`, returns early from its branch.
+        assert_eq!(instance.variable(var("Wrapped")), Value::Float(3.0));
         // Leaving without a `Return` gives the output's zero, not the last call's value.
         instance
             .set_variable(var("Flag"), &Value::Bool(false))
@@ -1097,6 +1116,7 @@ mod tests {
         instance.run_forward(&FrameInput::default(), &EmptyWorld, false);
         assert_eq!(instance.variable(var("Got")), Value::Float(0.0));
         assert_eq!(instance.variable(var("Which")), Value::Float(2.0));
+        assert_eq!(instance.variable(var("Wrapped")), Value::Float(4.0));
     }
 
     /// Pure values are kept between steps only while what they read is unchanged.
