@@ -16,7 +16,7 @@
 //! [`strider_vm::InstrOrigin`]) in the program's side table, for profiling and tools.
 
 use crate::check::{Arg, Body, CStep, Checked, LoopPart, NodeKind, Src, VarRef};
-use crate::reads::{ReadsTable, Writes, pulled_by};
+use crate::reads::{ReadsTable, Writes, each_step, pulled_by};
 use rustc_hash::{FxHashMap, FxHashSet};
 use smallvec::SmallVec;
 use strider_graph::{EventKind, FunctionDecl, LoadedGraph, Loc, NodeDecl, Step};
@@ -197,23 +197,11 @@ impl CallFacts {
             .collect();
         let ends_in_return = matches!(body.exec.last(), Some(CStep::Return(_)));
         let mut returns: Vec<&[(usize, Arg)]> = Vec::new();
-        let mut lists: Vec<&[CStep]> = vec![&body.exec];
-        while let Some(list) = lists.pop() {
-            for step in list {
-                match step {
-                    CStep::Return(values) => returns.push(values),
-                    CStep::Branch {
-                        then, otherwise, ..
-                    } => {
-                        lists.push(then);
-                        lists.push(otherwise);
-                    }
-                    CStep::ForEach { body: b, .. } | CStep::For { body: b, .. } => lists.push(b),
-                    CStep::Sequence(blocks) => lists.extend(blocks.iter().map(Vec::as_slice)),
-                    CStep::Set { .. } | CStep::Exec(_) => {}
-                }
+        each_step(&body.exec, |step| {
+            if let CStep::Return(values) = step {
+                returns.push(values);
             }
-        }
+        });
         let output_always_returned = (0..body.outputs.len())
             .map(|o| ends_in_return && returns.iter().all(|r| r.iter().any(|(i, _)| *i == o)))
             .collect();

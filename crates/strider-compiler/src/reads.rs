@@ -106,47 +106,70 @@ impl Writes {
     /// Adds what `steps` of `body` may change (nested lists included; function bodies are
     /// summarised by their call: an impure call may change any variable and the pose).
     pub(crate) fn collect(&mut self, body: &Body, steps: &[CStep]) {
-        let mut lists: Vec<&[CStep]> = vec![steps];
-        while let Some(list) = lists.pop() {
-            for s in list {
-                match s {
-                    CStep::Set { target, .. } => self.vars.push(*target),
-                    CStep::Exec(n) => {
-                        self.execs.push(*n);
-                        let node = &body.nodes[*n];
-                        match node.kind {
-                            NodeKind::Builtin(op) => {
-                                // Only arrays are edited in place (a node's `target` pins,
-                                // which the checker requires to be variables); a scalar
-                                // input is only read.
-                                for a in node.inputs.iter().filter(|a| a.ty.is_array()) {
-                                    match a.src {
-                                        Src::Global(g) => self.vars.push(VarRef::Global(g)),
-                                        Src::Local(l) => self.vars.push(VarRef::Local(l)),
-                                        Src::Node { .. } => self.everything = true,
-                                        _ => {}
-                                    }
-                                }
-                                self.pose |= writes_pose(op);
-                            }
-                            NodeKind::Call(_) => {
-                                self.any_global |= !node.pure;
-                                self.pose |= !node.pure;
+        each_step(steps, |s| match s {
+            CStep::Set { target, .. } => self.vars.push(*target),
+            CStep::Exec(n) => {
+                self.execs.push(*n);
+                let node = &body.nodes[*n];
+                match node.kind {
+                    NodeKind::Builtin(op) => {
+                        // Only arrays are edited in place (a node's `target` pins, which
+                        // the checker requires to be variables); a scalar input is only
+                        // read.
+                        for a in node.inputs.iter().filter(|a| a.ty.is_array()) {
+                            match a.src {
+                                Src::Global(g) => self.vars.push(VarRef::Global(g)),
+                                Src::Local(l) => self.vars.push(VarRef::Local(l)),
+                                Src::Node { .. } => self.everything = true,
+                                _ => {}
                             }
                         }
+                        self.pose |= writes_pose(op);
                     }
-                    CStep::Branch {
-                        then, otherwise, ..
-                    } => {
-                        lists.push(then);
-                        lists.push(otherwise);
+                    NodeKind::Call(_) => {
+                        self.any_global |= !node.pure;
+                        self.pose |= !node.pure;
                     }
-                    CStep::ForEach { body: b, .. } | CStep::For { body: b, .. } => lists.push(b),
-                    CStep::Sequence(blocks) => lists.extend(blocks.iter().map(Vec::as_slice)),
-                    CStep::Return(_) => {}
                 }
             }
+            _ => {}
+        });
+    }
+}
+
+/// Calls `each` with every step of `steps`, those of nested lists (branch arms, loop
+/// bodies, sequence blocks) included: each list in order, nested lists after it.
+pub(crate) fn each_step<'s>(steps: &'s [CStep], mut each: impl FnMut(&'s CStep)) {
+    let mut lists: Vec<&[CStep]> = vec![steps];
+    while let Some(list) = lists.pop() {
+        for s in list {
+            each(s);
+            match s {
+                CStep::Branch {
+                    then, otherwise, ..
+                } => {
+                    lists.push(then);
+                    lists.push(otherwise);
+                }
+                CStep::ForEach { body, .. } | CStep::For { body, .. } => lists.push(body),
+                CStep::Sequence(blocks) => lists.extend(blocks.iter().map(Vec::as_slice)),
+                CStep::Set { .. } | CStep::Exec(_) | CStep::Return(_) => {}
+            }
         }
+    }
+}
+
+/// Calls `each` with the arguments `step` reads itself: a `Set`'s value, a branch's
+/// condition, a loop's items or count, a `Return`'s values (not an exec node's inputs, nor
+/// what nested steps read).
+fn step_args(step: &CStep, mut each: impl FnMut(&crate::check::Arg)) {
+    match step {
+        CStep::Set { arg, .. } => each(arg),
+        CStep::Branch { condition, .. } => each(condition),
+        CStep::ForEach { items, .. } => each(items),
+        CStep::For { count, .. } => each(count),
+        CStep::Return(values) => values.iter().for_each(|(_, a)| each(a)),
+        CStep::Exec(_) | CStep::Sequence(_) => {}
     }
 }
 
@@ -159,34 +182,10 @@ pub(crate) fn pulled_by(body: &Body, steps: &[CStep]) -> Vec<usize> {
             roots.push(node);
         }
     };
-    let mut lists: Vec<&[CStep]> = vec![steps];
-    while let Some(list) = lists.pop() {
-        for s in list {
-            match s {
-                CStep::Set { arg: a, .. } => arg(a),
-                CStep::Exec(n) => body.nodes[*n].inputs.iter().for_each(&mut arg),
-                CStep::Branch {
-                    condition,
-                    then,
-                    otherwise,
-                } => {
-                    arg(condition);
-                    lists.push(then);
-                    lists.push(otherwise);
-                }
-                CStep::ForEach { items, body: b, .. } => {
-                    arg(items);
-                    lists.push(b);
-                }
-                CStep::For { count, body: b, .. } => {
-                    arg(count);
-                    lists.push(b);
-                }
-                CStep::Sequence(blocks) => lists.extend(blocks.iter().map(Vec::as_slice)),
-                CStep::Return(values) => values.iter().for_each(|(_, a)| arg(a)),
-            }
-        }
-    }
+    each_step(steps, |s| match s {
+        CStep::Exec(n) => body.nodes[*n].inputs.iter().for_each(&mut arg),
+        _ => step_args(s, &mut arg),
+    });
     let mut seen = vec![false; body.nodes.len()];
     let mut out = Vec::new();
     while let Some(n) = roots.pop() {
@@ -312,32 +311,5 @@ fn for_each_step_global(steps: &[CStep], each: &mut impl FnMut(usize)) {
             each(g);
         }
     };
-    let mut lists: Vec<&[CStep]> = vec![steps];
-    while let Some(list) = lists.pop() {
-        for s in list {
-            match s {
-                CStep::Set { arg: a, .. } => arg(a),
-                CStep::Exec(_) => {}
-                CStep::Branch {
-                    condition,
-                    then,
-                    otherwise,
-                } => {
-                    arg(condition);
-                    lists.push(then);
-                    lists.push(otherwise);
-                }
-                CStep::ForEach { items, body, .. } => {
-                    arg(items);
-                    lists.push(body);
-                }
-                CStep::For { count, body, .. } => {
-                    arg(count);
-                    lists.push(body);
-                }
-                CStep::Sequence(blocks) => lists.extend(blocks.iter().map(Vec::as_slice)),
-                CStep::Return(values) => values.iter().for_each(|(_, a)| arg(a)),
-            }
-        }
-    }
+    each_step(steps, |s| step_args(s, &mut arg));
 }
