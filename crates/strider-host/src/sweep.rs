@@ -147,32 +147,30 @@ fn ball_triangle_sweep(
         return ball_edges_sweep(start, dir, length, radius, corners);
     };
     let height = normal.dot(start - a);
-    if height.abs() <= radius && inside_triangle(start - normal * height, corners, normal) {
-        return BallSweep::Overlap;
-    }
-    let edges = ball_edges_sweep(start, dir, length, radius, corners);
-    if edges == BallSweep::Overlap {
-        return edges;
+    if height.abs() <= radius {
+        if inside_triangle(start - normal * height, corners, normal) {
+            return BallSweep::Overlap;
+        }
+        // Touching the plane but beside the triangle: only an edge or a corner can be
+        // touched (or overlapped) first.
+        return ball_edges_sweep(start, dir, length, radius, corners);
     }
     // The face: the triangle's plane moved `radius` towards the start, crossed inside the
-    // triangle.
+    // triangle. Every point within `radius` of an edge or corner is within `radius` of the
+    // plane, which the ball reaches no sooner than this; so a face hit is the first.
     let side = if height > 0.0 { 1.0 } else { -1.0 };
     let approach = -side * normal.dot(dir);
-    if height.abs() > radius && approach > 0.0 {
+    if approach > 0.0 {
         let t = (height.abs() - radius) / approach;
         let centre = start + dir * t;
         if t <= length && inside_triangle(centre - normal * (side * radius), corners, normal) {
-            let face = BallSweep::Hit {
+            return BallSweep::Hit {
                 distance: t,
                 normal: normal * side,
             };
-            return match edges {
-                BallSweep::Hit { distance, .. } if distance < t => edges,
-                _ => face,
-            };
         }
     }
-    edges
+    ball_edges_sweep(start, dir, length, radius, corners)
 }
 
 /// A ball of `radius` swept from `start` along `dir` for `length`, against the solid convex
@@ -204,12 +202,15 @@ pub(crate) fn ball_triangles_sweep(
     triangles: impl IntoIterator<Item = [Vec3; 3]>,
 ) -> BallSweep {
     let mut nearest = BallSweep::Miss;
+    // A later triangle's hit counts only up to the nearest so far (a tie does not replace).
+    let mut reach = length;
     for corners in triangles {
-        match ball_triangle_sweep(start, dir, length, radius, corners) {
+        match ball_triangle_sweep(start, dir, reach, radius, corners) {
             BallSweep::Overlap => return BallSweep::Overlap,
             BallSweep::Hit { distance, normal } => {
                 if !matches!(nearest, BallSweep::Hit { distance: d, .. } if d <= distance) {
                     nearest = BallSweep::Hit { distance, normal };
+                    reach = distance;
                 }
             }
             BallSweep::Miss => {}

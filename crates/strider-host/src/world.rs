@@ -661,9 +661,10 @@ enum Form {
     HalfSpace { point: Vec3, normal: Vec3 },
     /// A box with these half extents (cm) in its own frame (the collider's pose).
     Box { half: Vec3 },
-    /// A triangle mesh (the heightfield): its triangles near the sweep, found through the
+    /// A triangle mesh (the heightfield): its triangles near the sweep, found by the
+    /// heightfield's cells when it has them and the sweep covers few, else through the
     /// mesh's own tree.
-    Mesh,
+    Mesh { grid: Option<Grid> },
     /// A convex hull (a ramp), in its own frame: its surface as triangles and its faces'
     /// planes (unit outward normal, offset).
     Hull {
@@ -710,21 +711,25 @@ impl Collider {
                 let (local_start, local_dir) = self.to_local(start, dir);
                 self.found(ball_box_sweep(local_start, local_dir, length, radius, half))
             }
-            Form::Mesh => {
+            Form::Mesh { grid } => {
                 let mesh = self.shape.as_trimesh()?;
                 let (local_start, local_dir) = self.to_local(start, dir);
                 let reach = ball_reach(local_start, local_start + local_dir * length, radius);
-                let near = mesh.bvh().intersect_aabb(&reach).map(|i| {
+                let corners = |i: u32| {
                     let t = mesh.triangle(i);
                     [t.a, t.b, t.c]
-                });
-                self.found(ball_triangles_sweep(
-                    local_start,
-                    local_dir,
-                    length,
-                    radius,
-                    near,
-                ))
+                };
+                let (start, dir) = (local_start, local_dir);
+                self.found(match grid.and_then(|g| g.cells_under(&reach)) {
+                    Some(cells) => {
+                        let near = cells.triangles().map(corners);
+                        ball_triangles_sweep(start, dir, length, radius, near)
+                    }
+                    None => {
+                        let near = mesh.bvh().intersect_aabb(&reach).map(corners);
+                        ball_triangles_sweep(start, dir, length, radius, near)
+                    }
+                })
             }
             Form::Hull { triangles, planes } => {
                 let (local_start, local_dir) = self.to_local(start, dir);
@@ -767,6 +772,89 @@ impl Collider {
 /// The box a ball of `radius` sweeps through moving from `start` to `end`.
 fn ball_reach(start: Vec3, end: Vec3, radius: f32) -> Aabb {
     Aabb::new(start.min(end) - radius, start.max(end) + radius)
+}
+
+/// A heightfield mesh's grid of cells in its own frame (the triangles of cell `(i, j)` are
+/// `2·(j·nx + i)` and the one after, as [`ShapeDesc::collision_shapes`] builds them).
+/// Traces find the triangles under them by cell, which for the short sweeps of a
+/// locomotion graph is a few cells, instead of walking the mesh's tree.
+#[derive(Clone, Copy, Debug)]
+struct Grid {
+    /// Corner of cell (0, 0), x and y (cm).
+    origin: (f32, f32),
+    /// Size of the whole grid, x and y (cm).
+    size: (f32, f32),
+    /// Cells along x and y (each ≥ 1).
+    cells: (u32, u32),
+}
+
+/// A rectangle of a [`Grid`]'s cells, inclusive.
+#[derive(Clone, Copy, Debug)]
+struct CellRange {
+    /// Cells along x in the whole grid.
+    nx: u32,
+    i: (u32, u32),
+    j: (u32, u32),
+}
+
+/// The most cells a trace reads by cell; a longer sweep asks the mesh's tree, which
+/// narrows a long diagonal better than its bounding rectangle of cells.
+const MAX_GRID_CELLS: u32 = 64;
+
+impl Grid {
+    /// The grid of a heightfield description; `None` for other shapes.
+    fn of(desc: &ShapeDesc) -> Option<Grid> {
+        match *desc {
+            ShapeDesc::Heightfield {
+                origin,
+                size,
+                cells,
+                ..
+            } => Some(Grid {
+                origin: (origin.0, origin.1),
+                size,
+                cells: (cells.0.max(1), cells.1.max(1)),
+            }),
+            _ => None,
+        }
+    }
+
+    /// The cells whose rectangle (grown by [`CULL_MARGIN`] against rounding) meets
+    /// `reach`'s, clamped to the grid; an empty range when it lies outside. `None` when
+    /// that is more than [`MAX_GRID_CELLS`] (or not finite).
+    fn cells_under(&self, reach: &Aabb) -> Option<CellRange> {
+        let axis = |lo: f32, hi: f32, origin: f32, size: f32, n: u32| -> Option<(u32, u32)> {
+            let scale = n as f32 / size;
+            let a = ((lo - CULL_MARGIN - origin) * scale).floor();
+            let b = ((hi + CULL_MARGIN - origin) * scale).floor();
+            if !(a.is_finite() && b.is_finite()) {
+                return None;
+            }
+            if b < 0.0 || a >= n as f32 {
+                // Outside the grid: no cells (an empty range).
+                return Some((1, 0));
+            }
+            Some((a.max(0.0) as u32, (b as u32).min(n - 1)))
+        };
+        let (cx, cy) = self.cells;
+        let i = axis(reach.mins.x, reach.maxs.x, self.origin.0, self.size.0, cx)?;
+        let j = axis(reach.mins.y, reach.maxs.y, self.origin.1, self.size.1, cy)?;
+        let count = |(a, b): (u32, u32)| (b + 1).saturating_sub(a);
+        (count(i).saturating_mul(count(j)) <= MAX_GRID_CELLS).then_some(CellRange { nx: cx, i, j })
+    }
+}
+
+impl CellRange {
+    /// The triangles of the range's cells, row by row.
+    fn triangles(self) -> impl Iterator<Item = u32> {
+        let Self { nx, i, j } = self;
+        (j.0..=j.1).flat_map(move |row| {
+            (i.0..=i.1).flat_map(move |col| {
+                let first = 2 * (row * nx + col);
+                [first, first + 1]
+            })
+        })
+    }
 }
 
 /// The closed-form description of a convex hull from its surface triangles (its own frame):
@@ -846,24 +934,24 @@ impl World {
                     kind: shape.kind(),
                     message,
                 })?;
-            shapes.extend(
-                shape
-                    .collision_shapes()
-                    .map_err(|message| WorldError::Geometry {
-                        index,
-                        kind: shape.kind(),
-                        message,
-                    })?,
-            );
+            let built = shape
+                .collision_shapes()
+                .map_err(|message| WorldError::Geometry {
+                    index,
+                    kind: shape.kind(),
+                    message,
+                })?;
+            let grid = Grid::of(shape);
+            shapes.extend(built.into_iter().map(|(pose, built)| (pose, built, grid)));
         }
         Ok(World::with_shapes(desc.clone(), shapes))
     }
 
     /// A world of built shapes and the description they came from.
-    fn with_shapes(desc: WorldDesc, shapes: Vec<(Pose, SharedShape)>) -> World {
+    fn with_shapes(desc: WorldDesc, shapes: Vec<(Pose, SharedShape, Option<Grid>)>) -> World {
         let colliders = shapes
             .into_iter()
-            .map(|(pose, shape)| {
+            .map(|(pose, shape, grid)| {
                 let form = if let Some(h) = shape.as_halfspace() {
                     let normal = (pose.rotation * h.normal).normalize_or_zero();
                     if normal == Vec3::ZERO {
@@ -879,7 +967,7 @@ impl World {
                         half: cuboid.half_extents,
                     }
                 } else if shape.as_trimesh().is_some() {
-                    Form::Mesh
+                    Form::Mesh { grid }
                 } else if let Some(hull) = shape.as_convex_polyhedron() {
                     hull_form(hull.to_trimesh())
                 } else {
@@ -910,7 +998,8 @@ impl World {
             if shape.validate().is_ok()
                 && let Ok(built) = shape.collision_shapes()
             {
-                shapes.extend(built);
+                let grid = Grid::of(shape);
+                shapes.extend(built.into_iter().map(|(pose, built)| (pose, built, grid)));
                 kept.push(shape.clone());
             }
         }

@@ -564,43 +564,50 @@ fn sphere_traces_onto_a_ramp_agree_with_parry3d() {
 #[test]
 fn sphere_traces_onto_a_heightfield_agree_with_parry3d() {
     // Ball-versus-triangle sweeps in closed form against the heightfield's triangles, and
-    // parry3d's cast against the same mesh (the description's collision shape).
-    let desc = ShapeDesc::Heightfield {
-        origin: (-100.0, -80.0, 5.0),
-        size: (200.0, 160.0),
-        cells: (8, 5),
-        heights: vec![],
-        waves: vec![
-            Wave {
-                amplitude: 6.0,
-                wavelength: 90.0,
-                heading: 20.0,
-                phase: 0.0,
-            },
-            Wave {
-                amplitude: 3.0,
-                wavelength: 45.0,
-                heading: 110.0,
-                phase: 40.0,
-            },
-        ],
-    };
-    let w = World::try_from_desc(&WorldDesc {
-        shapes: vec![desc.clone()],
-    })
-    .expect("valid heightfield");
-    let shapes = desc.collision_shapes().expect("a mesh");
-    let (pose, mesh) = &shapes[0];
-    agree_with_parry(
-        &w,
-        mesh.as_ref(),
-        pose,
-        (Vec3::new(0.0, 0.0, 30.0), Vec3::new(110.0, 90.0, 30.0)),
-        Vec3::new(40.0, 40.0, 70.0),
-        3000,
-        0x0bad_cafe,
-        600,
-    );
+    // parry3d's cast against the same mesh (the description's collision shape). The world
+    // finds the triangles under a sweep by the grid's cells when it covers at most 64 of
+    // them and through the mesh's tree otherwise: on 8 × 5 cells of 25 × 32 cm every sweep
+    // here is read by cell; on 40 × 25 cells of 5 × 6.4 cm the long ones (up to 40 cm
+    // across plus the ball) cover more than 64 and take the tree. Sweeps start up to 10 cm
+    // outside the grid on every side.
+    for (cells, seed) in [((8, 5), 0x0bad_cafe), ((40, 25), 0x0dd_ba11)] {
+        let desc = ShapeDesc::Heightfield {
+            origin: (-100.0, -80.0, 5.0),
+            size: (200.0, 160.0),
+            cells,
+            heights: vec![],
+            waves: vec![
+                Wave {
+                    amplitude: 6.0,
+                    wavelength: 90.0,
+                    heading: 20.0,
+                    phase: 0.0,
+                },
+                Wave {
+                    amplitude: 3.0,
+                    wavelength: 45.0,
+                    heading: 110.0,
+                    phase: 40.0,
+                },
+            ],
+        };
+        let w = World::try_from_desc(&WorldDesc {
+            shapes: vec![desc.clone()],
+        })
+        .expect("valid heightfield");
+        let shapes = desc.collision_shapes().expect("a mesh");
+        let (pose, mesh) = &shapes[0];
+        agree_with_parry(
+            &w,
+            mesh.as_ref(),
+            pose,
+            (Vec3::new(0.0, 0.0, 30.0), Vec3::new(110.0, 90.0, 30.0)),
+            Vec3::new(40.0, 40.0, 70.0),
+            3000,
+            seed,
+            600,
+        );
+    }
 }
 
 #[test]
