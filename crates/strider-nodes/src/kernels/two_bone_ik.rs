@@ -27,7 +27,10 @@
 //!    bend plane's pole side of the bone, `normal × (B − A)/|B − A|` with
 //!    `normal = dir × side`. The same for B with `C − B`. Both bones share one bend plane, so
 //!    the secondary axes turn with the plane continuously (a thigh folded back past 90° has
-//!    its secondary axis pointing back, as a rigid bone would). Scale is never touched
+//!    its secondary axis pointing back, as a rigid bone would). Swing and twist together
+//!    take the bone's local (primary, secondary) frame onto (bone direction, pole side), so
+//!    when both axes are usable that rotation is built from the two frames in one step,
+//!    without trigonometry, as the quaternion in the current rotation's hemisphere. Scale is never touched
 //!    (rotation only); a zero-length bone keeps its current rotation.
 //! 6. **Weight** blends from the current pose: rotations by shortest-path slerp, and each
 //!    child offset (expressed in its parent bone's rotation) linearly, so a stretched bone
@@ -38,7 +41,7 @@
 //! whose two bones both have zero length is left unchanged.
 
 use super::{find_quat_between, slerp, unit_q};
-use glam::{Quat, Vec3};
+use glam::{Mat3, Quat, Vec3};
 use strider_core::{BoneIndex, Pose, Transform};
 
 /// Lengths (cm) at or below this are treated as zero: a bone this short has no direction.
@@ -282,8 +285,12 @@ pub fn stretch_scale(stretch: Option<(f32, f32)>, reach_ratio: f32) -> f32 {
 }
 
 /// Unit vector along `v`, or `None` when `v` is shorter than [`LEN_EPS`] or not finite.
-/// Divides by the largest component first so huge finite vectors do not overflow.
+/// A vector whose squared length overflows is divided by its largest component first.
 fn direction(v: Vec3) -> Option<Vec3> {
+    let len_sq = v.length_squared();
+    if len_sq.is_finite() {
+        return (len_sq > LEN_EPS * LEN_EPS).then(|| v / len_sq.sqrt());
+    }
     let m = v.abs().max_element();
     if !(m > 0.0 && m.is_finite()) {
         return None;
@@ -308,18 +315,15 @@ fn chain_direction(root: Vec3, mid: Vec3, end: Vec3, target: Vec3) -> Option<Vec
 /// The part of `v` perpendicular to the unit `dir`, normalised; `None` when `v` is zero,
 /// non-finite or within [`PARALLEL_EPS`] of parallel to `dir`.
 fn perpendicular(v: Vec3, dir: Vec3) -> Option<Vec3> {
-    if !v.is_finite() {
-        return None;
-    }
-    let len = v.length();
-    if !(len > 0.0 && len.is_finite()) {
+    // Not finite (or overflowing when squared) and zero both fail here.
+    let len_sq = v.length_squared();
+    if !(len_sq > 0.0 && len_sq.is_finite()) {
         return None;
     }
     let p = v - dir * v.dot(dir);
-    if p.length() > PARALLEL_EPS * len {
+    if p.length_squared() > PARALLEL_EPS * PARALLEL_EPS * len_sq {
         // A second projection: for a `v` nearly parallel to `dir` the first one cancels
         // most of `v` and leaves a rounding error along `dir` that would tilt the plane.
-        let p = p.try_normalize()?;
         (p - dir * p.dot(dir)).try_normalize()
     } else {
         None
@@ -410,6 +414,12 @@ impl BoneAxes {
 /// New global rotation of one bone: `current` swung so the local primary axis points along
 /// `new_offset`, then twisted about it so the local secondary axis points to the bend
 /// plane's pole side, `normal × dir`. A zero-length bone keeps `current`.
+///
+/// With both local axes usable that rotation is the one taking the local frame
+/// (primary, secondary, primary × secondary) onto (dir, normal × dir, their cross
+/// product), built from the two frames at once; of its two quaternions the one in
+/// `current`'s hemisphere is returned. Otherwise the swing and the twist are applied in
+/// turn.
 fn bone_rotation(
     current: Quat,
     axes: BoneAxes,
@@ -420,6 +430,14 @@ fn bone_rotation(
     let (Some(old_dir), Some(dir)) = (direction(old_offset), direction(new_offset)) else {
         return current;
     };
+    if let (Some(p), Some(s)) = (axes.primary, axes.local_secondary)
+        && let Some(want) = perpendicular(normal.cross(dir), dir)
+    {
+        let local = Mat3::from_cols(p, s, p.cross(s));
+        let solved = Mat3::from_cols(dir, want, dir.cross(want));
+        let q = unit_q(Quat::from_mat3(&(solved * local.transpose())));
+        return if q.dot(current) < 0.0 { -q } else { q };
+    }
     let (primary, local_secondary) = match axes.primary {
         Some(p) => (p, axes.local_secondary),
         None => {
