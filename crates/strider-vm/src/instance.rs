@@ -311,8 +311,9 @@ impl Instance {
     ///
     /// # Errors
     /// [`NativeMismatch`] (and nothing runs) when `native` was generated from another
-    /// program. The check costs O(program size) the first time a given `native` is used
-    /// with this instance, then nothing.
+    /// program. The check compares the program's fingerprint (computed once per program,
+    /// O(program size), the first time any instance asks) the first time a given `native`
+    /// is used with this instance, then nothing.
     pub fn run_forward_native(
         &mut self,
         native: &NativeProgram,

@@ -73,9 +73,17 @@ impl NativeProgram {
 /// every platform and build.
 ///
 /// FNV-1a, written out here because std's hashers do not promise the same output across
-/// Rust releases, and the fingerprint is stored in generated source files.
+/// Rust releases, and the fingerprint is stored in generated source files. Computed once
+/// per program (O(program size)) and kept with it.
 #[must_use]
 pub fn fingerprint(program: &Program) -> u64 {
+    *program
+        .fingerprint
+        .get_or_init(|| compute_fingerprint(program))
+}
+
+/// [`fingerprint`] itself, walking the whole program.
+fn compute_fingerprint(program: &Program) -> u64 {
     const OFFSET: u64 = 0xcbf2_9ce4_8422_2325;
     const PRIME: u64 = 0x0000_0100_0000_01b3;
     let mut hash = OFFSET;

@@ -222,6 +222,10 @@ pub struct Program {
     /// The lengths of `initial`'s scalar arrays, which cover every scalar slot operand (see
     /// [`ProgramBuilder::finish`]).
     pub(crate) scalar_lens: ScalarLens,
+    /// The program's [`fingerprint`](crate::native::fingerprint), computed the first time
+    /// it is asked for (checking generated code against it) and kept: every instance of
+    /// a crowd shares the program, so it is computed once, not once per instance.
+    pub(crate) fingerprint: std::sync::OnceLock<u64>,
 }
 
 impl Program {
@@ -352,6 +356,7 @@ impl ProgramBuilder {
                 instr_origins: Vec::new(),
                 pin_slots: Vec::new(),
                 scalar_lens: ScalarLens::default(),
+                fingerprint: std::sync::OnceLock::new(),
             },
             current_origin: None,
             origin_ids: FxHashMap::default(),
