@@ -713,13 +713,12 @@ impl Collider {
             }
             Form::Mesh { grid } => {
                 let mesh = self.shape.as_trimesh()?;
-                let (local_start, local_dir) = self.to_local(start, dir);
-                let reach = ball_reach(local_start, local_start + local_dir * length, radius);
+                let (start, dir) = self.to_local(start, dir);
+                let reach = ball_reach(start, start + dir * length, radius);
                 let corners = |i: u32| {
                     let t = mesh.triangle(i);
                     [t.a, t.b, t.c]
                 };
-                let (start, dir) = (local_start, local_dir);
                 self.found(match grid.and_then(|g| g.cells_under(&reach)) {
                     Some(cells) => {
                         let near = cells.triangles().map(corners);
@@ -817,6 +816,17 @@ impl Grid {
             }),
             _ => None,
         }
+    }
+
+    /// `desc`'s built collision shapes, each with the grid of the heightfield it came from.
+    fn attach(
+        desc: &ShapeDesc,
+        built: Vec<(Pose, SharedShape)>,
+    ) -> impl Iterator<Item = (Pose, SharedShape, Option<Grid>)> {
+        let grid = Grid::of(desc);
+        built
+            .into_iter()
+            .map(move |(pose, shape)| (pose, shape, grid))
     }
 
     /// The cells whose rectangle (grown by [`CULL_MARGIN`] against rounding) meets
@@ -941,8 +951,7 @@ impl World {
                     kind: shape.kind(),
                     message,
                 })?;
-            let grid = Grid::of(shape);
-            shapes.extend(built.into_iter().map(|(pose, built)| (pose, built, grid)));
+            shapes.extend(Grid::attach(shape, built));
         }
         Ok(World::with_shapes(desc.clone(), shapes))
     }
@@ -998,8 +1007,7 @@ impl World {
             if shape.validate().is_ok()
                 && let Ok(built) = shape.collision_shapes()
             {
-                let grid = Grid::of(shape);
-                shapes.extend(built.into_iter().map(|(pose, built)| (pose, built, grid)));
+                shapes.extend(Grid::attach(shape, built));
                 kept.push(shape.clone());
             }
         }
