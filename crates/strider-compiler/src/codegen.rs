@@ -15,6 +15,7 @@
 //! Every instruction is tagged with its origin (the node or step that produced it, see
 //! [`strider_vm::InstrOrigin`]) in the program's side table, for profiling and tools.
 
+use crate::Options;
 use crate::check::{Arg, Body, CStep, Checked, LoopPart, NodeKind, Src, VarRef};
 use crate::reads::{ReadsTable, Writes, each_step, pulled_by};
 use rustc_hash::{FxHashMap, FxHashSet};
@@ -243,7 +244,7 @@ struct Gen<'a> {
     tail_return: bool,
 }
 
-pub(crate) fn generate(loaded: &LoadedGraph, checked: &Checked) -> Program {
+pub(crate) fn generate(loaded: &LoadedGraph, checked: &Checked, options: Options) -> Program {
     let name = if loaded.main.name.is_empty() {
         loaded
             .sources
@@ -342,7 +343,11 @@ pub(crate) fn generate(loaded: &LoadedGraph, checked: &Checked) -> Program {
         g.pb.emit(Op::End, &[]);
         g.pb.set_origin(None);
     }
-    g.pb.finish()
+    if options.keep_pin_values {
+        g.pb.finish()
+    } else {
+        g.pb.finish_sharing_slots()
+    }
 }
 
 impl<'a> Gen<'a> {
@@ -910,7 +915,7 @@ mod tests {
     use std::sync::Arc;
     use strider_core::{Bone, EmptyWorld, Skeleton, Transform};
     use strider_nodes::{Value, ValueType};
-    use strider_vm::{FrameInput, Instance, PinOwner};
+    use strider_vm::{FrameInput, Instance, PinOwner, Program};
 
     /// `Twice(x)` returns `2·x`; the forward event calls it on 3 and on `var("A")` (7), so
     /// its `doubled` node has one slot per call site.
@@ -949,9 +954,19 @@ mod tests {
         )
     }
 
+    /// `GRAPH` compiled with a slot per pin, as the inspector compiles.
+    fn with_pin_values() -> Program {
+        let loaded =
+            strider_graph::load_graph_str(Path::new("pins.ron"), GRAPH.to_string()).expect("loads");
+        let options = crate::Options {
+            keep_pin_values: true,
+        };
+        crate::compile_with(&loaded, options).expect("compiles")
+    }
+
     #[test]
     fn every_call_site_has_its_own_pin_slots() {
-        let program = crate::compile_str(Path::new("pins.ron"), GRAPH).expect("compiles");
+        let program = with_pin_values();
         let doubled: Vec<_> = program
             .pin_slots()
             .iter()
@@ -1076,7 +1091,7 @@ mod tests {
         // `Twice` never writes its local and returns on its only path; its first call's
         // argument is a constant, its second a variable: only the variable is copied in,
         // besides the two `Return`s and the two `Set`s. Neither call jumps to its end.
-        let program = crate::compile_str(Path::new("pins.ron"), GRAPH).expect("compiles");
+        let program = with_pin_values();
         let copies = program
             .code()
             .iter()

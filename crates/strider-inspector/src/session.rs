@@ -163,6 +163,17 @@ fn canonical(path: &Path) -> PathBuf {
     std::fs::canonicalize(path).unwrap_or_else(|_| path.to_path_buf())
 }
 
+/// Compiles a graph for inspection: every pin keeps a slot of its own, so the graph view
+/// shows each pin's value after a frame (the results are the same bit for bit).
+fn compile(
+    loaded: &strider_graph::LoadedGraph,
+) -> Result<strider_vm::Program, Vec<strider_graph::Diagnostic>> {
+    let options = strider_compiler::Options {
+        keep_pin_values: true,
+    };
+    strider_compiler::compile_with(loaded, options)
+}
+
 impl Session {
     /// Loads the graph, skeleton, world or scenario and overrides of `options`, creates the
     /// instance and starts watching the files.
@@ -177,7 +188,7 @@ impl Session {
     pub fn open(options: InspectOptions) -> Result<Session, InspectError> {
         let fail = |lines: Vec<String>| InspectError::Load(lines.join("\n"));
         let compiled = strider_graph::load_graph(&options.graph).and_then(|loaded| {
-            let program = strider_compiler::compile(&loaded)?;
+            let program = compile(&loaded)?;
             Ok((loaded, program))
         });
         let (loaded, program, graph_problems) = match compiled {
@@ -185,8 +196,7 @@ impl Session {
             Err(d) => {
                 let loaded = strider_graph::load_graph_str(&options.graph, EMPTY_GRAPH.to_string())
                     .map_err(|e| fail(diagnostics_text(&e)))?;
-                let program =
-                    strider_compiler::compile(&loaded).map_err(|e| fail(diagnostics_text(&e)))?;
+                let program = compile(&loaded).map_err(|e| fail(diagnostics_text(&e)))?;
                 (loaded, program, diagnostics_text(&d))
             }
         };
@@ -372,7 +382,7 @@ impl Session {
             }
         };
         let compiled = strider_graph::load_graph(&self.options.graph).and_then(|loaded| {
-            let program = strider_compiler::compile(&loaded)?;
+            let program = compile(&loaded)?;
             Ok((loaded, program))
         });
         let (loaded, program) = match compiled {

@@ -15,6 +15,6 @@ pub mod ops;
 pub mod table;
 pub mod types;
 
-pub use ops::{MAX_OPERANDS, Op, Operand};
+pub use ops::{Access, MAX_OPERANDS, Op, Operand};
 pub use table::{Effect, NodeSpec, Overload, PinSpec, Registry, registry};
 pub use types::{Elem, Value, ValueType};

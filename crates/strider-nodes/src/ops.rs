@@ -15,10 +15,26 @@ pub const MAX_OPERANDS: usize = 16;
 /// What one operand of an instruction is (see [`Op::operands`]).
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Operand {
-    /// The index of a slot of this type.
-    Slot(ValueType),
+    /// The index of a slot of this type, and what the instruction does with it.
+    Slot(ValueType, Access),
     /// An instruction index to continue at.
     Target,
+}
+
+/// What an instruction does with one of its slot operands.
+///
+/// An instruction with a jump target writes its [`Access::Write`] and
+/// [`Access::ReadWrite`] operands only when it does not jump (a loop step that leaves the
+/// loop sets nothing); every other instruction writes each of them every time it runs,
+/// whatever its inputs. Slot sharing (`strider_vm`) relies on both.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Access {
+    /// Only read.
+    Read,
+    /// Only written, with a value that does not depend on what the slot held.
+    Write,
+    /// Read, then written (a node's state, a loop counter, an array edited in place).
+    ReadWrite,
 }
 
 impl Op {
@@ -30,28 +46,30 @@ impl Op {
     /// every slot operand, read by this layout, names an existing slot of its type.
     #[must_use]
     pub fn operands(self) -> Option<Vec<Operand>> {
+        use Access::{Read, ReadWrite, Write};
         use Operand::{Slot, Target};
         use ValueType as T;
         Some(match self {
             Op::End => Vec::new(),
             Op::Jump => vec![Target],
-            Op::JumpIfFalse => vec![Slot(T::Bool), Target],
+            Op::JumpIfFalse => vec![Slot(T::Bool, Read), Target],
             Op::ForEachNext(e) => vec![
-                Slot(T::Array(e)),
-                Slot(T::Int),
-                Slot(e.scalar()),
-                Slot(T::Int),
-                Slot(T::Int),
+                Slot(T::Array(e), Read),
+                Slot(T::Int, ReadWrite),
+                Slot(e.scalar(), Write),
+                Slot(T::Int, Write),
+                Slot(T::Int, Write),
                 Target,
             ],
-            Op::ForNext => vec![Slot(T::Int), Slot(T::Int), Slot(T::Int), Target],
-            Op::Copy(ty) => vec![Slot(ty), Slot(ty)],
-            Op::IntToFloat => vec![Slot(T::Int), Slot(T::Float)],
-            op => crate::registry()
-                .layout(op)?
-                .iter()
-                .map(|&ty| Slot(ty))
-                .collect(),
+            Op::ForNext => vec![
+                Slot(T::Int, ReadWrite),
+                Slot(T::Int, Read),
+                Slot(T::Int, Write),
+                Target,
+            ],
+            Op::Copy(ty) => vec![Slot(ty, Read), Slot(ty, Write)],
+            Op::IntToFloat => vec![Slot(T::Int, Read), Slot(T::Float, Write)],
+            op => crate::registry().layout(op)?.to_vec(),
         })
     }
 }

@@ -1,7 +1,7 @@
 //! The node table: one entry per built-in node, from which the compiler's type checking,
 //! the executor's operand layout, `strider nodes` and `docs/nodes.md` are all derived.
 
-use crate::ops::Op;
+use crate::ops::{Access, Op, Operand};
 use crate::types::{Elem, Value, ValueType};
 use glam::{Quat, Vec3};
 use rustc_hash::FxHashMap;
@@ -52,6 +52,32 @@ pub struct Overload {
     pub state: Vec<ValueType>,
 }
 
+impl Overload {
+    /// The op's operands: each input read (a `target` array read and edited in place),
+    /// each output written, each state slot read and written.
+    #[must_use]
+    pub fn operands(&self) -> Vec<Operand> {
+        let input = |p: &PinSpec| {
+            let access = if p.target {
+                Access::ReadWrite
+            } else {
+                Access::Read
+            };
+            Operand::Slot(p.ty, access)
+        };
+        let inputs = self.inputs.iter().map(input);
+        let outputs = self
+            .outputs
+            .iter()
+            .map(|p| Operand::Slot(p.ty, Access::Write));
+        let state = self
+            .state
+            .iter()
+            .map(|&t| Operand::Slot(t, Access::ReadWrite));
+        inputs.chain(outputs).chain(state).collect()
+    }
+}
+
 /// A built-in node: name, docs, effect and its overloads.
 #[derive(Clone, Debug, PartialEq)]
 pub struct NodeSpec {
@@ -74,8 +100,8 @@ pub struct NodeSpec {
 pub struct Registry {
     nodes: Vec<NodeSpec>,
     index: FxHashMap<&'static str, usize>,
-    /// Each node op's operand types: inputs, outputs, state (see [`Op::operands`]).
-    layouts: FxHashMap<Op, Vec<ValueType>>,
+    /// Each node op's operands: inputs, outputs, state (see [`Op::operands`]).
+    layouts: FxHashMap<Op, Vec<Operand>>,
 }
 
 /// The built-in node table, built once.
@@ -86,10 +112,7 @@ pub fn registry() -> &'static Registry {
         let index = nodes.iter().enumerate().map(|(i, n)| (n.name, i)).collect();
         let mut layouts = FxHashMap::default();
         for o in nodes.iter().flat_map(|n| &n.overloads) {
-            let types = o.inputs.iter().chain(&o.outputs).map(|p| p.ty);
-            layouts
-                .entry(o.op)
-                .or_insert_with(|| types.chain(o.state.iter().copied()).collect());
+            layouts.entry(o.op).or_insert_with(|| o.operands());
         }
         Registry {
             nodes,
@@ -106,9 +129,9 @@ impl Registry {
         self.index.get(name).map(|&i| &self.nodes[i])
     }
 
-    /// The operand types of node op `op` (inputs, outputs, state), if a node compiles to it.
+    /// The operands of node op `op` (inputs, outputs, state), if a node compiles to it.
     #[must_use]
-    pub(crate) fn layout(&self, op: Op) -> Option<&[ValueType]> {
+    pub(crate) fn layout(&self, op: Op) -> Option<&[Operand]> {
         self.layouts.get(&op).map(Vec::as_slice)
     }
 
@@ -2021,13 +2044,7 @@ mod tests {
         // The executor reads an op's operands by one layout (`Op::operands`).
         for n in registry().nodes() {
             for o in &n.overloads {
-                let mine: Vec<crate::Operand> = o
-                    .inputs
-                    .iter()
-                    .chain(&o.outputs)
-                    .map(|p| crate::Operand::Slot(p.ty))
-                    .chain(o.state.iter().map(|&t| crate::Operand::Slot(t)))
-                    .collect();
+                let mine = o.operands();
                 assert_eq!(
                     o.op.operands().as_deref(),
                     Some(mine.as_slice()),
@@ -2038,20 +2055,21 @@ mod tests {
             }
         }
         // Control ops: jump targets are not slots.
+        use crate::Access::{Read, ReadWrite, Write};
         use crate::Operand::{Slot, Target};
         assert_eq!(Op::Jump.operands(), Some(vec![Target]));
         assert_eq!(
             Op::JumpIfFalse.operands(),
-            Some(vec![Slot(ValueType::Bool), Target])
+            Some(vec![Slot(ValueType::Bool, Read), Target])
         );
         assert_eq!(
             Op::ForEachNext(Elem::Vec3).operands(),
             Some(vec![
-                Slot(ValueType::Array(Elem::Vec3)),
-                Slot(ValueType::Int),
-                Slot(ValueType::Vec3),
-                Slot(ValueType::Int),
-                Slot(ValueType::Int),
+                Slot(ValueType::Array(Elem::Vec3), Read),
+                Slot(ValueType::Int, ReadWrite),
+                Slot(ValueType::Vec3, Write),
+                Slot(ValueType::Int, Write),
+                Slot(ValueType::Int, Write),
                 Target
             ])
         );

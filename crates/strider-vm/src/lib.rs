@@ -27,6 +27,7 @@ pub mod instance;
 pub mod native;
 pub mod profile;
 pub mod program;
+mod sharing;
 pub mod slots;
 
 pub use instance::{

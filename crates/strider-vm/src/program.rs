@@ -310,7 +310,9 @@ impl Program {
 
     /// Where every node output, function input and function local lives, per call path,
     /// in the order the compiler allocated them (empty for a hand-built program). For
-    /// tools: read a pin's current value with `Slots::read(entry.ty, entry.slot)`.
+    /// tools: read a pin's current value with `Slots::read(entry.ty, entry.slot)`. A
+    /// program built with [`ProgramBuilder::finish_sharing_slots`] (the compiler's
+    /// default) lists only the values that kept a slot of their own.
     #[must_use]
     pub fn pin_slots(&self) -> &[PinSlot] {
         &self.pin_slots
@@ -501,7 +503,24 @@ impl ProgramBuilder {
     /// compiler does not emit), or a jump target or an event's entry is not an instruction
     /// of the program: a program built that way could not be run safely.
     #[must_use]
-    pub fn finish(mut self) -> Program {
+    pub fn finish(self) -> Program {
+        self.finish_with(false)
+    }
+
+    /// [`ProgramBuilder::finish`], then packs the scalar slots of values that never
+    /// outlive a run into shared slots (see the `sharing` module): a smaller instance, the
+    /// same results bit for bit. Only the pin table entries of values that keep a slot of
+    /// their own remain ([`Program::pin_slots`]); build with [`ProgramBuilder::finish`]
+    /// for tools that show every pin's value.
+    ///
+    /// # Panics
+    /// As [`ProgramBuilder::finish`].
+    #[must_use]
+    pub fn finish_sharing_slots(self) -> Program {
+        self.finish_with(true)
+    }
+
+    fn finish_with(mut self, share: bool) -> Program {
         if !matches!(
             self.program.code.last().map(|i| i.op),
             Some(Op::End | Op::Jump)
@@ -519,15 +538,21 @@ impl ProgramBuilder {
                 "the {name} entry {entry} is not one of the {len} instructions"
             );
         }
-        for (pc, instr) in p.code.iter().enumerate() {
-            let layout = instr
-                .op
-                .operands()
-                .unwrap_or_else(|| panic!("{:?} has no operand layout", instr.op));
-            for (k, operand) in layout.into_iter().enumerate() {
+        let layouts: Vec<Vec<Operand>> = p
+            .code
+            .iter()
+            .map(|instr| {
+                instr
+                    .op
+                    .operands()
+                    .unwrap_or_else(|| panic!("{:?} has no operand layout", instr.op))
+            })
+            .collect();
+        for (pc, (instr, layout)) in p.code.iter().zip(&layouts).enumerate() {
+            for (k, &operand) in layout.iter().enumerate() {
                 let value = p.operands[instr.args as usize + k];
                 match operand {
-                    Operand::Slot(ty) => p.initial.cover_slot(ty, value),
+                    Operand::Slot(ty, _) => p.initial.cover_slot(ty, value),
                     Operand::Target => assert!(
                         (value as usize) < len,
                         "instruction {pc} ({:?}) jumps to {value}, past the {len} instructions",
@@ -535,6 +560,9 @@ impl ProgramBuilder {
                     ),
                 }
             }
+        }
+        if share {
+            crate::sharing::share(p, &layouts);
         }
         p.scalar_lens = ScalarLens::of(&p.initial);
         self.program

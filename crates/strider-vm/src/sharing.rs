@@ -1,0 +1,438 @@
+//! Slot sharing: values that live only within one run of an event share scalar slots.
+//!
+//! The compiler gives every node output, function input, local and loop variable of every
+//! call site a slot of its own, so tools can show each pin's value after a frame. Most of
+//! those values are written and last read within a few instructions of each other, and an
+//! instance carrying a slot for each of them is several times larger than the values alive
+//! at any one point: for a crowd, the instance's memory no longer fits the caches, and
+//! each frame waits on it.
+//!
+//! [`share`] finds, by liveness over the program's control flow, the scalar slots (bools,
+//! ints, floats, vectors, rotations, transforms) whose value never outlives a run, and
+//! packs those whose live ranges do not overlap into the same slot:
+//!
+//! - A slot is *kept* (never shared) when its value may be read before it is written in a
+//!   run of either event (live at an event's entry: constants, node state, variables read
+//!   before they are set, anything the construction leaves for the frames or a frame for
+//!   the next), or when it holds a graph variable (the host reads and sets those between
+//!   runs).
+//! - Every other slot is live over a set of instructions; its *range* is the span of
+//!   program positions from the first to the last of them, including every instruction
+//!   that reads or writes it. Two such slots of one type whose ranges do not overlap are
+//!   never live at the same point, and take the same slot (greedy interval partitioning,
+//!   which uses the fewest slots for a set of ranges).
+//!
+//! It relies on what [`Access`] documents: an instruction writes each of its written
+//! operands whenever it runs (and, for a loop step, whenever it does not jump), so a write
+//! ends whatever value the slot held before.
+//!
+//! Written here because no crate does liveness over this instruction set; the bit sets
+//! are `fixedbitset`'s.
+
+use crate::program::{Instr, PinSlot, Program};
+use crate::slots::Slots;
+use fixedbitset::FixedBitSet;
+use std::cmp::Reverse;
+use std::collections::BinaryHeap;
+use strider_nodes::{Access, Op, Operand, ValueType};
+
+/// The scalar slot types, in the order of [`Slots`]' scalar arrays.
+const SCALARS: [ValueType; 6] = [
+    ValueType::Bool,
+    ValueType::Int,
+    ValueType::Float,
+    ValueType::Vec3,
+    ValueType::Quat,
+    ValueType::Transform,
+];
+
+/// Position of `ty` in [`SCALARS`].
+fn scalar(ty: ValueType) -> Option<usize> {
+    SCALARS.iter().position(|&t| t == ty)
+}
+
+/// The lengths of `slots`' scalar arrays, in [`SCALARS`] order.
+fn lens(slots: &Slots) -> [usize; 6] {
+    [
+        slots.bools.len(),
+        slots.ints.len(),
+        slots.floats.len(),
+        slots.vec3s.len(),
+        slots.quats.len(),
+        slots.transforms.len(),
+    ]
+}
+
+/// Every scalar slot of the program numbered in one range: type `t`'s slot `s` is
+/// `base[t] + s`.
+struct Ids {
+    base: [usize; 7],
+}
+
+impl Ids {
+    fn new(lens: [usize; 6]) -> Self {
+        let mut base = [0; 7];
+        for t in 0..6 {
+            base[t + 1] = base[t] + lens[t];
+        }
+        Self { base }
+    }
+
+    fn count(&self) -> usize {
+        self.base[6]
+    }
+
+    fn id(&self, ty: ValueType, slot: u32) -> Option<usize> {
+        scalar(ty).map(|t| self.base[t] + slot as usize)
+    }
+}
+
+/// Each instruction's scalar slot reads and writes, as ids, in two flat lists.
+struct Accesses {
+    uses: Vec<u32>,
+    defs: Vec<u32>,
+    /// Instruction `pc`'s reads are `uses[use_at[pc]..use_at[pc + 1]]`; likewise `def_at`.
+    use_at: Vec<usize>,
+    def_at: Vec<usize>,
+}
+
+impl Accesses {
+    fn of(program: &Program, layouts: &[Vec<Operand>], ids: &Ids) -> Self {
+        let mut a = Accesses {
+            uses: Vec::new(),
+            defs: Vec::new(),
+            use_at: vec![0],
+            def_at: vec![0],
+        };
+        for (instr, layout) in program.code.iter().zip(layouts) {
+            for (k, operand) in layout.iter().enumerate() {
+                let Operand::Slot(ty, access) = *operand else {
+                    continue;
+                };
+                let Some(id) = ids.id(ty, program.operands[instr.args as usize + k]) else {
+                    continue;
+                };
+                if access != Access::Write {
+                    a.uses.push(id as u32);
+                }
+                if access != Access::Read {
+                    a.defs.push(id as u32);
+                }
+            }
+            a.use_at.push(a.uses.len());
+            a.def_at.push(a.defs.len());
+        }
+        a
+    }
+
+    /// Drops the reads of slots not in `slots`.
+    fn only_uses_of(&mut self, slots: &FixedBitSet) {
+        let mut uses = Vec::with_capacity(self.uses.len());
+        for pc in 0..self.use_at.len() - 1 {
+            let start = uses.len();
+            uses.extend(
+                self.uses[self.use_at[pc]..self.use_at[pc + 1]]
+                    .iter()
+                    .filter(|&&u| slots.contains(u as usize)),
+            );
+            self.use_at[pc] = start;
+        }
+        *self.use_at.last_mut().expect("one past the last") = uses.len();
+        self.uses = uses;
+    }
+
+    fn uses(&self, pc: usize) -> &[u32] {
+        &self.uses[self.use_at[pc]..self.use_at[pc + 1]]
+    }
+
+    fn defs(&self, pc: usize) -> &[u32] {
+        &self.defs[self.def_at[pc]..self.def_at[pc + 1]]
+    }
+}
+
+/// Where control goes after instruction `instr` (laid out as `layout`) at `pc`: the next
+/// instruction unless the op ends the event or always jumps, and its jump target if any.
+fn successors(
+    program: &Program,
+    instr: &Instr,
+    layout: &[Operand],
+    pc: usize,
+) -> [Option<usize>; 2] {
+    let target = layout
+        .iter()
+        .position(|o| *o == Operand::Target)
+        .map(|k| program.operands[instr.args as usize + k] as usize);
+    let falls_through = !matches!(instr.op, Op::End | Op::Jump);
+    [falls_through.then_some(pc + 1), target]
+}
+
+/// A run of instructions entered only at its first and left only after its last.
+struct Block {
+    start: usize,
+    /// One past the last instruction.
+    end: usize,
+    /// Read before written in the block (up to its terminator, if it branches).
+    gen_: FixedBitSet,
+    /// Written in the block (up to its terminator).
+    kill: FixedBitSet,
+    /// Whether the last instruction jumps or ends the event (and is left out of
+    /// `gen_`/`kill`: its writes happen only when it falls through).
+    branches: bool,
+    live_in: FixedBitSet,
+}
+
+/// Shares the program's scalar slots as the [module docs](self) describe; rewrites the
+/// operands, the initial memory image, the variables' slots and the pin table (which keeps
+/// only the values that still own their slot). `layouts` are the instructions' operand
+/// layouts ([`Op::operands`]); the program's operands must all name existing slots.
+pub(crate) fn share(program: &mut Program, layouts: &[Vec<Operand>]) {
+    let ids = Ids::new(lens(&program.initial));
+    let n_ids = ids.count();
+    let n = program.code.len();
+    let mut acc = Accesses::of(program, layouts, &ids);
+    // Slots no instruction writes (constants, mostly) keep their first value in every run:
+    // kept if read, and left out of the liveness, where they would be live everywhere.
+    let mut written = FixedBitSet::with_capacity(n_ids);
+    written.extend(acc.defs.iter().map(|&d| d as usize));
+    let mut kept = FixedBitSet::with_capacity(n_ids);
+    kept.extend(
+        acc.uses
+            .iter()
+            .map(|&u| u as usize)
+            .filter(|&u| !written.contains(u)),
+    );
+    acc.only_uses_of(&written);
+
+    // Basic blocks: they start at the entries, at jump targets and after any instruction
+    // that does not simply fall through.
+    let mut leader = FixedBitSet::with_capacity(n + 1);
+    leader.insert(program.construction as usize);
+    leader.insert(program.forward as usize);
+    for (pc, (instr, layout)) in program.code.iter().zip(layouts).enumerate() {
+        let [next, target] = successors(program, instr, layout, pc);
+        if let Some(t) = target {
+            leader.insert(t);
+        }
+        if target.is_some() || next.is_none() {
+            leader.insert(pc + 1);
+        }
+    }
+    let mut block_of = vec![0u32; n];
+    let mut blocks: Vec<Block> = Vec::new();
+    let mut start = 0;
+    while start < n {
+        let mut end = start + 1;
+        while end < n && !leader.contains(end) {
+            end += 1;
+        }
+        let last = end - 1;
+        let [next, target] = successors(program, &program.code[last], &layouts[last], last);
+        let branches = target.is_some() || next.is_none();
+        let body_end = if branches { last } else { end };
+        let (mut gen_, mut kill) = (
+            FixedBitSet::with_capacity(n_ids),
+            FixedBitSet::with_capacity(n_ids),
+        );
+        for pc in (start..body_end).rev() {
+            for &d in acc.defs(pc) {
+                gen_.set(d as usize, false);
+                kill.insert(d as usize);
+            }
+            for &u in acc.uses(pc) {
+                gen_.insert(u as usize);
+            }
+        }
+        block_of[start..end].fill(blocks.len() as u32);
+        blocks.push(Block {
+            start,
+            end,
+            gen_,
+            kill,
+            branches,
+            live_in: FixedBitSet::with_capacity(n_ids),
+        });
+        start = end;
+    }
+
+    // Live after the block's body: at its terminator (a branch reads its operands, writes
+    // only when falling through), or at the next block.
+    let live_out = |blocks: &[Block], b: usize, out: &mut FixedBitSet| {
+        out.clear();
+        let block = &blocks[b];
+        let last = block.end - 1;
+        let [next, target] = successors(program, &program.code[last], &layouts[last], last);
+        let next = if block.branches {
+            next
+        } else {
+            Some(block.end)
+        };
+        if let Some(next) = next.filter(|&p| p < n) {
+            out.union_with(&blocks[block_of[next] as usize].live_in);
+        }
+        if block.branches {
+            for &d in acc.defs(last) {
+                out.set(d as usize, false);
+            }
+            for &u in acc.uses(last) {
+                out.insert(u as usize);
+            }
+        }
+        if let Some(t) = target {
+            out.union_with(&blocks[block_of[t] as usize].live_in);
+        }
+    };
+    let mut out = FixedBitSet::with_capacity(n_ids);
+    let mut changed = true;
+    while changed {
+        changed = false;
+        for b in (0..blocks.len()).rev() {
+            live_out(&blocks, b, &mut out);
+            out.difference_with(&blocks[b].kill);
+            out.union_with(&blocks[b].gen_);
+            if out != blocks[b].live_in {
+                std::mem::swap(&mut blocks[b].live_in, &mut out);
+                changed = true;
+            }
+        }
+    }
+
+    // Kept: also live at an event's entry, or a variable.
+    for entry in [program.construction, program.forward] {
+        kept.union_with(&blocks[block_of[entry as usize] as usize].live_in);
+    }
+    for v in &program.variables {
+        if let Some(id) = ids.id(v.ty, v.slot) {
+            kept.insert(id);
+        }
+    }
+
+    // Ranges: the first and last position where each slot is live, read or written.
+    let mut lo = vec![usize::MAX; n_ids];
+    let mut hi = vec![0usize; n_ids];
+    let mut extend = |id: usize, pc: usize| {
+        lo[id] = lo[id].min(pc);
+        hi[id] = hi[id].max(pc);
+    };
+    for pc in 0..n {
+        for &id in acc.uses(pc).iter().chain(acc.defs(pc)) {
+            extend(id as usize, pc);
+        }
+    }
+    for b in 0..blocks.len() {
+        for id in blocks[b].live_in.ones() {
+            extend(id, blocks[b].start);
+        }
+        live_out(&blocks, b, &mut out);
+        for id in out.ones() {
+            extend(id, blocks[b].end - 1);
+        }
+    }
+
+    // New slots, per type: the kept ones first in their old order, then the shared ones
+    // by greedy interval partitioning.
+    let mut map = vec![u32::MAX; n_ids];
+    let mut occupants: Vec<Vec<u32>> = Vec::with_capacity(6);
+    let mut after = [0; 6];
+    for (t, slots) in after.iter_mut().enumerate() {
+        let range = ids.base[t]..ids.base[t + 1];
+        let mut count = 0u32;
+        let mut held = Vec::new();
+        for id in range.clone().filter(|&id| kept.contains(id)) {
+            map[id] = count;
+            held.push(1);
+            count += 1;
+        }
+        let mut shared: Vec<usize> = range
+            .filter(|&id| !kept.contains(id) && lo[id] != usize::MAX)
+            .collect();
+        shared.sort_by_key(|&id| (lo[id], id));
+        // (end of range, slot) of the slots in use, earliest end on top.
+        let mut busy: BinaryHeap<Reverse<(usize, u32)>> = BinaryHeap::new();
+        for id in shared {
+            let slot = match busy.peek() {
+                Some(&Reverse((end, slot))) if end < lo[id] => {
+                    busy.pop();
+                    held[slot as usize] += 1;
+                    slot
+                }
+                _ => {
+                    held.push(1);
+                    count += 1;
+                    count - 1
+                }
+            };
+            map[id] = slot;
+            busy.push(Reverse((hi[id], slot)));
+        }
+        *slots = count as usize;
+        occupants.push(held);
+    }
+
+    // Rewrite.
+    for (instr, layout) in program.code.iter().zip(layouts) {
+        for (k, operand) in layout.iter().enumerate() {
+            if let Operand::Slot(ty, _) = *operand
+                && let Some(id) = ids.id(ty, program.operands[instr.args as usize + k])
+            {
+                program.operands[instr.args as usize + k] = map[id];
+            }
+        }
+    }
+    for v in &mut program.variables {
+        if let Some(id) = ids.id(v.ty, v.slot) {
+            v.slot = map[id];
+        }
+    }
+    let owns = |p: &PinSlot| match ids.id(p.ty, p.slot) {
+        None => true,
+        Some(id) => {
+            let t = scalar(p.ty).unwrap_or_default();
+            map[id] != u32::MAX && occupants[t][map[id] as usize] == 1
+        }
+    };
+    program.pin_slots.retain(owns);
+    for p in &mut program.pin_slots {
+        if let Some(id) = ids.id(p.ty, p.slot) {
+            p.slot = map[id];
+        }
+    }
+    let old = &program.initial;
+    let mut initial = Slots {
+        bones: old.bones.clone(),
+        names: old.names.clone(),
+        bool_arrays: old.bool_arrays.clone(),
+        int_arrays: old.int_arrays.clone(),
+        float_arrays: old.float_arrays.clone(),
+        vec3_arrays: old.vec3_arrays.clone(),
+        quat_arrays: old.quat_arrays.clone(),
+        transform_arrays: old.transform_arrays.clone(),
+        bone_arrays: old.bone_arrays.clone(),
+        ..Slots::default()
+    };
+    for (t, &ty) in SCALARS.iter().enumerate() {
+        for _ in 0..after[t] {
+            initial.alloc(ty);
+        }
+    }
+    // A kept slot keeps its first value; a shared slot's first value is never read.
+    let kept_of = |t: usize| {
+        (ids.base[t]..ids.base[t + 1])
+            .filter(|&id| kept.contains(id))
+            .map(|id| (id - ids.base[t], map[id] as usize))
+            .collect::<Vec<_>>()
+    };
+    carry(&old.bools, &mut initial.bools, &kept_of(0));
+    carry(&old.ints, &mut initial.ints, &kept_of(1));
+    carry(&old.floats, &mut initial.floats, &kept_of(2));
+    carry(&old.vec3s, &mut initial.vec3s, &kept_of(3));
+    carry(&old.quats, &mut initial.quats, &kept_of(4));
+    carry(&old.transforms, &mut initial.transforms, &kept_of(5));
+    program.initial = initial;
+}
+
+/// Copies `old[from]` to `new[to]` for each `(from, to)` of `moves`.
+fn carry<T: Copy>(old: &[T], new: &mut [T], moves: &[(usize, usize)]) {
+    for &(from, to) in moves {
+        new[to] = old[from];
+    }
+}
