@@ -64,6 +64,9 @@ fn a_crowd_on_two_threads_reports_every_figure() {
     assert_eq!(j["native_identical"], true);
     // The counting allocator is installed in the binary, and nothing allocates per frame.
     assert_eq!(f(&j["allocations_per_frame"]), 0.0, "{j}");
+    // An instance holds at least its pose: two transforms per mannequin bone (23).
+    let pose = 2.0 * 23.0 * size_of::<strider::Transform>() as f64;
+    assert!(f(&j["instance_bytes"]) > pose, "{j}");
 }
 
 #[test]

@@ -25,9 +25,7 @@ const RATES: [u32; 4] = [30, 60, 144, 240];
 /// `(scenario, metric, measured)`: targets `graphs/locomotion.ron` does not meet yet, with
 /// the value measured when the entry was written (a ceiling: the test fails if the metric
 /// gets worse). Reasons are given in docs/locomotion.md.
-const KNOWN_MISSES: &[(&str, &str, f64)] = &[
-    ("reverse", "framerate_deviation_cm_max", 2.91),
-];
+const KNOWN_MISSES: &[(&str, &str, f64)] = &[("reverse", "framerate_deviation_cm_max", 2.91)];
 
 /// Runs `graph` through `scenario` at 60 Hz and at every rate of [`RATES`] and returns the
 /// report with the frame-rate deviation filled in.

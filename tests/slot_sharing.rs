@@ -114,6 +114,25 @@ fn shared_slots_shrink_the_shipped_graphs() {
         // The same instructions, reading other slots.
         assert_eq!(kept.code(), shared.code());
         assert_eq!(kept.variables().len(), shared.variables().len());
+        // An instance is smaller by exactly the slots it no longer holds.
+        let skeleton = strider::load_skeleton(Path::new("graphs/skeletons/mannequin.ron"))
+            .expect("skeleton")
+            .skeleton;
+        let bytes = |p: Program| {
+            Instance::new(Arc::new(p), Arc::clone(&skeleton))
+                .expect("instance")
+                .memory_bytes()
+        };
+        let sizes = [
+            size_of::<bool>(),
+            size_of::<i32>(),
+            size_of::<f32>(),
+            size_of::<glam::Vec3>(),
+            size_of::<glam::Quat>(),
+            size_of::<strider::Transform>(),
+        ];
+        let saved: usize = (0..6).map(|t| (k[t] - s[t]) * sizes[t]).sum();
+        assert_eq!(bytes(kept) - bytes(shared), saved, "{graph}");
     }
 }
 

@@ -342,6 +342,13 @@ pub(crate) fn run(args: &BenchArgs) -> anyhow::Result<ExitCode> {
         None => None,
     };
     let allocations_per_frame = allocations.map(|a| a as f64 / timed_frames.max(1) as f64);
+    // The largest instance once warmed up (their buffers no longer grow).
+    let instance_bytes = crowd
+        .instances
+        .iter()
+        .map(Instance::memory_bytes)
+        .max()
+        .unwrap_or(0);
     let profile = if args.profile {
         Some(profile_top(
             &program,
@@ -373,6 +380,7 @@ pub(crate) fn run(args: &BenchArgs) -> anyhow::Result<ExitCode> {
             "ns_per_character_frame": headline.ns_per_character_frame,
             "characters_per_16ms": headline.characters_per_16ms,
             "allocations_per_frame": allocations_per_frame,
+            "instance_bytes": instance_bytes,
             "compile_ms": compile_ms,
             "native_ratio": headline.native_ratio,
             "native_identical": identical,
@@ -428,6 +436,10 @@ pub(crate) fn run(args: &BenchArgs) -> anyhow::Result<ExitCode> {
                 let _ = writeln!(text, "allocations not counted (no counting allocator)");
             }
         }
+        let _ = writeln!(
+            text,
+            "memory      {instance_bytes} bytes per instance (slots, pose, debug buffer; the program and skeleton are shared)"
+        );
         match (native, identical) {
             (Some(code), Some(same)) => {
                 let _ = writeln!(

@@ -132,6 +132,12 @@ pub struct DebugDraw {
 }
 
 impl DebugDraw {
+    /// Bytes of heap memory the buffer holds (its capacity, kept between frames).
+    #[must_use]
+    pub fn heap_bytes(&self) -> usize {
+        self.primitives.capacity() * std::mem::size_of::<DebugPrimitive>()
+    }
+
     /// A buffer that records when `enabled`.
     #[must_use]
     pub fn new(enabled: bool) -> Self {

@@ -19,6 +19,14 @@ pub struct Pose {
 }
 
 impl Pose {
+    /// Bytes of heap memory the pose holds (its local and global transforms and their
+    /// flags; the skeleton is shared and not counted).
+    #[must_use]
+    pub fn heap_bytes(&self) -> usize {
+        (self.locals.capacity() + self.globals.capacity()) * std::mem::size_of::<Transform>()
+            + self.dirty.capacity()
+    }
+
     /// The rest pose of `skeleton`.
     #[must_use]
     pub fn new(skeleton: Arc<Skeleton>) -> Self {

@@ -93,59 +93,89 @@ fn copy_vec<T: Clone>(v: &mut [Vec<T>], from: usize, to: usize) {
 /// The "next instruction" of an `End`: the event is over.
 pub(crate) const END: usize = usize::MAX;
 
+/// The base pointers of an instance's scalar slot arrays. Valid for a whole run of an event:
+/// nothing resizes the scalar arrays during a run (arrays of arrays may grow; they are
+/// separate allocations).
+#[derive(Clone, Copy)]
+struct Bases {
+    bools: *mut bool,
+    ints: *mut i32,
+    floats: *mut f32,
+    vec3s: *mut Vec3,
+    quats: *mut Quat,
+    transforms: *mut Transform,
+}
+
+impl Bases {
+    fn of(s: &mut Slots) -> Self {
+        Self {
+            bools: s.bools.as_mut_ptr(),
+            ints: s.ints.as_mut_ptr(),
+            floats: s.floats.as_mut_ptr(),
+            vec3s: s.vec3s.as_mut_ptr(),
+            quats: s.quats.as_mut_ptr(),
+            transforms: s.transforms.as_mut_ptr(),
+        }
+    }
+}
+
 /// Every op's handler, as one `match` over `$op` with operands `$o` on slots `$s` (`$cx.slots`,
-/// borrowed apart so the interpreter can hold it across instructions) and context `$cx`.
+/// borrowed apart so the interpreter can hold it across instructions), whose scalar arrays
+/// start at `$bases` ([`Bases`]), and context `$cx`.
 ///
 /// Expanded twice: in the interpreter loop ([`run_loop`]) and in [`step`], the entry point
 /// of code generated ahead of time. After a control op the expansion site decides what
 /// happens: `$jump!(target)` continues at instruction `target`, `$end!()` ends the event.
 macro_rules! execute {
-    ($op:expr, $o:expr, $s:expr, $cx:ident, $jump:ident, $end:ident) => {{
+    ($op:expr, $o:expr, $s:expr, $bases:expr, $cx:ident, $jump:ident, $end:ident) => {{
         let (op, o): (Op, &[u32]) = ($op, $o);
         let s: &mut Slots = $s;
+        let bases: Bases = $bases;
         macro_rules! at {
             ($k:expr) => {
                 o[$k] as usize
             };
         }
-        // A scalar slot as a place: operand `$k` indexes `$v` without a bounds check.
+        // A scalar slot as a place: operand `$k` indexes scalar array `$a` through its base
+        // pointer, without a bounds check.
         macro_rules! slot {
-            ($v:expr, $k:expr) => {{
+            ($a:ident, $k:expr) => {{
                 let index = at!($k);
-                debug_assert!(index < $v.len(), "{op:?} operand {} out of bounds", $k);
+                debug_assert!(index < s.$a.len(), "{op:?} operand {} out of bounds", $k);
                 // SAFETY: in bounds by the module's invariant (the program's layout check
-                // and the per-run length check); the reference lives for one read or write.
-                unsafe { &mut *$v.as_mut_ptr().add(index) }
+                // and the per-run length check), and the base pointer is current (see
+                // `Bases`); the reference lives for one read or write.
+                unsafe { &mut *bases.$a.add(index) }
             }};
         }
         macro_rules! f {
             ($k:expr) => {
-                *slot!(s.floats, $k)
+                *slot!(floats, $k)
             };
         }
         macro_rules! i {
             ($k:expr) => {
-                *slot!(s.ints, $k)
+                *slot!(ints, $k)
             };
         }
         macro_rules! b {
             ($k:expr) => {
-                *slot!(s.bools, $k)
+                *slot!(bools, $k)
             };
         }
         macro_rules! v {
             ($k:expr) => {
-                *slot!(s.vec3s, $k)
+                *slot!(vec3s, $k)
             };
         }
         macro_rules! q {
             ($k:expr) => {
-                *slot!(s.quats, $k)
+                *slot!(quats, $k)
             };
         }
         macro_rules! t {
             ($k:expr) => {
-                *slot!(s.transforms, $k)
+                *slot!(transforms, $k)
             };
         }
         // Copies the slot of operand `$from` into the slot of operand `$to` (type `$ty`).
@@ -720,6 +750,9 @@ fn run_loop<const PROFILE: bool>(
     let code: &[Instr] = &program.code;
     let operands: &[u32] = &program.operands;
     let s = &mut *cx.slots;
+    // Taken once for the whole run, so the loop keeps them in registers or on its stack:
+    // the handlers' writes through them cannot be told apart from writes to `Slots`.
+    let bases = Bases::of(s);
     let mut pc = entry as usize;
     // One clock read per instruction: an instruction's time runs from the end of the one
     // before it to its own end.
@@ -756,6 +789,7 @@ fn run_loop<const PROFILE: bool>(
             // SAFETY: in bounds by the padding (above).
             unsafe { operands.get_unchecked(args..args + MAX_OPERANDS) },
             &mut *s,
+            bases,
             cx,
             jump,
             end
@@ -796,6 +830,7 @@ pub(crate) unsafe fn step(op: Op, o: &[u32], cx: &mut Ctx<'_>, next: usize) -> u
             return END
         };
     }
-    execute!(op, o, &mut *cx.slots, cx, jump, end);
+    let bases = Bases::of(cx.slots);
+    execute!(op, o, &mut *cx.slots, bases, cx, jump, end);
     next
 }

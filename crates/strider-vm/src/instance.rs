@@ -405,6 +405,22 @@ impl Instance {
         &self.debug
     }
 
+    /// Bytes of memory the instance holds: itself, its slots, its pose and its debug-draw
+    /// buffer (the program and the skeleton are shared, and not counted). What one more
+    /// character of a crowd costs, and what its frame reads and writes.
+    #[must_use]
+    pub fn memory_bytes(&self) -> usize {
+        #[cfg(feature = "profile")]
+        let profile = self.profile.capacity() * std::mem::size_of::<crate::profile::InstrProfile>();
+        #[cfg(not(feature = "profile"))]
+        let profile = 0;
+        std::mem::size_of::<Self>()
+            + self.slots.heap_bytes()
+            + self.pose.heap_bytes()
+            + self.debug.heap_bytes()
+            + profile
+    }
+
     /// The instance's slot memory (for inspection).
     #[must_use]
     pub fn slots(&self) -> &Slots {

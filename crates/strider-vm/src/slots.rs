@@ -69,6 +69,33 @@ fn grow_to<T: Clone>(v: &mut Vec<T>, len: usize, zero: T) {
 }
 
 impl Slots {
+    /// Bytes of heap memory the slots hold: every array's capacity, arrays of arrays
+    /// with their elements' buffers.
+    #[must_use]
+    pub fn heap_bytes(&self) -> usize {
+        fn flat<T>(v: &Vec<T>) -> usize {
+            v.capacity() * std::mem::size_of::<T>()
+        }
+        fn nested<T>(v: &Vec<Vec<T>>) -> usize {
+            flat(v) + v.iter().map(flat).sum::<usize>()
+        }
+        flat(&self.bools)
+            + flat(&self.ints)
+            + flat(&self.floats)
+            + flat(&self.vec3s)
+            + flat(&self.quats)
+            + flat(&self.transforms)
+            + flat(&self.bones)
+            + flat(&self.names)
+            + nested(&self.bool_arrays)
+            + nested(&self.int_arrays)
+            + nested(&self.float_arrays)
+            + nested(&self.vec3_arrays)
+            + nested(&self.quat_arrays)
+            + nested(&self.transform_arrays)
+            + nested(&self.bone_arrays)
+    }
+
     /// Grows the scalar arrays (with zeroed slots) to at least `lens`. Does nothing, and
     /// costs six comparisons, when they are long enough.
     #[inline]
