@@ -386,7 +386,8 @@ impl<'a> Gen<'a> {
             scope: self.scope(frame),
             location,
         };
-        let id = self.pb.intern_origin(origin);
+        // Each key gets its origin once, and no step's origin equals a node's.
+        let id = self.pb.add_origin(origin);
         self.node_origins.insert(key, id);
         id
     }
@@ -658,7 +659,7 @@ impl<'a> Gen<'a> {
         writes.collect(frame_body, body);
         for n in pulled_by(frame_body, body) {
             let r = self.reads.node(checked, function, n);
-            if !r.loop_vars && !r.stateful && !writes.touch(&r) {
+            if !r.loop_vars && !r.stateful && !writes.touch(r) {
                 self.pure_closure(frame, n);
             }
         }
@@ -670,7 +671,7 @@ impl<'a> Gen<'a> {
     fn forget(&mut self, frame: usize, writes: &Writes) {
         let (checked, body) = (self.checked, self.frames[frame].body);
         let reads = &mut self.reads;
-        self.avail[frame].retain(|&n| !writes.touch(&reads.node(checked, body, n)));
+        self.avail[frame].retain(|&n| !writes.touch(reads.node(checked, body, n)));
     }
 
     /// Forgets the kept values of `frame` that `step`, just emitted, may have changed: the

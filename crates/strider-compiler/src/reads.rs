@@ -216,9 +216,9 @@ pub(crate) struct ReadsTable {
 impl ReadsTable {
     /// What node `n` of `body` (`None`: the graph) reads. Iterative, so long chains of pure
     /// nodes cannot overflow the stack; the checker guarantees they are acyclic.
-    pub(crate) fn node(&mut self, checked: &Checked, body: Option<usize>, n: usize) -> Reads {
-        if let Some(r) = self.nodes.get(&(body, n)) {
-            return r.clone();
+    pub(crate) fn node(&mut self, checked: &Checked, body: Option<usize>, n: usize) -> &Reads {
+        if self.nodes.contains_key(&(body, n)) {
+            return &self.nodes[&(body, n)];
         }
         let b = body_of(checked, body);
         let mut stack = vec![(n, false)];
@@ -246,7 +246,7 @@ impl ReadsTable {
                     Src::Local(l) => reads.locals.push(l),
                     Src::Node { node: dep, .. } if b.nodes[dep].pure => {
                         if let Some(r) = self.nodes.get(&(body, dep)) {
-                            reads.merge(&r.clone());
+                            reads.merge(r);
                         }
                     }
                     // An exec node's outputs change when that node runs again.
@@ -268,7 +268,7 @@ impl ReadsTable {
             reads.normalise();
             self.nodes.insert((body, m), reads);
         }
-        self.nodes[&(body, n)].clone()
+        &self.nodes[&(body, n)]
     }
 
     /// The graph variables and pose anything in function `f`'s body reads (its locals and

@@ -449,6 +449,15 @@ impl ProgramBuilder {
         id
     }
 
+    /// Adds `origin` to the origin table without looking for an equal one: for a caller
+    /// that knows no equal origin will be needed again (the compiler adds each node's origin
+    /// once per body and event). [`ProgramBuilder::intern_origin`] does not see it.
+    pub fn add_origin(&mut self, origin: InstrOrigin) -> OriginId {
+        let id = OriginId(self.program.origins.len() as u32);
+        self.program.origins.push(origin);
+        id
+    }
+
     /// Sets the origin recorded for the instructions emitted from now on (`None`: no
     /// origin); returns the previous one, to restore after a nested node.
     pub fn set_origin(&mut self, origin: Option<OriginId>) -> Option<OriginId> {
