@@ -14,7 +14,7 @@ use strider_vm::native::{Frame, NativeProgram, step};
 /// The forward event of `locomotion`, compiled ahead of time.
 pub static NATIVE: NativeProgram = NativeProgram {
     name: "locomotion",
-    fingerprint: 0xe4d67ae25365d4f9,
+    fingerprint: 0xa57a42a3107ed053,
     forward,
 };
 
@@ -28,12 +28,12 @@ fn forward(f: &mut Frame<'_>) {
                 step(f, Op::Not, &[0, 11], 106);
                 step(f, Op::Copy(ValueType::Bool), &[11, 1], 107);
                 step(f, Op::WorldTransform, &[4], 108);
-                step(f, Op::BreakTransform, &[4, 19, 2, 20], 109);
+                step(f, Op::BreakTransform, &[4, 20, 2, 21], 109);
                 step(f, Op::Select(ValueType::Transform), &[0, 0, 4, 5], 110);
-                step(f, Op::BreakTransform, &[5, 16, 2, 21], 111);
-                step(f, Op::SubV, &[19, 16, 17], 112);
-                step(f, Op::LengthV, &[17, 182], 113);
-                step(f, Op::GreaterF, &[182, 40, 11], 114);
+                step(f, Op::BreakTransform, &[5, 17, 2, 22], 111);
+                step(f, Op::SubV, &[20, 17, 18], 112);
+                step(f, Op::LengthV, &[18, 184], 113);
+                step(f, Op::GreaterF, &[184, 41, 11], 114);
                 step(f, Op::Copy(ValueType::Bool), &[11, 2], 115);
                 step(f, Op::MakeRelative, &[5, 4, 6], 116);
                 step(f, Op::Select(ValueType::Transform), &[11, 3, 6, 7], 117);
@@ -41,40 +41,40 @@ fn forward(f: &mut Frame<'_>) {
                 step(f, Op::InverseT, &[5, 6], 119);
                 step(f, Op::MulT, &[4, 6, 7], 120);
                 step(f, Op::Copy(ValueType::Transform), &[7, 1], 121);
-                step(f, Op::TransformVector, &[2, 0, 18], 122);
+                step(f, Op::TransformVector, &[2, 0, 19], 122);
                 step(f, Op::InverseT, &[4, 5], 123);
-                step(f, Op::DeltaTime, &[180], 124);
-                step(f, Op::DivF, &[158, 180, 181], 125);
-                step(f, Op::ScaleV, &[17, 181, 20], 126);
-                step(f, Op::TransformVector, &[5, 20, 21], 127);
-                step(f, Op::BreakVector, &[21, 182, 183, 184], 128);
-                step(f, Op::BreakVector, &[17, 184, 185, 186], 129);
-                step(f, Op::AddF, &[2, 186, 184], 130);
-                step(f, Op::Select(ValueType::Float), &[11, 156, 184, 185], 131);
-                step(f, Op::MakeVector, &[182, 183, 156, 16], 132);
-                step(f, Op::LengthV, &[16, 186], 133);
-                step(f, Op::MulF, &[186, 143, 184], 134);
-                step(f, Op::MulF, &[184, 180, 186], 135);
-                step(f, Op::NegF, &[186, 180], 136);
-                step(f, Op::ClampF, &[185, 180, 186, 184], 137);
-                step(f, Op::MulF, &[184, 181, 180], 138);
-                step(f, Op::MakeVector, &[182, 183, 180, 19], 139);
-                step(f, Op::Select(ValueType::Vec3), &[2, 18, 19, 20], 140);
-                step(f, Op::VectorLerp, &[18, 20, 41, 156, 21], 141);
-                step(f, Op::Copy(ValueType::Vec3), &[21, 0], 142);
-                step(f, Op::TransformVector, &[2, 1, 17], 143);
-                step(f, Op::TransformVector, &[2, 0, 18], 144);
-                step(f, Op::Select(ValueType::Vec3), &[2, 18, 19, 20], 145);
-                step(f, Op::VectorLerp, &[17, 20, 42, 156, 16], 146);
-                step(f, Op::Copy(ValueType::Vec3), &[16, 1], 147);
-                step(f, Op::LengthV, &[20, 186], 148);
-                step(f, Op::Copy(ValueType::Float), &[186, 0], 149);
-                step(f, Op::SubF, &[185, 184, 181], 150);
-                step(f, Op::NegF, &[144, 180], 151);
-                step(f, Op::ClampF, &[181, 180, 144, 182], 152);
-                step(f, Op::SubF, &[181, 182, 183], 153);
-                step(f, Op::Copy(ValueType::Float), &[183, 1], 154);
-                step(f, Op::Copy(ValueType::Float), &[182, 3], 155);
+                step(f, Op::DeltaTime, &[182], 124);
+                step(f, Op::DivF, &[160, 182, 183], 125);
+                step(f, Op::ScaleV, &[18, 183, 21], 126);
+                step(f, Op::TransformVector, &[5, 21, 22], 127);
+                step(f, Op::BreakVector, &[22, 184, 185, 186], 128);
+                step(f, Op::BreakVector, &[18, 186, 187, 188], 129);
+                step(f, Op::AddF, &[2, 188, 186], 130);
+                step(f, Op::Select(ValueType::Float), &[11, 158, 186, 187], 131);
+                step(f, Op::MakeVector, &[184, 185, 158, 17], 132);
+                step(f, Op::LengthV, &[17, 188], 133);
+                step(f, Op::MulF, &[188, 145, 186], 134);
+                step(f, Op::MulF, &[186, 182, 188], 135);
+                step(f, Op::NegF, &[188, 182], 136);
+                step(f, Op::ClampF, &[187, 182, 188, 186], 137);
+                step(f, Op::MulF, &[186, 183, 182], 138);
+                step(f, Op::MakeVector, &[184, 185, 182, 20], 139);
+                step(f, Op::Select(ValueType::Vec3), &[2, 19, 20, 21], 140);
+                step(f, Op::VectorLerp, &[19, 21, 42, 158, 22], 141);
+                step(f, Op::Copy(ValueType::Vec3), &[22, 0], 142);
+                step(f, Op::TransformVector, &[2, 1, 18], 143);
+                step(f, Op::TransformVector, &[2, 0, 19], 144);
+                step(f, Op::Select(ValueType::Vec3), &[2, 19, 20, 21], 145);
+                step(f, Op::VectorLerp, &[18, 21, 43, 158, 17], 146);
+                step(f, Op::Copy(ValueType::Vec3), &[17, 1], 147);
+                step(f, Op::LengthV, &[21, 188], 148);
+                step(f, Op::Copy(ValueType::Float), &[188, 0], 149);
+                step(f, Op::SubF, &[187, 186, 183], 150);
+                step(f, Op::NegF, &[146, 182], 151);
+                step(f, Op::ClampF, &[183, 182, 146, 184], 152);
+                step(f, Op::SubF, &[183, 184, 185], 153);
+                step(f, Op::Copy(ValueType::Float), &[185, 1], 154);
+                step(f, Op::Copy(ValueType::Float), &[184, 3], 155);
                 step(f, Op::JumpIfFalse, &[2, 169], 156)
             }
             156 => {
@@ -83,21 +83,21 @@ fn forward(f: &mut Frame<'_>) {
                 158
             }
             158 => {
-                step(f, Op::ForEachNext(Elem::Bone), &[12, 6, 13, 8, 7, 168], 159)
+                step(f, Op::ForEachNext(Elem::Bone), &[12, 6, 13, 7, 8, 168], 159)
             }
             159 => {
-                step(f, Op::ArrayAt(Elem::Transform), &[8, 8, 6], 160);
-                step(f, Op::ArraySetAt(Elem::Transform), &[0, 8, 6], 161);
-                step(f, Op::ArraySetAt(Elem::Transform), &[1, 8, 6], 162);
-                step(f, Op::ArraySetAt(Elem::Transform), &[2, 8, 6], 163);
-                step(f, Op::ArraySetAt(Elem::Transform), &[5, 8, 6], 164);
-                step(f, Op::ArraySetAt(Elem::Transform), &[6, 8, 6], 165);
-                step(f, Op::ArraySetAt(Elem::Transform), &[3, 8, 6], 166);
-                step(f, Op::ArraySetAt(Elem::Transform), &[4, 8, 6], 167);
+                step(f, Op::ArrayAt(Elem::Transform), &[8, 7, 6], 160);
+                step(f, Op::ArraySetAt(Elem::Transform), &[0, 7, 6], 161);
+                step(f, Op::ArraySetAt(Elem::Transform), &[1, 7, 6], 162);
+                step(f, Op::ArraySetAt(Elem::Transform), &[2, 7, 6], 163);
+                step(f, Op::ArraySetAt(Elem::Transform), &[5, 7, 6], 164);
+                step(f, Op::ArraySetAt(Elem::Transform), &[6, 7, 6], 165);
+                step(f, Op::ArraySetAt(Elem::Transform), &[3, 7, 6], 166);
+                step(f, Op::ArraySetAt(Elem::Transform), &[4, 7, 6], 167);
                 step(f, Op::Jump, &[158], 168)
             }
             168 => {
-                step(f, Op::Copy(ValueType::Float), &[156, 21], 169);
+                step(f, Op::Copy(ValueType::Float), &[158, 22], 169);
                 169
             }
             169 => {
@@ -107,31 +107,31 @@ fn forward(f: &mut Frame<'_>) {
             }
             172 => {
                 step(f, Op::GetTransform, &[33, 2, 9, 7], 173);
-                step(f, Op::BreakTransform, &[7, 21, 2, 18], 174);
-                step(f, Op::ScaleV, &[0, 159, 19], 175);
-                step(f, Op::AddV, &[21, 19, 17], 176);
-                step(f, Op::DrawArrow, &[21, 17, 157, 7], 177);
+                step(f, Op::BreakTransform, &[7, 22, 2, 19], 174);
+                step(f, Op::ScaleV, &[0, 161, 20], 175);
+                step(f, Op::AddV, &[22, 20, 18], 176);
+                step(f, Op::DrawArrow, &[22, 18, 159, 8], 177);
                 177
             }
             177 => {
-                step(f, Op::Copy(ValueType::Float), &[156, 186], 178);
-                step(f, Op::Copy(ValueType::Float), &[158, 184], 179);
+                step(f, Op::Copy(ValueType::Float), &[158, 188], 178);
+                step(f, Op::Copy(ValueType::Float), &[160, 186], 179);
                 step(f, Op::Copy(ValueType::Bool), &[10, 11], 180);
                 step(f, Op::Copy(ValueType::Array(Elem::Transform)), &[8, 9], 181);
-                step(f, Op::Copy(ValueType::Int), &[2, 7], 182);
-                step(f, Op::MakeVector, &[156, 156, 63, 16], 183);
+                step(f, Op::Copy(ValueType::Int), &[2, 6], 182);
+                step(f, Op::MakeVector, &[158, 158, 64, 17], 183);
                 183
             }
             183 => {
-                step(f, Op::ForEachNext(Elem::Transform), &[9, 7, 5, 8, 6, 193], 184)
+                step(f, Op::ForEachNext(Elem::Transform), &[9, 6, 5, 8, 7, 193], 184)
             }
             184 => {
-                step(f, Op::BreakTransform, &[5, 20, 2, 18], 185);
-                step(f, Op::TransformPoint, &[2, 20, 19], 186);
-                step(f, Op::LerpV, &[19, 20, 158, 17], 187);
-                step(f, Op::AddV, &[17, 16, 21], 188);
-                step(f, Op::SubV, &[17, 16, 18], 189);
-                step(f, Op::LineTrace, &[21, 18, 12, 19, 20, 185], 190);
+                step(f, Op::BreakTransform, &[5, 21, 2, 19], 185);
+                step(f, Op::TransformPoint, &[2, 21, 20], 186);
+                step(f, Op::LerpV, &[20, 21, 160, 18], 187);
+                step(f, Op::AddV, &[18, 17, 22], 188);
+                step(f, Op::SubV, &[18, 17, 19], 189);
+                step(f, Op::LineTrace, &[22, 19, 12, 20, 21, 187], 190);
                 step(f, Op::JumpIfFalse, &[12, 192], 191)
             }
             191 => {
@@ -153,31 +153,31 @@ fn forward(f: &mut Frame<'_>) {
             }
             199 => {
                 step(f, Op::Copy(ValueType::Int), &[1, 6], 200);
-                step(f, Op::Copy(ValueType::Int), &[2, 8], 201);
+                step(f, Op::Copy(ValueType::Int), &[2, 7], 201);
                 201
             }
             201 => {
-                step(f, Op::ForNext, &[8, 6, 7, 225], 202)
+                step(f, Op::ForNext, &[7, 6, 8, 225], 202)
             }
             202 => {
-                step(f, Op::AddF, &[186, 184, 180], 203);
-                step(f, Op::MulF, &[180, 157, 181], 204);
+                step(f, Op::AddF, &[188, 186, 182], 203);
+                step(f, Op::MulF, &[182, 159, 183], 204);
                 step(f, Op::Copy(ValueType::Bool), &[10, 15], 205);
                 step(f, Op::Copy(ValueType::Array(Elem::Transform)), &[8, 10], 206);
-                step(f, Op::Copy(ValueType::Int), &[2, 7], 207);
-                step(f, Op::MakeVector, &[156, 156, 63, 17], 208);
+                step(f, Op::Copy(ValueType::Int), &[2, 6], 207);
+                step(f, Op::MakeVector, &[158, 158, 64, 17], 208);
                 208
             }
             208 => {
-                step(f, Op::ForEachNext(Elem::Transform), &[10, 7, 6, 9, 10, 218], 209)
+                step(f, Op::ForEachNext(Elem::Transform), &[10, 6, 6, 7, 8, 218], 209)
             }
             209 => {
                 step(f, Op::BreakTransform, &[6, 18, 2, 19], 210);
                 step(f, Op::TransformPoint, &[2, 18, 20], 211);
-                step(f, Op::LerpV, &[20, 18, 181, 21], 212);
-                step(f, Op::AddV, &[21, 17, 16], 213);
+                step(f, Op::LerpV, &[20, 18, 183, 21], 212);
+                step(f, Op::AddV, &[21, 17, 22], 213);
                 step(f, Op::SubV, &[21, 17, 19], 214);
-                step(f, Op::LineTrace, &[16, 19, 16, 18, 20, 183], 215);
+                step(f, Op::LineTrace, &[22, 19, 16, 18, 20, 185], 215);
                 step(f, Op::JumpIfFalse, &[16, 217], 216)
             }
             216 => {
@@ -193,1951 +193,2006 @@ fn forward(f: &mut Frame<'_>) {
                 step(f, Op::JumpIfFalse, &[15, 223], 221)
             }
             221 => {
-                step(f, Op::Copy(ValueType::Float), &[181, 186], 222);
+                step(f, Op::Copy(ValueType::Float), &[183, 188], 222);
                 step(f, Op::Jump, &[224], 223)
             }
             223 => {
-                step(f, Op::Copy(ValueType::Float), &[181, 184], 224);
+                step(f, Op::Copy(ValueType::Float), &[183, 186], 224);
                 224
             }
             224 => {
                 step(f, Op::Jump, &[201], 225)
             }
             225 => {
-                step(f, Op::Select(ValueType::Float), &[5, 160, 158, 182], 226);
+                step(f, Op::Select(ValueType::Float), &[5, 162, 160, 184], 226);
                 step(f, Op::NotEquals(Elem::Bool), &[12, 6, 14], 227);
-                step(f, Op::AddF, &[186, 184, 180], 228);
-                step(f, Op::MulF, &[180, 157, 185], 229);
-                step(f, Op::Select(ValueType::Float), &[14, 185, 157, 183], 230);
-                step(f, Op::Select(ValueType::Float), &[13, 183, 156, 181], 231);
-                step(f, Op::MulF, &[182, 181, 184], 232);
-                step(f, Op::DeltaTime, &[186], 233);
-                step(f, Op::DivF, &[186, 148, 180], 234);
-                step(f, Op::MulF, &[184, 180, 185], 235);
-                step(f, Op::AddF, &[25, 185, 181], 236);
-                step(f, Op::ClampF, &[181, 156, 158, 182], 237);
-                step(f, Op::Select(ValueType::Float), &[11, 160, 158, 186], 238);
-                step(f, Op::SubF, &[158, 183, 184], 239);
-                step(f, Op::Select(ValueType::Float), &[13, 184, 158, 185], 240);
-                step(f, Op::MulF, &[186, 185, 181], 241);
-                step(f, Op::MulF, &[181, 180, 183], 242);
-                step(f, Op::AddF, &[182, 183, 184], 243);
-                step(f, Op::ClampF, &[184, 156, 158, 185], 244);
-                step(f, Op::SmoothStepF, &[185, 156, 158, 186], 245);
-                step(f, Op::AddF, &[26, 186, 180], 246);
-                step(f, Op::MulF, &[180, 157, 181], 247);
-                step(f, Op::SubF, &[158, 181, 182], 248);
-                step(f, Op::MulF, &[182, 182, 183], 249);
-                step(f, Op::SubF, &[158, 183, 184], 250);
-                step(f, Op::Copy(ValueType::Float), &[184, 27], 251);
-                step(f, Op::Copy(ValueType::Float), &[186, 26], 252);
-                step(f, Op::Copy(ValueType::Float), &[185, 25], 253);
-                step(f, Op::GreaterF, &[26, 156, 16], 254);
-                step(f, Op::TransformVector, &[2, 3, 21], 255);
-                step(f, Op::Select(ValueType::Vec3), &[16, 21, 0, 16], 256);
-                step(f, Op::Copy(ValueType::Vec3), &[16, 3], 257);
-                step(f, Op::LerpV, &[0, 3, 26, 18], 258);
+                step(f, Op::AddF, &[188, 186, 182], 228);
+                step(f, Op::MulF, &[182, 159, 187], 229);
+                step(f, Op::Select(ValueType::Float), &[14, 187, 159, 185], 230);
+                step(f, Op::Select(ValueType::Float), &[13, 185, 158, 183], 231);
+                step(f, Op::MulF, &[184, 183, 186], 232);
+                step(f, Op::DeltaTime, &[188], 233);
+                step(f, Op::DivF, &[188, 150, 182], 234);
+                step(f, Op::MulF, &[186, 182, 187], 235);
+                step(f, Op::AddF, &[26, 187, 183], 236);
+                step(f, Op::ClampF, &[183, 158, 160, 184], 237);
+                step(f, Op::Select(ValueType::Float), &[11, 162, 160, 188], 238);
+                step(f, Op::SubF, &[160, 185, 186], 239);
+                step(f, Op::Select(ValueType::Float), &[13, 186, 160, 187], 240);
+                step(f, Op::MulF, &[188, 187, 183], 241);
+                step(f, Op::MulF, &[183, 182, 185], 242);
+                step(f, Op::AddF, &[184, 185, 186], 243);
+                step(f, Op::ClampF, &[186, 158, 160, 187], 244);
+                step(f, Op::SmoothStepF, &[187, 158, 160, 188], 245);
+                step(f, Op::AddF, &[27, 188, 182], 246);
+                step(f, Op::MulF, &[182, 159, 183], 247);
+                step(f, Op::SubF, &[160, 183, 184], 248);
+                step(f, Op::MulF, &[184, 184, 185], 249);
+                step(f, Op::SubF, &[160, 185, 186], 250);
+                step(f, Op::Copy(ValueType::Float), &[186, 28], 251);
+                step(f, Op::Copy(ValueType::Float), &[188, 27], 252);
+                step(f, Op::Copy(ValueType::Float), &[187, 26], 253);
+                step(f, Op::GreaterF, &[27, 158, 16], 254);
+                step(f, Op::TransformVector, &[2, 3, 17], 255);
+                step(f, Op::Select(ValueType::Vec3), &[16, 17, 0, 21], 256);
+                step(f, Op::Copy(ValueType::Vec3), &[21, 3], 257);
+                step(f, Op::LerpV, &[0, 3, 27, 18], 258);
                 step(f, Op::Select(ValueType::Vec3), &[16, 18, 0, 19], 259);
                 step(f, Op::Copy(ValueType::Vec3), &[19, 2], 260);
                 step(f, Op::Copy(ValueType::Bool), &[11, 5], 261);
                 step(f, Op::Copy(ValueType::Bool), &[12, 6], 262);
                 step(f, Op::Copy(ValueType::Bool), &[10, 7], 263);
-                step(f, Op::SubF, &[158, 27, 180], 264);
-                step(f, Op::MulF, &[1, 180, 181], 265);
-                step(f, Op::SubF, &[3, 2, 182], 266);
-                step(f, Op::MulF, &[182, 180, 183], 267);
-                step(f, Op::AddF, &[2, 183, 184], 268);
-                step(f, Op::MulF, &[184, 180, 186], 269);
-                step(f, Op::SubF, &[184, 186, 185], 270);
-                step(f, Op::AddF, &[181, 185, 187], 271);
-                step(f, Op::AddF, &[4, 187, 188], 272);
-                step(f, Op::Copy(ValueType::Float), &[7, 189], 273);
-                step(f, Op::Copy(ValueType::Float), &[8, 190], 274);
-                step(f, Op::Copy(ValueType::Float), &[4, 191], 275);
-                step(f, Op::Copy(ValueType::Float), &[145, 192], 276);
-                step(f, Op::Copy(ValueType::Float), &[57, 193], 277);
-                step(f, Op::SubF, &[188, 191, 194], 278);
-                step(f, Op::DeltaTime, &[195], 279);
-                step(f, Op::DivF, &[194, 195, 196], 280);
-                step(f, Op::MulF, &[196, 193, 197], 281);
-                step(f, Op::AddF, &[188, 197, 198], 282);
-                step(f, Op::MulF, &[196, 161, 199], 283);
-                step(f, Op::DivF, &[162, 192, 200], 284);
-                step(f, Op::DivF, &[199, 200, 201], 285);
-                step(f, Op::SubF, &[198, 201, 202], 286);
-                step(f, Op::AddF, &[191, 197, 203], 287);
-                step(f, Op::SubF, &[189, 203, 204], 288);
-                step(f, Op::AddF, &[204, 201, 205], 289);
-                step(f, Op::SubF, &[190, 196, 206], 290);
-                step(f, Op::MulF, &[200, 205, 207], 291);
-                step(f, Op::AddF, &[206, 207, 208], 292);
-                step(f, Op::MulF, &[208, 195, 209], 293);
-                step(f, Op::AddF, &[205, 209, 210], 294);
-                step(f, Op::FloatLerp, &[156, 158, 200, 211], 295);
-                step(f, Op::SubF, &[158, 211, 212], 296);
-                step(f, Op::MulF, &[210, 212, 213], 297);
-                step(f, Op::AddF, &[202, 213, 214], 298);
-                step(f, Op::Copy(ValueType::Float), &[214, 215], 299);
-                step(f, Op::MulF, &[200, 209, 216], 300);
-                step(f, Op::SubF, &[206, 216, 217], 301);
-                step(f, Op::MulF, &[217, 212, 218], 302);
-                step(f, Op::AddF, &[196, 218, 219], 303);
-                step(f, Op::Copy(ValueType::Float), &[219, 220], 304);
-                step(f, Op::SubF, &[188, 215, 221], 305);
-                step(f, Op::AddF, &[221, 186, 222], 306);
-                step(f, Op::Copy(ValueType::Float), &[222, 5], 307);
-                step(f, Op::Copy(ValueType::Float), &[221, 6], 308);
-                step(f, Op::Copy(ValueType::Float), &[186, 2], 309);
-                step(f, Op::SubF, &[3, 2, 182], 310);
-                step(f, Op::MulF, &[182, 180, 183], 311);
-                step(f, Op::AddF, &[2, 183, 184], 312);
-                step(f, Op::MulF, &[184, 180, 186], 313);
-                step(f, Op::SubF, &[184, 186, 185], 314);
-                step(f, Op::AddF, &[181, 185, 187], 315);
-                step(f, Op::AddF, &[4, 187, 188], 316);
-                step(f, Op::Copy(ValueType::Float), &[7, 189], 317);
-                step(f, Op::Copy(ValueType::Float), &[8, 190], 318);
-                step(f, Op::Copy(ValueType::Float), &[4, 191], 319);
-                step(f, Op::Copy(ValueType::Float), &[145, 192], 320);
-                step(f, Op::Copy(ValueType::Float), &[57, 193], 321);
-                step(f, Op::SubF, &[188, 191, 194], 322);
-                step(f, Op::DeltaTime, &[195], 323);
-                step(f, Op::DivF, &[194, 195, 196], 324);
-                step(f, Op::MulF, &[196, 193, 197], 325);
-                step(f, Op::AddF, &[188, 197, 198], 326);
-                step(f, Op::MulF, &[196, 161, 199], 327);
-                step(f, Op::DivF, &[162, 192, 200], 328);
-                step(f, Op::DivF, &[199, 200, 201], 329);
-                step(f, Op::SubF, &[198, 201, 202], 330);
-                step(f, Op::AddF, &[191, 197, 203], 331);
-                step(f, Op::SubF, &[189, 203, 204], 332);
-                step(f, Op::AddF, &[204, 201, 205], 333);
-                step(f, Op::SubF, &[190, 196, 206], 334);
-                step(f, Op::MulF, &[200, 205, 207], 335);
-                step(f, Op::AddF, &[206, 207, 208], 336);
-                step(f, Op::MulF, &[208, 195, 209], 337);
-                step(f, Op::AddF, &[205, 209, 210], 338);
-                step(f, Op::FloatLerp, &[156, 158, 200, 211], 339);
-                step(f, Op::SubF, &[158, 211, 212], 340);
-                step(f, Op::MulF, &[210, 212, 213], 341);
-                step(f, Op::AddF, &[202, 213, 214], 342);
-                step(f, Op::Copy(ValueType::Float), &[214, 215], 343);
-                step(f, Op::MulF, &[200, 209, 216], 344);
-                step(f, Op::SubF, &[206, 216, 217], 345);
-                step(f, Op::MulF, &[217, 212, 218], 346);
-                step(f, Op::AddF, &[196, 218, 219], 347);
-                step(f, Op::Copy(ValueType::Float), &[219, 220], 348);
-                step(f, Op::Copy(ValueType::Float), &[215, 7], 349);
-                step(f, Op::Copy(ValueType::Float), &[7, 189], 350);
-                step(f, Op::Copy(ValueType::Float), &[8, 190], 351);
-                step(f, Op::Copy(ValueType::Float), &[4, 191], 352);
-                step(f, Op::Copy(ValueType::Float), &[145, 192], 353);
-                step(f, Op::Copy(ValueType::Float), &[57, 193], 354);
-                step(f, Op::SubF, &[188, 191, 194], 355);
-                step(f, Op::DeltaTime, &[195], 356);
-                step(f, Op::DivF, &[194, 195, 196], 357);
-                step(f, Op::MulF, &[196, 193, 197], 358);
-                step(f, Op::AddF, &[188, 197, 198], 359);
-                step(f, Op::MulF, &[196, 161, 199], 360);
-                step(f, Op::DivF, &[162, 192, 200], 361);
-                step(f, Op::DivF, &[199, 200, 201], 362);
-                step(f, Op::SubF, &[198, 201, 202], 363);
-                step(f, Op::AddF, &[191, 197, 203], 364);
-                step(f, Op::SubF, &[189, 203, 204], 365);
-                step(f, Op::AddF, &[204, 201, 205], 366);
-                step(f, Op::SubF, &[190, 196, 206], 367);
-                step(f, Op::MulF, &[200, 205, 207], 368);
-                step(f, Op::AddF, &[206, 207, 208], 369);
-                step(f, Op::MulF, &[208, 195, 209], 370);
-                step(f, Op::AddF, &[205, 209, 210], 371);
-                step(f, Op::FloatLerp, &[156, 158, 200, 211], 372);
-                step(f, Op::SubF, &[158, 211, 212], 373);
-                step(f, Op::MulF, &[210, 212, 213], 374);
-                step(f, Op::AddF, &[202, 213, 214], 375);
-                step(f, Op::Copy(ValueType::Float), &[214, 215], 376);
-                step(f, Op::MulF, &[200, 209, 216], 377);
-                step(f, Op::SubF, &[206, 216, 217], 378);
-                step(f, Op::MulF, &[217, 212, 218], 379);
-                step(f, Op::AddF, &[196, 218, 219], 380);
-                step(f, Op::Copy(ValueType::Float), &[219, 220], 381);
-                step(f, Op::Copy(ValueType::Float), &[220, 8], 382);
-                step(f, Op::Copy(ValueType::Float), &[188, 4], 383);
-                step(f, Op::LengthV, &[4, 222], 384);
-                step(f, Op::GreaterF, &[222, 34, 15], 385);
-                step(f, Op::LengthV, &[2, 221], 386);
-                step(f, Op::GreaterF, &[221, 34, 14], 387);
+                step(f, Op::SubF, &[160, 28, 182], 264);
+                step(f, Op::MulF, &[1, 182, 183], 265);
+                step(f, Op::SubF, &[3, 2, 184], 266);
+                step(f, Op::MulF, &[184, 182, 185], 267);
+                step(f, Op::AddF, &[2, 185, 186], 268);
+                step(f, Op::MulF, &[186, 182, 188], 269);
+                step(f, Op::SubF, &[186, 188, 187], 270);
+                step(f, Op::AddF, &[183, 187, 189], 271);
+                step(f, Op::AddF, &[4, 189, 190], 272);
+                step(f, Op::Copy(ValueType::Float), &[7, 191], 273);
+                step(f, Op::Copy(ValueType::Float), &[8, 192], 274);
+                step(f, Op::Copy(ValueType::Float), &[4, 193], 275);
+                step(f, Op::Copy(ValueType::Float), &[147, 194], 276);
+                step(f, Op::Copy(ValueType::Float), &[58, 195], 277);
+                step(f, Op::SubF, &[190, 193, 196], 278);
+                step(f, Op::DeltaTime, &[197], 279);
+                step(f, Op::DivF, &[196, 197, 198], 280);
+                step(f, Op::MulF, &[198, 195, 199], 281);
+                step(f, Op::AddF, &[190, 199, 200], 282);
+                step(f, Op::MulF, &[198, 163, 201], 283);
+                step(f, Op::DivF, &[164, 194, 202], 284);
+                step(f, Op::DivF, &[201, 202, 203], 285);
+                step(f, Op::SubF, &[200, 203, 204], 286);
+                step(f, Op::AddF, &[193, 199, 205], 287);
+                step(f, Op::SubF, &[191, 205, 206], 288);
+                step(f, Op::AddF, &[206, 203, 207], 289);
+                step(f, Op::SubF, &[192, 198, 208], 290);
+                step(f, Op::MulF, &[202, 207, 209], 291);
+                step(f, Op::AddF, &[208, 209, 210], 292);
+                step(f, Op::MulF, &[210, 197, 211], 293);
+                step(f, Op::AddF, &[207, 211, 212], 294);
+                step(f, Op::FloatLerp, &[158, 160, 202, 213], 295);
+                step(f, Op::SubF, &[160, 213, 214], 296);
+                step(f, Op::MulF, &[212, 214, 215], 297);
+                step(f, Op::AddF, &[204, 215, 216], 298);
+                step(f, Op::Copy(ValueType::Float), &[216, 217], 299);
+                step(f, Op::MulF, &[202, 211, 218], 300);
+                step(f, Op::SubF, &[208, 218, 219], 301);
+                step(f, Op::MulF, &[219, 214, 220], 302);
+                step(f, Op::AddF, &[198, 220, 221], 303);
+                step(f, Op::Copy(ValueType::Float), &[221, 222], 304);
+                step(f, Op::SubF, &[190, 217, 223], 305);
+                step(f, Op::AddF, &[223, 188, 224], 306);
+                step(f, Op::Copy(ValueType::Float), &[224, 5], 307);
+                step(f, Op::Copy(ValueType::Float), &[223, 6], 308);
+                step(f, Op::Copy(ValueType::Float), &[188, 2], 309);
+                step(f, Op::SubF, &[3, 2, 184], 310);
+                step(f, Op::MulF, &[184, 182, 185], 311);
+                step(f, Op::AddF, &[2, 185, 186], 312);
+                step(f, Op::MulF, &[186, 182, 188], 313);
+                step(f, Op::SubF, &[186, 188, 187], 314);
+                step(f, Op::AddF, &[183, 187, 189], 315);
+                step(f, Op::AddF, &[4, 189, 190], 316);
+                step(f, Op::Copy(ValueType::Float), &[7, 191], 317);
+                step(f, Op::Copy(ValueType::Float), &[8, 192], 318);
+                step(f, Op::Copy(ValueType::Float), &[4, 193], 319);
+                step(f, Op::Copy(ValueType::Float), &[147, 194], 320);
+                step(f, Op::Copy(ValueType::Float), &[58, 195], 321);
+                step(f, Op::SubF, &[190, 193, 196], 322);
+                step(f, Op::DeltaTime, &[197], 323);
+                step(f, Op::DivF, &[196, 197, 198], 324);
+                step(f, Op::MulF, &[198, 195, 199], 325);
+                step(f, Op::AddF, &[190, 199, 200], 326);
+                step(f, Op::MulF, &[198, 163, 201], 327);
+                step(f, Op::DivF, &[164, 194, 202], 328);
+                step(f, Op::DivF, &[201, 202, 203], 329);
+                step(f, Op::SubF, &[200, 203, 204], 330);
+                step(f, Op::AddF, &[193, 199, 205], 331);
+                step(f, Op::SubF, &[191, 205, 206], 332);
+                step(f, Op::AddF, &[206, 203, 207], 333);
+                step(f, Op::SubF, &[192, 198, 208], 334);
+                step(f, Op::MulF, &[202, 207, 209], 335);
+                step(f, Op::AddF, &[208, 209, 210], 336);
+                step(f, Op::MulF, &[210, 197, 211], 337);
+                step(f, Op::AddF, &[207, 211, 212], 338);
+                step(f, Op::FloatLerp, &[158, 160, 202, 213], 339);
+                step(f, Op::SubF, &[160, 213, 214], 340);
+                step(f, Op::MulF, &[212, 214, 215], 341);
+                step(f, Op::AddF, &[204, 215, 216], 342);
+                step(f, Op::Copy(ValueType::Float), &[216, 217], 343);
+                step(f, Op::MulF, &[202, 211, 218], 344);
+                step(f, Op::SubF, &[208, 218, 219], 345);
+                step(f, Op::MulF, &[219, 214, 220], 346);
+                step(f, Op::AddF, &[198, 220, 221], 347);
+                step(f, Op::Copy(ValueType::Float), &[221, 222], 348);
+                step(f, Op::Copy(ValueType::Float), &[217, 7], 349);
+                step(f, Op::Copy(ValueType::Float), &[7, 191], 350);
+                step(f, Op::Copy(ValueType::Float), &[8, 192], 351);
+                step(f, Op::Copy(ValueType::Float), &[4, 193], 352);
+                step(f, Op::Copy(ValueType::Float), &[147, 194], 353);
+                step(f, Op::Copy(ValueType::Float), &[58, 195], 354);
+                step(f, Op::SubF, &[190, 193, 196], 355);
+                step(f, Op::DeltaTime, &[197], 356);
+                step(f, Op::DivF, &[196, 197, 198], 357);
+                step(f, Op::MulF, &[198, 195, 199], 358);
+                step(f, Op::AddF, &[190, 199, 200], 359);
+                step(f, Op::MulF, &[198, 163, 201], 360);
+                step(f, Op::DivF, &[164, 194, 202], 361);
+                step(f, Op::DivF, &[201, 202, 203], 362);
+                step(f, Op::SubF, &[200, 203, 204], 363);
+                step(f, Op::AddF, &[193, 199, 205], 364);
+                step(f, Op::SubF, &[191, 205, 206], 365);
+                step(f, Op::AddF, &[206, 203, 207], 366);
+                step(f, Op::SubF, &[192, 198, 208], 367);
+                step(f, Op::MulF, &[202, 207, 209], 368);
+                step(f, Op::AddF, &[208, 209, 210], 369);
+                step(f, Op::MulF, &[210, 197, 211], 370);
+                step(f, Op::AddF, &[207, 211, 212], 371);
+                step(f, Op::FloatLerp, &[158, 160, 202, 213], 372);
+                step(f, Op::SubF, &[160, 213, 214], 373);
+                step(f, Op::MulF, &[212, 214, 215], 374);
+                step(f, Op::AddF, &[204, 215, 216], 375);
+                step(f, Op::Copy(ValueType::Float), &[216, 217], 376);
+                step(f, Op::MulF, &[202, 211, 218], 377);
+                step(f, Op::SubF, &[208, 218, 219], 378);
+                step(f, Op::MulF, &[219, 214, 220], 379);
+                step(f, Op::AddF, &[198, 220, 221], 380);
+                step(f, Op::Copy(ValueType::Float), &[221, 222], 381);
+                step(f, Op::Copy(ValueType::Float), &[222, 8], 382);
+                step(f, Op::Copy(ValueType::Float), &[190, 4], 383);
+                step(f, Op::LengthV, &[4, 224], 384);
+                step(f, Op::GreaterF, &[224, 35, 15], 385);
+                step(f, Op::LengthV, &[2, 223], 386);
+                step(f, Op::GreaterF, &[223, 35, 14], 387);
                 step(f, Op::And, &[15, 14, 13], 388);
-                step(f, Op::Select(ValueType::Vec3), &[15, 4, 6, 20], 389);
-                step(f, Op::MovementAngleOffset, &[20, 17, 156, 163, 163, 164, 45, 165, 182], 390);
-                step(f, Op::Copy(ValueType::Float), &[17, 183], 391);
-                step(f, Op::SubF, &[182, 183, 180], 392);
-                step(f, Op::AddF, &[180, 166, 184], 393);
-                step(f, Op::DivF, &[184, 167, 186], 394);
-                step(f, Op::FractF, &[186, 181], 395);
-                step(f, Op::MulF, &[181, 167, 185], 396);
-                step(f, Op::SubF, &[185, 166, 187], 397);
-                step(f, Op::Copy(ValueType::Float), &[187, 194], 398);
-                step(f, Op::AbsF, &[194, 193], 399);
-                step(f, Op::Select(ValueType::Vec3), &[14, 2, 6, 17], 400);
-                step(f, Op::MovementAngleOffset, &[17, 17, 156, 163, 163, 164, 45, 165, 192], 401);
-                step(f, Op::Copy(ValueType::Float), &[17, 199], 402);
-                step(f, Op::SubF, &[192, 199, 198], 403);
-                step(f, Op::AddF, &[198, 166, 191], 404);
-                step(f, Op::DivF, &[191, 167, 197], 405);
-                step(f, Op::FractF, &[197, 189], 406);
-                step(f, Op::MulF, &[189, 167, 203], 407);
-                step(f, Op::SubF, &[203, 166, 201], 408);
-                step(f, Op::Copy(ValueType::Float), &[201, 204], 409);
-                step(f, Op::AbsF, &[204, 190], 410);
-                step(f, Op::MaxF, &[193, 190, 207], 411);
-                step(f, Op::SubF, &[192, 182, 195], 412);
-                step(f, Op::AddF, &[195, 166, 208], 413);
-                step(f, Op::DivF, &[208, 167, 205], 414);
-                step(f, Op::FractF, &[205, 211], 415);
-                step(f, Op::MulF, &[211, 167, 210], 416);
-                step(f, Op::SubF, &[210, 166, 202], 417);
-                step(f, Op::Copy(ValueType::Float), &[202, 213], 418);
-                step(f, Op::AbsF, &[213, 214], 419);
-                step(f, Op::MaxF, &[207, 214, 215], 420);
-                step(f, Op::DeltaTime, &[200], 421);
-                step(f, Op::DivF, &[57, 200, 209], 422);
-                step(f, Op::TransformVector, &[2, 8, 21], 423);
-                step(f, Op::BreakVector, &[21, 206, 216, 212], 424);
-                step(f, Op::NegF, &[206, 217], 425);
-                step(f, Op::Atan2F, &[217, 216, 196], 426);
-                step(f, Op::MulF, &[209, 196, 218], 427);
-                step(f, Op::QuatFromAxisAngle, &[9, 218, 2], 428);
-                step(f, Op::TransformVector, &[2, 4, 16], 429);
-                step(f, Op::FloatLerp, &[156, 158, 41, 219], 430);
-                step(f, Op::GreaterF, &[219, 156, 16], 431);
-                step(f, Op::AddF, &[158, 209, 220], 432);
-                step(f, Op::MulF, &[41, 220, 188], 433);
-                step(f, Op::FloatLerp, &[156, 158, 188, 222], 434);
-                step(f, Op::DivF, &[222, 219, 183], 435);
-                step(f, Op::Select(ValueType::Float), &[16, 183, 220, 180], 436);
-                step(f, Op::LerpV, &[16, 2, 180, 18], 437);
+                step(f, Op::Select(ValueType::Vec3), &[15, 4, 7, 20], 389);
+                step(f, Op::MovementAngleOffset, &[20, 17, 158, 165, 165, 166, 46, 167, 184], 390);
+                step(f, Op::Copy(ValueType::Float), &[17, 185], 391);
+                step(f, Op::SubF, &[184, 185, 182], 392);
+                step(f, Op::AddF, &[182, 168, 186], 393);
+                step(f, Op::DivF, &[186, 169, 188], 394);
+                step(f, Op::FractF, &[188, 183], 395);
+                step(f, Op::MulF, &[183, 169, 187], 396);
+                step(f, Op::SubF, &[187, 168, 189], 397);
+                step(f, Op::Copy(ValueType::Float), &[189, 196], 398);
+                step(f, Op::AbsF, &[196, 195], 399);
+                step(f, Op::Select(ValueType::Vec3), &[14, 2, 7, 22], 400);
+                step(f, Op::MovementAngleOffset, &[22, 17, 158, 165, 165, 166, 46, 167, 194], 401);
+                step(f, Op::Copy(ValueType::Float), &[17, 201], 402);
+                step(f, Op::SubF, &[194, 201, 200], 403);
+                step(f, Op::AddF, &[200, 168, 193], 404);
+                step(f, Op::DivF, &[193, 169, 199], 405);
+                step(f, Op::FractF, &[199, 191], 406);
+                step(f, Op::MulF, &[191, 169, 205], 407);
+                step(f, Op::SubF, &[205, 168, 203], 408);
+                step(f, Op::Copy(ValueType::Float), &[203, 206], 409);
+                step(f, Op::AbsF, &[206, 192], 410);
+                step(f, Op::MaxF, &[195, 192, 209], 411);
+                step(f, Op::SubF, &[194, 184, 197], 412);
+                step(f, Op::AddF, &[197, 168, 210], 413);
+                step(f, Op::DivF, &[210, 169, 207], 414);
+                step(f, Op::FractF, &[207, 213], 415);
+                step(f, Op::MulF, &[213, 169, 212], 416);
+                step(f, Op::SubF, &[212, 168, 204], 417);
+                step(f, Op::Copy(ValueType::Float), &[204, 215], 418);
+                step(f, Op::AbsF, &[215, 216], 419);
+                step(f, Op::MaxF, &[209, 216, 217], 420);
+                step(f, Op::DeltaTime, &[202], 421);
+                step(f, Op::DivF, &[58, 202, 211], 422);
+                step(f, Op::TransformVector, &[2, 9, 17], 423);
+                step(f, Op::BreakVector, &[17, 208, 218, 214], 424);
+                step(f, Op::NegF, &[208, 219], 425);
+                step(f, Op::Atan2F, &[219, 218, 198], 426);
+                step(f, Op::MulF, &[211, 198, 220], 427);
+                step(f, Op::QuatFromAxisAngle, &[10, 220, 2], 428);
+                step(f, Op::TransformVector, &[2, 4, 21], 429);
+                step(f, Op::FloatLerp, &[158, 160, 42, 221], 430);
+                step(f, Op::GreaterF, &[221, 158, 16], 431);
+                step(f, Op::AddF, &[160, 211, 222], 432);
+                step(f, Op::MulF, &[42, 222, 190], 433);
+                step(f, Op::FloatLerp, &[158, 160, 190, 224], 434);
+                step(f, Op::DivF, &[224, 221, 185], 435);
+                step(f, Op::Select(ValueType::Float), &[16, 185, 222, 182], 436);
+                step(f, Op::LerpV, &[21, 2, 182, 18], 437);
                 step(f, Op::RotateVector, &[2, 18, 19], 438);
-                step(f, Op::LengthV, &[19, 184], 439);
-                step(f, Op::GreaterF, &[184, 34, 11], 440);
-                step(f, Op::Select(ValueType::Vec3), &[11, 19, 6, 20], 441);
-                step(f, Op::MovementAngleOffset, &[20, 17, 156, 163, 163, 164, 45, 165, 186], 442);
-                step(f, Op::Copy(ValueType::Float), &[17, 181], 443);
-                step(f, Op::SubF, &[186, 181, 185], 444);
-                step(f, Op::AddF, &[185, 166, 187], 445);
-                step(f, Op::DivF, &[187, 167, 194], 446);
-                step(f, Op::FractF, &[194, 199], 447);
-                step(f, Op::MulF, &[199, 167, 198], 448);
-                step(f, Op::SubF, &[198, 166, 191], 449);
-                step(f, Op::Copy(ValueType::Float), &[191, 197], 450);
-                step(f, Op::AbsF, &[197, 189], 451);
-                step(f, Op::SubF, &[186, 192, 203], 452);
-                step(f, Op::AddF, &[203, 166, 201], 453);
-                step(f, Op::DivF, &[201, 167, 204], 454);
-                step(f, Op::FractF, &[204, 190], 455);
-                step(f, Op::MulF, &[190, 167, 193], 456);
-                step(f, Op::SubF, &[193, 166, 182], 457);
-                step(f, Op::Copy(ValueType::Float), &[182, 195], 458);
-                step(f, Op::AbsF, &[195, 208], 459);
-                step(f, Op::MaxF, &[189, 208, 205], 460);
-                step(f, Op::MaxF, &[215, 205, 211], 461);
-                step(f, Op::LessF, &[211, 168, 12], 462);
-                step(f, Op::And, &[13, 12, 11], 463);
-                step(f, Op::Not, &[15, 12], 464);
-                step(f, Op::Not, &[14, 13], 465);
-                step(f, Op::And, &[12, 13, 15], 466);
-                step(f, Op::Or, &[11, 15, 12], 467);
-                step(f, Op::JumpIfFalse, &[12, 487], 468)
+                step(f, Op::LengthV, &[19, 186], 439);
+                step(f, Op::GreaterF, &[186, 35, 11], 440);
+                step(f, Op::Select(ValueType::Vec3), &[11, 19, 7, 20], 441);
+                step(f, Op::MovementAngleOffset, &[20, 17, 158, 165, 165, 166, 46, 167, 188], 442);
+                step(f, Op::Copy(ValueType::Float), &[17, 183], 443);
+                step(f, Op::SubF, &[188, 183, 187], 444);
+                step(f, Op::AddF, &[187, 168, 189], 445);
+                step(f, Op::DivF, &[189, 169, 196], 446);
+                step(f, Op::FractF, &[196, 201], 447);
+                step(f, Op::MulF, &[201, 169, 200], 448);
+                step(f, Op::SubF, &[200, 168, 193], 449);
+                step(f, Op::Copy(ValueType::Float), &[193, 199], 450);
+                step(f, Op::AbsF, &[199, 191], 451);
+                step(f, Op::SubF, &[188, 194, 205], 452);
+                step(f, Op::AddF, &[205, 168, 203], 453);
+                step(f, Op::DivF, &[203, 169, 206], 454);
+                step(f, Op::FractF, &[206, 192], 455);
+                step(f, Op::MulF, &[192, 169, 195], 456);
+                step(f, Op::SubF, &[195, 168, 184], 457);
+                step(f, Op::Copy(ValueType::Float), &[184, 197], 458);
+                step(f, Op::AbsF, &[197, 210], 459);
+                step(f, Op::MaxF, &[191, 210, 207], 460);
+                step(f, Op::MaxF, &[217, 207, 213], 461);
+                step(f, Op::LessF, &[213, 170, 12], 462);
+                step(f, Op::And, &[13, 12, 17], 463);
+                step(f, Op::SubV, &[2, 21, 17], 464);
+                step(f, Op::DotV, &[21, 17, 212], 465);
+                step(f, Op::NegF, &[212, 204], 466);
+                step(f, Op::DotV, &[17, 17, 209], 467);
+                step(f, Op::DivF, &[204, 209, 216], 468);
+                step(f, Op::ClampF, &[216, 158, 182, 214], 469);
+                step(f, Op::LerpV, &[21, 2, 214, 18], 470);
+                step(f, Op::LengthV, &[18, 208], 471);
+                step(f, Op::LessF, &[208, 35, 12], 472);
+                step(f, Op::Not, &[12, 13], 473);
+                step(f, Op::And, &[17, 13, 12], 474);
+                step(f, Op::Not, &[15, 13], 475);
+                step(f, Op::Not, &[14, 17], 476);
+                step(f, Op::And, &[13, 17, 15], 477);
+                step(f, Op::Not, &[11, 13], 478);
+                step(f, Op::And, &[15, 13, 17], 479);
+                step(f, Op::Or, &[12, 17, 11], 480);
+                step(f, Op::JumpIfFalse, &[11, 500], 481)
             }
-            468 => {
-                step(f, Op::MulF, &[43, 200, 210], 469);
-                step(f, Op::GreaterF, &[210, 156, 13], 470);
-                step(f, Op::FloatLerp, &[156, 158, 43, 202], 471);
-                step(f, Op::SubF, &[158, 202, 207], 472);
-                step(f, Op::DivF, &[207, 202, 214], 473);
-                step(f, Op::DivF, &[158, 210, 212], 474);
-                step(f, Op::SubF, &[214, 212, 206], 475);
-                step(f, Op::AddF, &[209, 206, 216], 476);
-                step(f, Op::Select(ValueType::Float), &[13, 216, 156, 217], 477);
-                step(f, Op::MulF, &[213, 217, 196], 478);
-                step(f, Op::AddF, &[192, 196, 218], 479);
-                step(f, Op::SinF, &[218, 188], 480);
-                step(f, Op::NegF, &[188, 222], 481);
-                step(f, Op::CosF, &[218, 183], 482);
-                step(f, Op::MakeVector, &[222, 183, 156, 21], 483);
-                step(f, Op::Select(ValueType::Vec3), &[14, 21, 6, 16], 484);
-                step(f, Op::MovementAngleOffset, &[16, 17, 156, 43, 44, 164, 166, 165, 220], 485);
-                step(f, Op::Copy(ValueType::Float), &[220, 17], 486);
-                step(f, Op::Jump, &[540], 487)
+            481 => {
+                step(f, Op::MulF, &[44, 202, 218], 482);
+                step(f, Op::GreaterF, &[218, 158, 13], 483);
+                step(f, Op::FloatLerp, &[158, 160, 44, 219], 484);
+                step(f, Op::SubF, &[160, 219, 220], 485);
+                step(f, Op::DivF, &[220, 219, 190], 486);
+                step(f, Op::DivF, &[160, 218, 224], 487);
+                step(f, Op::SubF, &[190, 224, 185], 488);
+                step(f, Op::AddF, &[211, 185, 222], 489);
+                step(f, Op::Select(ValueType::Float), &[13, 222, 158, 186], 490);
+                step(f, Op::MulF, &[215, 186, 183], 491);
+                step(f, Op::AddF, &[194, 183, 187], 492);
+                step(f, Op::SinF, &[187, 189], 493);
+                step(f, Op::NegF, &[189, 196], 494);
+                step(f, Op::CosF, &[187, 201], 495);
+                step(f, Op::MakeVector, &[196, 201, 158, 19], 496);
+                step(f, Op::Select(ValueType::Vec3), &[14, 19, 7, 20], 497);
+                step(f, Op::MovementAngleOffset, &[20, 17, 158, 44, 45, 166, 168, 167, 200], 498);
+                step(f, Op::Copy(ValueType::Float), &[200, 17], 499);
+                step(f, Op::Jump, &[557], 500)
             }
-            487 => {
-                step(f, Op::DivF, &[200, 47, 180], 488);
-                step(f, Op::AddF, &[180, 157, 184], 489);
-                step(f, Op::FloorF, &[184, 181], 490);
-                step(f, Op::MaxF, &[181, 158, 185], 491);
-                step(f, Op::ToInt, &[185, 9], 492);
-                step(f, Op::Copy(ValueType::Int), &[9, 10], 493);
-                step(f, Op::Copy(ValueType::Int), &[2, 7], 494);
-                step(f, Op::MulF, &[47, 157, 187], 495);
-                step(f, Op::SubF, &[57, 187, 194], 496);
-                step(f, Op::DivF, &[194, 200, 199], 497);
-                step(f, Op::DivF, &[43, 185, 198], 498);
-                step(f, Op::DivF, &[44, 185, 191], 499);
-                step(f, Op::SubF, &[164, 46, 197], 500);
-                step(f, Op::GreaterF, &[46, 156, 11], 501);
-                501
+            500 => {
+                step(f, Op::DivF, &[202, 48, 193], 501);
+                step(f, Op::AddF, &[193, 159, 199], 502);
+                step(f, Op::FloorF, &[199, 188], 503);
+                step(f, Op::MaxF, &[188, 160, 205], 504);
+                step(f, Op::ToInt, &[205, 6], 505);
+                step(f, Op::Copy(ValueType::Int), &[6, 7], 506);
+                step(f, Op::Copy(ValueType::Int), &[2, 8], 507);
+                step(f, Op::MulF, &[48, 159, 203], 508);
+                step(f, Op::SubF, &[58, 203, 206], 509);
+                step(f, Op::DivF, &[206, 202, 192], 510);
+                step(f, Op::DivF, &[44, 205, 195], 511);
+                step(f, Op::DivF, &[45, 205, 184], 512);
+                step(f, Op::SubF, &[166, 47, 197], 513);
+                step(f, Op::GreaterF, &[47, 158, 15], 514);
+                514
             }
-            501 => {
-                step(f, Op::ForNext, &[7, 10, 6, 540], 502)
+            514 => {
+                step(f, Op::ForNext, &[8, 7, 6, 557], 515)
             }
-            502 => {
-                step(f, Op::ToFloat, &[6, 186], 503);
-                step(f, Op::AddF, &[186, 158, 203], 504);
-                step(f, Op::DivF, &[203, 185, 201], 505);
-                step(f, Op::AddF, &[201, 199, 204], 506);
-                step(f, Op::MulF, &[41, 204, 190], 507);
-                step(f, Op::FloatLerp, &[156, 158, 190, 193], 508);
-                step(f, Op::DivF, &[193, 219, 182], 509);
-                step(f, Op::Select(ValueType::Float), &[16, 182, 204, 195], 510);
-                step(f, Op::LerpV, &[4, 2, 195, 18], 511);
-                step(f, Op::LengthV, &[18, 189], 512);
-                step(f, Op::GreaterF, &[189, 34, 15], 513);
-                step(f, Op::Select(ValueType::Vec3), &[15, 18, 6, 19], 514);
-                step(f, Op::MulF, &[200, 204, 208], 515);
-                step(f, Op::MulF, &[11, 208, 205], 516);
-                step(f, Op::AddF, &[15, 205, 215], 517);
-                step(f, Op::FractF, &[215, 211], 518);
-                step(f, Op::MulF, &[211, 161, 202], 519);
-                step(f, Op::FractF, &[202, 207], 520);
-                step(f, Op::LessF, &[207, 165, 12], 521);
-                step(f, Op::MovementAngleOffset, &[19, 17, 156, 163, 163, 164, 45, 165, 210], 522);
-                step(f, Op::Copy(ValueType::Float), &[17, 212], 523);
-                step(f, Op::SubF, &[210, 212, 214], 524);
-                step(f, Op::AddF, &[214, 166, 206], 525);
-                step(f, Op::DivF, &[206, 167, 209], 526);
-                step(f, Op::FractF, &[209, 216], 527);
-                step(f, Op::MulF, &[216, 167, 213], 528);
-                step(f, Op::SubF, &[213, 166, 217], 529);
-                step(f, Op::Copy(ValueType::Float), &[217, 192], 530);
-                step(f, Op::AbsF, &[192, 196], 531);
-                step(f, Op::SmoothStepF, &[196, 197, 164, 188], 532);
-                step(f, Op::GreaterF, &[196, 164, 13], 533);
-                step(f, Op::Select(ValueType::Float), &[13, 158, 156, 218], 534);
-                step(f, Op::Select(ValueType::Float), &[11, 188, 218, 183], 535);
-                step(f, Op::Select(ValueType::Float), &[12, 156, 183, 222], 536);
-                step(f, Op::LerpF, &[198, 191, 222, 220], 537);
-                step(f, Op::MovementAngleOffset, &[19, 17, 211, 220, 220, 164, 45, 165, 180], 538);
-                step(f, Op::Copy(ValueType::Float), &[180, 17], 539);
-                step(f, Op::Jump, &[501], 540)
+            515 => {
+                step(f, Op::ToFloat, &[6, 191], 516);
+                step(f, Op::AddF, &[191, 160, 210], 517);
+                step(f, Op::DivF, &[210, 205, 207], 518);
+                step(f, Op::AddF, &[207, 192, 217], 519);
+                step(f, Op::SubF, &[217, 160, 213], 520);
+                step(f, Op::MulF, &[213, 198, 212], 521);
+                step(f, Op::QuatFromAxisAngle, &[10, 212, 2], 522);
+                step(f, Op::MulF, &[42, 217, 204], 523);
+                step(f, Op::FloatLerp, &[158, 160, 204, 209], 524);
+                step(f, Op::DivF, &[209, 221, 182], 525);
+                step(f, Op::Select(ValueType::Float), &[16, 182, 217, 216], 526);
+                step(f, Op::LerpV, &[21, 2, 216, 17], 527);
+                step(f, Op::RotateVector, &[2, 17, 18], 528);
+                step(f, Op::LengthV, &[18, 214], 529);
+                step(f, Op::GreaterF, &[214, 35, 12], 530);
+                step(f, Op::Select(ValueType::Vec3), &[12, 18, 7, 19], 531);
+                step(f, Op::MulF, &[202, 217, 208], 532);
+                step(f, Op::MulF, &[11, 208, 219], 533);
+                step(f, Op::AddF, &[15, 219, 220], 534);
+                step(f, Op::FractF, &[220, 218], 535);
+                step(f, Op::MulF, &[218, 163, 190], 536);
+                step(f, Op::FractF, &[190, 224], 537);
+                step(f, Op::LessF, &[224, 167, 17], 538);
+                step(f, Op::MovementAngleOffset, &[19, 17, 158, 165, 165, 166, 46, 167, 185], 539);
+                step(f, Op::Copy(ValueType::Float), &[17, 211], 540);
+                step(f, Op::SubF, &[185, 211, 222], 541);
+                step(f, Op::AddF, &[222, 168, 186], 542);
+                step(f, Op::DivF, &[186, 169, 215], 543);
+                step(f, Op::FractF, &[215, 183], 544);
+                step(f, Op::MulF, &[183, 169, 194], 545);
+                step(f, Op::SubF, &[194, 168, 189], 546);
+                step(f, Op::Copy(ValueType::Float), &[189, 187], 547);
+                step(f, Op::AbsF, &[187, 196], 548);
+                step(f, Op::SmoothStepF, &[196, 197, 166, 201], 549);
+                step(f, Op::GreaterF, &[196, 166, 11], 550);
+                step(f, Op::Select(ValueType::Float), &[11, 160, 158, 200], 551);
+                step(f, Op::Select(ValueType::Float), &[15, 201, 200, 193], 552);
+                step(f, Op::Select(ValueType::Float), &[17, 158, 193, 199], 553);
+                step(f, Op::LerpF, &[195, 184, 199, 188], 554);
+                step(f, Op::MovementAngleOffset, &[19, 17, 218, 188, 188, 166, 46, 167, 203], 555);
+                step(f, Op::Copy(ValueType::Float), &[203, 17], 556);
+                step(f, Op::Jump, &[514], 557)
             }
-            540 => {
-                step(f, Op::QuatFromAxisAngle, &[9, 17, 2], 541);
-                step(f, Op::Copy(ValueType::Quat), &[2, 0], 542);
-                step(f, Op::SinF, &[17, 184], 543);
-                step(f, Op::AbsF, &[184, 181], 544);
-                step(f, Op::RemapF, &[181, 48, 49, 156, 158, 9, 187], 545);
-                step(f, Op::BreakVector, &[17, 194, 186, 203], 546);
-                step(f, Op::AbsF, &[194, 201], 547);
-                step(f, Op::DivF, &[201, 221, 190], 548);
-                step(f, Op::RemapF, &[190, 48, 49, 156, 158, 9, 193], 549);
-                step(f, Op::TransformVector, &[2, 8, 20], 550);
-                step(f, Op::DistanceV, &[20, 8, 182], 551);
-                step(f, Op::DivF, &[182, 200, 195], 552);
-                step(f, Op::RemapF, &[195, 53, 54, 158, 156, 9, 189], 553);
-                step(f, Op::MulF, &[193, 189, 204], 554);
-                step(f, Op::MaxF, &[187, 204, 208], 555);
-                step(f, Op::Copy(ValueType::Float), &[208, 18], 556);
-                step(f, Op::Copy(ValueType::Vec3), &[2, 4], 557);
-                step(f, Op::Copy(ValueType::Bool), &[9, 14], 558);
-                step(f, Op::Copy(ValueType::Array(Elem::Bool)), &[0, 2], 559);
-                step(f, Op::Copy(ValueType::Int), &[2, 8], 560);
-                560
+            557 => {
+                step(f, Op::QuatFromAxisAngle, &[10, 17, 2], 558);
+                step(f, Op::Copy(ValueType::Quat), &[2, 0], 559);
+                step(f, Op::SinF, &[17, 206], 560);
+                step(f, Op::AbsF, &[206, 191], 561);
+                step(f, Op::RemapF, &[191, 49, 50, 158, 160, 9, 205], 562);
+                step(f, Op::BreakVector, &[22, 210, 192, 207], 563);
+                step(f, Op::AbsF, &[210, 198], 564);
+                step(f, Op::DivF, &[198, 223, 213], 565);
+                step(f, Op::RemapF, &[213, 49, 50, 158, 160, 9, 212], 566);
+                step(f, Op::TransformVector, &[2, 9, 20], 567);
+                step(f, Op::DistanceV, &[20, 9, 204], 568);
+                step(f, Op::DivF, &[204, 202, 209], 569);
+                step(f, Op::RemapF, &[209, 54, 55, 160, 158, 9, 221], 570);
+                step(f, Op::MulF, &[212, 221, 182], 571);
+                step(f, Op::MaxF, &[205, 182, 216], 572);
+                step(f, Op::Copy(ValueType::Float), &[216, 18], 573);
+                step(f, Op::Copy(ValueType::Vec3), &[2, 4], 574);
+                step(f, Op::Copy(ValueType::Bool), &[9, 13], 575);
+                step(f, Op::Copy(ValueType::Array(Elem::Bool)), &[0, 2], 576);
+                step(f, Op::Copy(ValueType::Int), &[2, 7], 577);
+                577
             }
-            560 => {
-                step(f, Op::ForEachNext(Elem::Bool), &[2, 8, 15, 9, 6, 565], 561)
+            577 => {
+                step(f, Op::ForEachNext(Elem::Bool), &[2, 7, 14, 8, 6, 582], 578)
             }
-            561 => {
-                step(f, Op::Not, &[15, 13], 562);
-                step(f, Op::JumpIfFalse, &[13, 564], 563)
+            578 => {
+                step(f, Op::Not, &[14, 16], 579);
+                step(f, Op::JumpIfFalse, &[16, 581], 580)
             }
-            563 => {
-                step(f, Op::Copy(ValueType::Bool), &[10, 14], 564);
-                564
-            }
-            564 => {
-                step(f, Op::Jump, &[560], 565)
-            }
-            565 => {
-                step(f, Op::Copy(ValueType::Bool), &[14, 12], 566);
-                step(f, Op::Copy(ValueType::Bool), &[9, 11], 567);
-                step(f, Op::Copy(ValueType::Array(Elem::Bone)), &[0, 14], 568);
-                step(f, Op::Copy(ValueType::Int), &[2, 7], 569);
-                569
-            }
-            569 => {
-                step(f, Op::ForEachNext(Elem::Bone), &[14, 7, 15, 10, 6, 583], 570)
-            }
-            570 => {
-                step(f, Op::ArrayAt(Elem::Transform), &[0, 10, 4], 571);
-                step(f, Op::BreakTransform, &[4, 21, 2, 16], 572);
-                step(f, Op::BreakVector, &[21, 205, 215, 202], 573);
-                step(f, Op::MakeVector, &[205, 215, 156, 18], 574);
-                step(f, Op::ArrayAt(Elem::Transform), &[8, 10, 7], 575);
-                step(f, Op::BreakTransform, &[7, 19, 2, 17], 576);
-                step(f, Op::BreakVector, &[19, 207, 210, 212], 577);
-                step(f, Op::MakeVector, &[207, 210, 156, 20], 578);
-                step(f, Op::DistanceV, &[18, 20, 214], 579);
-                step(f, Op::GreaterF, &[214, 36, 16], 580);
-                step(f, Op::JumpIfFalse, &[16, 582], 581)
+            580 => {
+                step(f, Op::Copy(ValueType::Bool), &[10, 13], 581);
+                581
             }
             581 => {
-                step(f, Op::Copy(ValueType::Bool), &[10, 11], 582);
-                582
+                step(f, Op::Jump, &[577], 582)
             }
             582 => {
-                step(f, Op::Jump, &[569], 583)
+                step(f, Op::Copy(ValueType::Bool), &[13, 12], 583);
+                step(f, Op::Copy(ValueType::Bool), &[9, 11], 584);
+                step(f, Op::Copy(ValueType::Array(Elem::Bone)), &[0, 14], 585);
+                step(f, Op::Copy(ValueType::Int), &[2, 6], 586);
+                586
             }
-            583 => {
-                step(f, Op::Copy(ValueType::Bool), &[11, 15], 584);
-                step(f, Op::And, &[12, 15, 13], 585);
-                step(f, Op::LengthV, &[2, 206], 586);
-                step(f, Op::GreaterF, &[206, 34, 14], 587);
-                step(f, Op::GreaterF, &[0, 34, 16], 588);
-                step(f, Op::Or, &[14, 16, 11], 589);
-                step(f, Op::Not, &[11, 15], 590);
-                step(f, Op::And, &[13, 15, 16], 591);
-                step(f, Op::DeltaTime, &[209], 592);
-                step(f, Op::MulF, &[209, 39, 216], 593);
-                step(f, Op::AddF, &[15, 216, 213], 594);
-                step(f, Op::GreaterF, &[15, 157, 11], 595);
-                step(f, Op::AddF, &[38, 157, 217], 596);
-                step(f, Op::Select(ValueType::Float), &[11, 217, 38, 192], 597);
-                step(f, Op::MinF, &[213, 192, 196], 598);
-                step(f, Op::NotEquals(Elem::Bool), &[15, 4, 11], 599);
-                step(f, Op::Not, &[13, 17], 600);
-                step(f, Op::And, &[11, 17, 18], 601);
-                step(f, Op::SubF, &[16, 34, 188], 602);
-                step(f, Op::SubF, &[16, 206, 218], 603);
-                step(f, Op::DivF, &[188, 218, 183], 604);
-                step(f, Op::ClampF, &[183, 156, 158, 222], 605);
-                step(f, Op::MulF, &[11, 222, 211], 606);
-                step(f, Op::RemapF, &[206, 34, 35, 156, 158, 9, 220], 607);
-                step(f, Op::MaxF, &[220, 12, 180], 608);
-                step(f, Op::Select(ValueType::Float), &[12, 158, 180, 185], 609);
-                step(f, Op::Select(ValueType::Float), &[15, 37, 185, 191], 610);
-                step(f, Op::Select(ValueType::Float), &[13, 220, 191, 197], 611);
-                step(f, Op::SubF, &[158, 26, 198], 612);
-                step(f, Op::MulF, &[197, 198, 199], 613);
-                step(f, Op::LerpF, &[28, 51, 18, 219], 614);
-                step(f, Op::RemapF, &[206, 31, 32, 29, 30, 9, 184], 615);
-                step(f, Op::LerpF, &[184, 50, 18, 181], 616);
-                step(f, Op::MaxF, &[206, 33, 186], 617);
-                step(f, Op::DivF, &[181, 186, 203], 618);
-                step(f, Op::AddF, &[219, 203, 194], 619);
-                step(f, Op::DivF, &[199, 194, 201], 620);
-                step(f, Op::SubF, &[158, 222, 221], 621);
-                step(f, Op::MulF, &[201, 221, 190], 622);
-                step(f, Op::AddF, &[211, 190, 182], 623);
-                step(f, Op::MulF, &[182, 161, 200], 624);
-                step(f, Op::AddF, &[11, 201, 195], 625);
-                step(f, Op::Select(ValueType::Float), &[18, 200, 195, 189], 626);
-                step(f, Op::DivF, &[161, 189, 193], 627);
-                step(f, Op::GreaterF, &[189, 156, 11], 628);
-                step(f, Op::CycleStep, &[15, 193, 156, 11, 187, 204], 629);
-                step(f, Op::Select(ValueType::Float), &[16, 196, 187, 208], 630);
-                step(f, Op::Copy(ValueType::Float), &[208, 15], 631);
-                step(f, Op::Copy(ValueType::Float), &[201, 11], 632);
-                step(f, Op::Copy(ValueType::Bool), &[14, 3], 633);
-                step(f, Op::Copy(ValueType::Float), &[203, 9], 634);
-                step(f, Op::Copy(ValueType::Float), &[194, 10], 635);
-                step(f, Op::Copy(ValueType::Array(Elem::Bone)), &[0, 13], 636);
-                step(f, Op::Copy(ValueType::Int), &[2, 9], 637);
-                step(f, Op::DivF, &[219, 194, 202], 638);
-                step(f, Op::MulF, &[14, 222, 205], 639);
-                step(f, Op::MulF, &[209, 157, 215], 640);
-                step(f, Op::SubF, &[202, 13, 212], 641);
-                step(f, Op::MaxF, &[212, 156, 207], 642);
-                step(f, Op::DivF, &[207, 202, 210], 643);
-                step(f, Op::SubF, &[158, 18, 214], 644);
-                step(f, Op::DivF, &[57, 209, 216], 645);
-                step(f, Op::SubF, &[157, 216, 217], 646);
-                step(f, Op::MulF, &[210, 214, 192], 647);
-                step(f, Op::MulF, &[192, 198, 213], 648);
-                step(f, Op::MulF, &[213, 141, 188], 649);
-                step(f, Op::MulF, &[188, 217, 218], 650);
-                step(f, Op::SubF, &[158, 218, 183], 651);
-                651
+            586 => {
+                step(f, Op::ForEachNext(Elem::Bone), &[14, 6, 15, 7, 8, 600], 587)
             }
-            651 => {
-                step(f, Op::ForEachNext(Elem::Bone), &[13, 9, 14, 8, 6, 695], 652)
+            587 => {
+                step(f, Op::ArrayAt(Elem::Transform), &[0, 7, 4], 588);
+                step(f, Op::BreakTransform, &[4, 21, 2, 17], 589);
+                step(f, Op::BreakVector, &[21, 214, 217, 208], 590);
+                step(f, Op::MakeVector, &[214, 217, 158, 18], 591);
+                step(f, Op::ArrayAt(Elem::Transform), &[8, 7, 7], 592);
+                step(f, Op::BreakTransform, &[7, 19, 2, 22], 593);
+                step(f, Op::BreakVector, &[19, 219, 220, 190], 594);
+                step(f, Op::MakeVector, &[219, 220, 158, 20], 595);
+                step(f, Op::DistanceV, &[18, 20, 224], 596);
+                step(f, Op::GreaterF, &[224, 37, 15], 597);
+                step(f, Op::JumpIfFalse, &[15, 599], 598)
             }
-            652 => {
-                step(f, Op::ArrayAt(Elem::Float), &[0, 8, 184], 653);
-                step(f, Op::ToFloat, &[8, 181], 654);
-                step(f, Op::MulF, &[181, 157, 186], 655);
-                step(f, Op::AddF, &[15, 186, 190], 656);
-                step(f, Op::FractF, &[190, 211], 657);
-                step(f, Op::SubF, &[184, 211, 182], 658);
-                step(f, Op::GreaterF, &[182, 157, 17], 659);
-                step(f, Op::ArrayAt(Elem::Float), &[2, 8, 195], 660);
-                step(f, Op::Select(ValueType::Float), &[17, 156, 195, 200], 661);
-                step(f, Op::ArraySetAt(Elem::Float), &[3, 8, 200], 662);
-                step(f, Op::SubF, &[158, 184, 189], 663);
-                step(f, Op::AddF, &[211, 189, 193], 664);
-                step(f, Op::DivF, &[211, 193, 204], 665);
-                step(f, Op::MaxF, &[220, 12, 180], 666);
-                step(f, Op::Select(ValueType::Float), &[12, 158, 180, 185], 667);
-                step(f, Op::Select(ValueType::Float), &[15, 37, 185, 191], 668);
-                step(f, Op::Select(ValueType::Float), &[13, 220, 191, 197], 669);
-                step(f, Op::MulF, &[197, 198, 199], 670);
-                step(f, Op::DivF, &[199, 219, 187], 671);
-                step(f, Op::MulF, &[187, 221, 196], 672);
-                step(f, Op::AddF, &[205, 196, 208], 673);
-                step(f, Op::MulF, &[208, 161, 201], 674);
-                step(f, Op::AddF, &[14, 187, 203], 675);
-                step(f, Op::Select(ValueType::Float), &[18, 201, 203, 194], 676);
-                step(f, Op::MulF, &[194, 215, 222], 677);
-                step(f, Op::MulF, &[204, 222, 212], 678);
-                step(f, Op::ArrayAt(Elem::Bool), &[0, 8, 11], 679);
-                step(f, Op::MulF, &[222, 183, 207], 680);
-                step(f, Op::Select(ValueType::Float), &[11, 222, 207, 209], 681);
-                step(f, Op::MulF, &[210, 195, 216], 682);
-                step(f, Op::MulF, &[216, 214, 192], 683);
-                step(f, Op::MulF, &[192, 198, 213], 684);
-                step(f, Op::MulF, &[213, 141, 188], 685);
-                step(f, Op::Select(ValueType::Float), &[11, 156, 188, 217], 686);
-                step(f, Op::SubF, &[209, 217, 218], 687);
-                step(f, Op::AddF, &[195, 218, 181], 688);
-                step(f, Op::Select(ValueType::Float), &[17, 212, 181, 186], 689);
-                step(f, Op::MinF, &[186, 161, 190], 690);
-                step(f, Op::ArraySetAt(Elem::Float), &[2, 8, 190], 691);
-                step(f, Op::JumpIfFalse, &[17, 693], 692)
+            598 => {
+                step(f, Op::Copy(ValueType::Bool), &[10, 11], 599);
+                599
             }
-            692 => {
-                step(f, Op::Copy(ValueType::Float), &[197, 12], 693);
-                693
+            599 => {
+                step(f, Op::Jump, &[586], 600)
             }
-            693 => {
-                step(f, Op::ArraySetAt(Elem::Float), &[0, 8, 211], 694);
-                step(f, Op::Jump, &[651], 695)
+            600 => {
+                step(f, Op::Copy(ValueType::Bool), &[11, 17], 601);
+                step(f, Op::And, &[12, 17, 14], 602);
+                step(f, Op::LengthV, &[2, 185], 603);
+                step(f, Op::GreaterF, &[185, 35, 16], 604);
+                step(f, Op::GreaterF, &[0, 35, 13], 605);
+                step(f, Op::Or, &[16, 13, 15], 606);
+                step(f, Op::Not, &[15, 11], 607);
+                step(f, Op::And, &[14, 11, 17], 608);
+                step(f, Op::DeltaTime, &[211], 609);
+                step(f, Op::MulF, &[211, 40, 222], 610);
+                step(f, Op::AddF, &[15, 222, 186], 611);
+                step(f, Op::GreaterF, &[15, 159, 13], 612);
+                step(f, Op::AddF, &[39, 159, 215], 613);
+                step(f, Op::Select(ValueType::Float), &[13, 215, 39, 183], 614);
+                step(f, Op::MinF, &[186, 183, 194], 615);
+                step(f, Op::NotEquals(Elem::Bool), &[11, 4, 15], 616);
+                step(f, Op::Not, &[14, 13], 617);
+                step(f, Op::And, &[15, 13, 18], 618);
+                step(f, Op::SubF, &[16, 35, 189], 619);
+                step(f, Op::SubF, &[16, 185, 187], 620);
+                step(f, Op::DivF, &[189, 187, 197], 621);
+                step(f, Op::ClampF, &[197, 158, 160, 196], 622);
+                step(f, Op::MulF, &[11, 196, 200], 623);
+                step(f, Op::RemapF, &[185, 35, 36, 158, 160, 9, 201], 624);
+                step(f, Op::MaxF, &[201, 12, 193], 625);
+                step(f, Op::Select(ValueType::Float), &[12, 160, 193, 184], 626);
+                step(f, Op::Select(ValueType::Float), &[11, 38, 184, 195], 627);
+                step(f, Op::Select(ValueType::Float), &[14, 201, 195, 199], 628);
+                step(f, Op::SubF, &[160, 27, 188], 629);
+                step(f, Op::MulF, &[199, 188, 218], 630);
+                step(f, Op::LerpF, &[29, 52, 18, 203], 631);
+                step(f, Op::RemapF, &[185, 32, 33, 30, 31, 9, 206], 632);
+                step(f, Op::LerpF, &[206, 51, 18, 191], 633);
+                step(f, Op::MaxF, &[185, 34, 192], 634);
+                step(f, Op::DivF, &[191, 192, 207], 635);
+                step(f, Op::AddF, &[203, 207, 210], 636);
+                step(f, Op::DivF, &[218, 210, 198], 637);
+                step(f, Op::SubF, &[160, 196, 223], 638);
+                step(f, Op::MulF, &[198, 223, 213], 639);
+                step(f, Op::AddF, &[200, 213, 202], 640);
+                step(f, Op::MulF, &[202, 163, 204], 641);
+                step(f, Op::AddF, &[11, 198, 209], 642);
+                step(f, Op::Select(ValueType::Float), &[18, 204, 209, 212], 643);
+                step(f, Op::DivF, &[163, 212, 221], 644);
+                step(f, Op::GreaterF, &[212, 158, 13], 645);
+                step(f, Op::CycleStep, &[15, 221, 158, 13, 182, 205], 646);
+                step(f, Op::Select(ValueType::Float), &[17, 194, 182, 216], 647);
+                step(f, Op::Copy(ValueType::Float), &[216, 15], 648);
+                step(f, Op::Copy(ValueType::Float), &[198, 11], 649);
+                step(f, Op::Copy(ValueType::Bool), &[16, 3], 650);
+                step(f, Op::Copy(ValueType::Float), &[207, 9], 651);
+                step(f, Op::Copy(ValueType::Float), &[210, 10], 652);
+                step(f, Op::Copy(ValueType::Array(Elem::Bone)), &[0, 13], 653);
+                step(f, Op::Copy(ValueType::Int), &[2, 6], 654);
+                step(f, Op::DivF, &[203, 210, 208], 655);
+                step(f, Op::MulF, &[14, 196, 214], 656);
+                step(f, Op::MulF, &[211, 159, 217], 657);
+                step(f, Op::SubF, &[208, 13, 190], 658);
+                step(f, Op::MaxF, &[190, 158, 219], 659);
+                step(f, Op::DivF, &[219, 208, 220], 660);
+                step(f, Op::SubF, &[160, 18, 224], 661);
+                step(f, Op::DivF, &[58, 211, 222], 662);
+                step(f, Op::SubF, &[159, 222, 215], 663);
+                step(f, Op::MulF, &[220, 224, 183], 664);
+                step(f, Op::MulF, &[183, 188, 186], 665);
+                step(f, Op::MulF, &[186, 143, 187], 666);
+                step(f, Op::MulF, &[187, 215, 189], 667);
+                step(f, Op::SubF, &[160, 189, 197], 668);
+                668
             }
-            695 => {
-                step(f, Op::Copy(ValueType::Float), &[202, 13], 696);
-                step(f, Op::Copy(ValueType::Bool), &[15, 4], 697);
-                step(f, Op::Copy(ValueType::Float), &[206, 16], 698);
-                step(f, Op::MaxF, &[220, 12, 180], 699);
-                step(f, Op::Select(ValueType::Float), &[12, 158, 180, 185], 700);
-                step(f, Op::Select(ValueType::Float), &[15, 37, 185, 191], 701);
-                step(f, Op::Select(ValueType::Float), &[13, 220, 191, 197], 702);
-                step(f, Op::MulF, &[197, 198, 199], 703);
-                step(f, Op::DivF, &[199, 219, 187], 704);
-                step(f, Op::Copy(ValueType::Float), &[187, 14], 705);
-                step(f, Op::TransformVector, &[2, 8, 16], 706);
-                step(f, Op::DistanceV, &[16, 8, 182], 707);
-                step(f, Op::DeltaTime, &[200], 708);
-                step(f, Op::DivF, &[182, 200, 184], 709);
-                step(f, Op::RemapF, &[184, 53, 54, 156, 158, 9, 189], 710);
-                step(f, Op::BreakTransform, &[2, 21, 2, 17], 711);
-                step(f, Op::BreakVector, &[21, 193, 196, 208], 712);
-                step(f, Op::NegF, &[196, 201], 713);
-                step(f, Op::Atan2F, &[193, 201, 203], 714);
-                step(f, Op::AbsF, &[203, 194], 715);
-                step(f, Op::RemapF, &[194, 111, 112, 156, 158, 9, 204], 716);
-                step(f, Op::MulF, &[189, 204, 207], 717);
-                step(f, Op::FloatLerp, &[19, 156, 113, 222], 718);
-                step(f, Op::MaxF, &[207, 222, 216], 719);
-                step(f, Op::Copy(ValueType::Float), &[216, 19], 720);
-                step(f, Op::Copy(ValueType::Float), &[203, 20], 721);
-                step(f, Op::Copy(ValueType::Array(Elem::Bone)), &[0, 4], 722);
-                step(f, Op::Copy(ValueType::Int), &[2, 10], 723);
-                723
+            668 => {
+                step(f, Op::ForEachNext(Elem::Bone), &[13, 6, 14, 8, 7, 712], 669)
             }
-            723 => {
-                step(f, Op::ForEachNext(Elem::Bone), &[4, 10, 0, 7, 6, 1652], 724)
+            669 => {
+                step(f, Op::ArrayAt(Elem::Float), &[0, 8, 206], 670);
+                step(f, Op::ToFloat, &[8, 191], 671);
+                step(f, Op::MulF, &[191, 159, 192], 672);
+                step(f, Op::AddF, &[15, 192, 200], 673);
+                step(f, Op::FractF, &[200, 213], 674);
+                step(f, Op::SubF, &[206, 213, 202], 675);
+                step(f, Op::GreaterF, &[202, 159, 15], 676);
+                step(f, Op::ArrayAt(Elem::Float), &[2, 8, 204], 677);
+                step(f, Op::Select(ValueType::Float), &[15, 158, 204, 209], 678);
+                step(f, Op::ArraySetAt(Elem::Float), &[3, 8, 209], 679);
+                step(f, Op::SubF, &[160, 206, 212], 680);
+                step(f, Op::AddF, &[213, 212, 205], 681);
+                step(f, Op::DivF, &[213, 205, 221], 682);
+                step(f, Op::MaxF, &[201, 12, 193], 683);
+                step(f, Op::Select(ValueType::Float), &[12, 160, 193, 184], 684);
+                step(f, Op::Select(ValueType::Float), &[11, 38, 184, 195], 685);
+                step(f, Op::Select(ValueType::Float), &[14, 201, 195, 199], 686);
+                step(f, Op::MulF, &[199, 188, 218], 687);
+                step(f, Op::DivF, &[218, 203, 182], 688);
+                step(f, Op::MulF, &[182, 223, 194], 689);
+                step(f, Op::AddF, &[214, 194, 216], 690);
+                step(f, Op::MulF, &[216, 163, 198], 691);
+                step(f, Op::AddF, &[14, 182, 207], 692);
+                step(f, Op::Select(ValueType::Float), &[18, 198, 207, 210], 693);
+                step(f, Op::MulF, &[210, 217, 196], 694);
+                step(f, Op::MulF, &[221, 196, 190], 695);
+                step(f, Op::ArrayAt(Elem::Bool), &[0, 8, 13], 696);
+                step(f, Op::MulF, &[196, 197, 219], 697);
+                step(f, Op::Select(ValueType::Float), &[13, 196, 219, 211], 698);
+                step(f, Op::MulF, &[220, 204, 222], 699);
+                step(f, Op::MulF, &[222, 224, 183], 700);
+                step(f, Op::MulF, &[183, 188, 186], 701);
+                step(f, Op::MulF, &[186, 143, 187], 702);
+                step(f, Op::Select(ValueType::Float), &[13, 158, 187, 215], 703);
+                step(f, Op::SubF, &[211, 215, 189], 704);
+                step(f, Op::AddF, &[204, 189, 191], 705);
+                step(f, Op::Select(ValueType::Float), &[15, 190, 191, 192], 706);
+                step(f, Op::MinF, &[192, 163, 200], 707);
+                step(f, Op::ArraySetAt(Elem::Float), &[2, 8, 200], 708);
+                step(f, Op::JumpIfFalse, &[15, 710], 709)
             }
-            724 => {
-                step(f, Op::Copy(ValueType::Bool), &[9, 16], 725);
-                step(f, Op::Copy(ValueType::Bool), &[10, 14], 726);
-                step(f, Op::ArrayAt(Elem::Bool), &[0, 7, 11], 727);
-                step(f, Op::ArrayAt(Elem::Float), &[2, 7, 192], 728);
-                step(f, Op::GreaterEqualF, &[192, 158, 17], 729);
-                step(f, Op::And, &[11, 17, 18], 730);
-                step(f, Op::Or, &[1, 2, 12], 731);
-                step(f, Op::GreaterF, &[26, 156, 15], 732);
-                step(f, Op::Or, &[12, 15, 13], 733);
-                step(f, Op::Not, &[13, 11], 734);
-                step(f, Op::And, &[18, 11, 12], 735);
-                step(f, Op::JumpIfFalse, &[12, 845], 736)
+            709 => {
+                step(f, Op::Copy(ValueType::Float), &[199, 12], 710);
+                710
             }
-            736 => {
-                step(f, Op::ArrayAt(Elem::Transform), &[2, 7, 5], 737);
-                step(f, Op::BreakTransform, &[5, 19, 2, 18], 738);
-                step(f, Op::ArrayAt(Elem::Vec3), &[0, 7, 20], 739);
-                step(f, Op::SubV, &[19, 20, 16], 740);
-                step(f, Op::TransformPoint, &[2, 16, 17], 741);
-                step(f, Op::GetTransform, &[34, 2, 9, 6], 742);
-                step(f, Op::BreakTransform, &[6, 21, 3, 16], 743);
-                step(f, Op::BreakVector, &[21, 213, 188, 209], 744);
-                step(f, Op::SubF, &[158, 18, 217], 745);
-                step(f, Op::MulF, &[17, 217, 195], 746);
-                step(f, Op::QuatFromAxisAngle, &[9, 195, 4], 747);
-                step(f, Op::GetTransform, &[0, 2, 9, 4], 748);
-                step(f, Op::BreakTransform, &[4, 22, 5, 23], 749);
-                step(f, Op::SubV, &[22, 21, 24], 750);
-                step(f, Op::BreakVector, &[24, 218, 181, 212], 751);
-                step(f, Op::MakeVector, &[218, 181, 156, 25], 752);
-                step(f, Op::RotateVector, &[4, 25, 26], 753);
-                step(f, Op::BreakVector, &[26, 186, 190, 211], 754);
-                step(f, Op::MulF, &[52, 18, 183], 755);
-                step(f, Op::Equals(Elem::Int), &[7, 2, 15], 756);
-                step(f, Op::Select(ValueType::Float), &[15, 158, 160, 205], 757);
-                step(f, Op::MulF, &[183, 205, 210], 758);
-                step(f, Op::AddF, &[186, 210, 214], 759);
-                step(f, Op::AddF, &[213, 214, 215], 760);
-                step(f, Op::AddF, &[188, 190, 221], 761);
-                step(f, Op::BreakVector, &[22, 202, 206, 180], 762);
-                step(f, Op::SubF, &[180, 58, 185], 763);
-                step(f, Op::MakeVector, &[215, 221, 185, 27], 764);
-                step(f, Op::MulF, &[9, 157, 191], 765);
-                step(f, Op::ScaleV, &[2, 191, 28], 766);
-                step(f, Op::AddV, &[27, 28, 29], 767);
-                step(f, Op::DistanceV, &[17, 29, 220], 768);
-                step(f, Op::TransformVector, &[2, 10, 17], 769);
-                step(f, Op::DistanceV, &[17, 10, 197], 770);
-                step(f, Op::MaxF, &[220, 197, 198], 771);
-                step(f, Op::LessEqualF, &[198, 65, 13], 772);
-                step(f, Op::LengthV, &[2, 199], 773);
-                step(f, Op::LengthV, &[4, 219], 774);
-                step(f, Op::MaxF, &[199, 219, 187], 775);
-                step(f, Op::LessEqualF, &[187, 34, 11], 776);
-                step(f, Op::And, &[13, 11, 18], 777);
-                step(f, Op::ArrayAt(Elem::Bool), &[1, 7, 12], 778);
-                step(f, Op::And, &[18, 12, 11], 779);
-                step(f, Op::JumpIfFalse, &[11, 782], 780)
+            710 => {
+                step(f, Op::ArraySetAt(Elem::Float), &[0, 8, 213], 711);
+                step(f, Op::Jump, &[668], 712)
             }
-            780 => {
-                step(f, Op::Copy(ValueType::Bool), &[9, 14], 781);
-                step(f, Op::Jump, &[811], 782)
+            712 => {
+                step(f, Op::Copy(ValueType::Float), &[208, 13], 713);
+                step(f, Op::Copy(ValueType::Bool), &[11, 4], 714);
+                step(f, Op::Copy(ValueType::Float), &[185, 16], 715);
+                step(f, Op::MaxF, &[201, 12, 193], 716);
+                step(f, Op::Select(ValueType::Float), &[12, 160, 193, 184], 717);
+                step(f, Op::Select(ValueType::Float), &[11, 38, 184, 195], 718);
+                step(f, Op::Select(ValueType::Float), &[14, 201, 195, 199], 719);
+                step(f, Op::MulF, &[199, 188, 218], 720);
+                step(f, Op::DivF, &[218, 203, 182], 721);
+                step(f, Op::Copy(ValueType::Float), &[182, 14], 722);
+                step(f, Op::TransformVector, &[2, 5, 17], 723);
+                step(f, Op::BreakTransform, &[2, 21, 2, 22], 724);
+                step(f, Op::DeltaTime, &[202], 725);
+                step(f, Op::DivF, &[160, 202, 209], 726);
+                step(f, Op::ScaleV, &[21, 209, 19], 727);
+                step(f, Op::NegV, &[19, 18], 728);
+                step(f, Op::SubV, &[18, 17, 20], 729);
+                step(f, Op::AddF, &[21, 202, 206], 730);
+                step(f, Op::DivF, &[21, 206, 212], 731);
+                step(f, Op::ScaleV, &[20, 212, 22], 732);
+                step(f, Op::AddV, &[17, 22, 19], 733);
+                step(f, Op::DivF, &[202, 206, 205], 734);
+                step(f, Op::ScaleV, &[20, 205, 17], 735);
+                step(f, Op::AddV, &[18, 17, 22], 736);
+                step(f, Op::DotV, &[19, 22, 223], 737);
+                step(f, Op::LessF, &[223, 158, 17], 738);
+                step(f, Op::TransformVector, &[2, 9, 20], 739);
+                step(f, Op::DistanceV, &[20, 9, 194], 740);
+                step(f, Op::SubV, &[22, 19, 17], 741);
+                step(f, Op::DotV, &[19, 17, 214], 742);
+                step(f, Op::NegF, &[214, 216], 743);
+                step(f, Op::DotV, &[17, 17, 198], 744);
+                step(f, Op::DivF, &[216, 198, 207], 745);
+                step(f, Op::ClampF, &[207, 158, 160, 210], 746);
+                step(f, Op::SubF, &[160, 210, 217], 747);
+                step(f, Op::MulF, &[202, 217, 221], 748);
+                step(f, Op::DivF, &[194, 221, 197], 749);
+                step(f, Op::RemapF, &[197, 54, 55, 158, 160, 9, 196], 750);
+                step(f, Op::BreakVector, &[22, 219, 220, 222], 751);
+                step(f, Op::NegF, &[219, 224], 752);
+                step(f, Op::Atan2F, &[224, 220, 183], 753);
+                step(f, Op::AbsF, &[183, 186], 754);
+                step(f, Op::RemapF, &[186, 113, 114, 158, 160, 9, 187], 755);
+                step(f, Op::MulF, &[196, 187, 211], 756);
+                step(f, Op::DivF, &[194, 202, 215], 757);
+                step(f, Op::RemapF, &[215, 54, 55, 158, 160, 9, 189], 758);
+                step(f, Op::BreakVector, &[21, 204, 190, 191], 759);
+                step(f, Op::NegF, &[190, 192], 760);
+                step(f, Op::Atan2F, &[204, 192, 200], 761);
+                step(f, Op::AbsF, &[200, 213], 762);
+                step(f, Op::RemapF, &[213, 113, 114, 158, 160, 9, 208], 763);
+                step(f, Op::MulF, &[189, 208, 185], 764);
+                step(f, Op::Select(ValueType::Float), &[17, 211, 185, 193], 765);
+                step(f, Op::FloatLerp, &[19, 158, 115, 184], 766);
+                step(f, Op::MaxF, &[193, 184, 195], 767);
+                step(f, Op::MaxF, &[195, 158, 201], 768);
+                step(f, Op::Copy(ValueType::Float), &[201, 19], 769);
+                step(f, Op::Select(ValueType::Float), &[17, 183, 200, 188], 770);
+                step(f, Op::Copy(ValueType::Float), &[188, 20], 771);
+                step(f, Op::Copy(ValueType::Vec3), &[18, 5], 772);
+                step(f, Op::Copy(ValueType::Float), &[202, 21], 773);
+                step(f, Op::Copy(ValueType::Array(Elem::Bone)), &[0, 4], 774);
+                step(f, Op::Copy(ValueType::Int), &[2, 6], 775);
+                775
             }
-            782 => {
-                step(f, Op::MakeVector, &[156, 156, 63, 17], 783);
-                step(f, Op::AddV, &[29, 17, 30], 784);
-                step(f, Op::SubV, &[29, 17, 31], 785);
-                step(f, Op::SphereTrace, &[30, 31, 62, 13, 32, 33, 182], 786);
-                step(f, Op::SubV, &[32, 29, 33], 787);
-                step(f, Op::DistanceV, &[33, 20, 200], 788);
-                step(f, Op::RotateVector, &[0, 8, 32], 789);
-                step(f, Op::ScaleV, &[32, 67, 33], 790);
-                step(f, Op::AddV, &[30, 33, 34], 791);
-                step(f, Op::AddV, &[31, 33, 35], 792);
-                step(f, Op::SphereTrace, &[34, 35, 62, 18, 36, 37, 184], 793);
-                step(f, Op::SubV, &[36, 29, 38], 794);
-                step(f, Op::ArrayAt(Elem::Vec3), &[1, 7, 39], 795);
-                step(f, Op::DistanceV, &[38, 39, 208], 796);
-                step(f, Op::MaxF, &[200, 208, 196], 797);
-                step(f, Op::ScaleV, &[32, 64, 39], 798);
-                step(f, Op::AddV, &[34, 39, 40], 799);
-                step(f, Op::AddV, &[35, 39, 41], 800);
-                step(f, Op::SphereTrace, &[40, 41, 62, 11, 42, 43, 193], 801);
-                step(f, Op::SubV, &[42, 29, 44], 802);
-                step(f, Op::ArrayAt(Elem::Vec3), &[2, 7, 45], 803);
-                step(f, Op::DistanceV, &[44, 45, 201], 804);
-                step(f, Op::MaxF, &[196, 201, 194], 805);
-                step(f, Op::LessEqualF, &[194, 65, 19], 806);
-                step(f, Op::And, &[13, 18, 20], 807);
-                step(f, Op::And, &[20, 12, 13], 808);
-                step(f, Op::And, &[19, 13, 20], 809);
-                step(f, Op::JumpIfFalse, &[20, 811], 810)
+            775 => {
+                step(f, Op::ForEachNext(Elem::Bone), &[4, 6, 0, 7, 8, 1707], 776)
             }
-            810 => {
-                step(f, Op::Copy(ValueType::Bool), &[9, 14], 811);
-                811
+            776 => {
+                step(f, Op::Copy(ValueType::Bool), &[9, 16], 777);
+                step(f, Op::Copy(ValueType::Bool), &[10, 18], 778);
+                step(f, Op::ArrayAt(Elem::Bool), &[0, 7, 13], 779);
+                step(f, Op::ArrayAt(Elem::Float), &[2, 7, 199], 780);
+                step(f, Op::GreaterEqualF, &[199, 160, 15], 781);
+                step(f, Op::And, &[13, 15, 12], 782);
+                step(f, Op::Or, &[1, 2, 11], 783);
+                step(f, Op::GreaterF, &[27, 158, 14], 784);
+                step(f, Op::Or, &[11, 14, 17], 785);
+                step(f, Op::Not, &[17, 13], 786);
+                step(f, Op::And, &[12, 13, 11], 787);
+                step(f, Op::JumpIfFalse, &[11, 897], 788)
             }
-            811 => {
-                step(f, Op::JumpIfFalse, &[14, 845], 812)
+            788 => {
+                step(f, Op::ArrayAt(Elem::Transform), &[2, 7, 5], 789);
+                step(f, Op::BreakTransform, &[5, 20, 2, 19], 790);
+                step(f, Op::ArrayAt(Elem::Vec3), &[0, 7, 17], 791);
+                step(f, Op::SubV, &[20, 17, 22], 792);
+                step(f, Op::TransformPoint, &[2, 22, 21], 793);
+                step(f, Op::GetTransform, &[34, 2, 9, 6], 794);
+                step(f, Op::BreakTransform, &[6, 18, 3, 22], 795);
+                step(f, Op::BreakVector, &[18, 203, 218, 182], 796);
+                step(f, Op::SubF, &[160, 18, 209], 797);
+                step(f, Op::MulF, &[17, 209, 212], 798);
+                step(f, Op::QuatFromAxisAngle, &[10, 212, 4], 799);
+                step(f, Op::GetTransform, &[0, 2, 9, 4], 800);
+                step(f, Op::BreakTransform, &[4, 23, 5, 24], 801);
+                step(f, Op::SubV, &[23, 18, 25], 802);
+                step(f, Op::BreakVector, &[25, 206, 205, 223], 803);
+                step(f, Op::MakeVector, &[206, 205, 158, 26], 804);
+                step(f, Op::RotateVector, &[4, 26, 27], 805);
+                step(f, Op::BreakVector, &[27, 214, 198, 216], 806);
+                step(f, Op::MulF, &[53, 18, 207], 807);
+                step(f, Op::Equals(Elem::Int), &[7, 2, 14], 808);
+                step(f, Op::Select(ValueType::Float), &[14, 160, 162, 210], 809);
+                step(f, Op::MulF, &[207, 210, 217], 810);
+                step(f, Op::AddF, &[214, 217, 221], 811);
+                step(f, Op::AddF, &[203, 221, 197], 812);
+                step(f, Op::AddF, &[218, 198, 222], 813);
+                step(f, Op::BreakVector, &[23, 219, 220, 224], 814);
+                step(f, Op::SubF, &[224, 59, 186], 815);
+                step(f, Op::MakeVector, &[197, 222, 186, 28], 816);
+                step(f, Op::MulF, &[9, 159, 187], 817);
+                step(f, Op::ScaleV, &[2, 187, 29], 818);
+                step(f, Op::AddV, &[28, 29, 30], 819);
+                step(f, Op::DistanceV, &[21, 30, 196], 820);
+                step(f, Op::TransformVector, &[2, 11, 21], 821);
+                step(f, Op::DistanceV, &[21, 11, 194], 822);
+                step(f, Op::MaxF, &[196, 194, 215], 823);
+                step(f, Op::LessEqualF, &[215, 66, 17], 824);
+                step(f, Op::LengthV, &[2, 191], 825);
+                step(f, Op::LengthV, &[4, 190], 826);
+                step(f, Op::MaxF, &[191, 190, 192], 827);
+                step(f, Op::LessEqualF, &[192, 35, 12], 828);
+                step(f, Op::And, &[17, 12, 13], 829);
+                step(f, Op::ArrayAt(Elem::Bool), &[1, 7, 11], 830);
+                step(f, Op::And, &[13, 11, 12], 831);
+                step(f, Op::JumpIfFalse, &[12, 834], 832)
             }
-            812 => {
-                step(f, Op::ArrayAt(Elem::Transform), &[1, 7, 7], 813);
-                step(f, Op::BreakTransform, &[7, 45, 6, 46], 814);
-                step(f, Op::AddV, &[29, 20, 47], 815);
-                step(f, Op::Copy(ValueType::Float), &[55, 189], 816);
-                step(f, Op::Copy(ValueType::Float), &[57, 204], 817);
-                step(f, Op::SubV, &[47, 19, 20], 818);
-                step(f, Op::DeltaTime, &[207], 819);
-                step(f, Op::DivF, &[204, 207, 222], 820);
-                step(f, Op::ScaleV, &[20, 222, 48], 821);
-                step(f, Op::AddV, &[47, 48, 49], 822);
-                step(f, Op::AddV, &[19, 48, 50], 823);
-                step(f, Op::SubV, &[45, 50, 48], 824);
-                step(f, Op::FloatLerp, &[156, 158, 189, 216], 825);
-                step(f, Op::SubF, &[158, 216, 203], 826);
-                step(f, Op::ScaleV, &[48, 203, 50], 827);
-                step(f, Op::AddV, &[49, 50, 48], 828);
-                step(f, Op::MulF, &[189, 207, 197], 829);
-                step(f, Op::GreaterF, &[197, 156, 13], 830);
-                step(f, Op::DivF, &[216, 197, 220], 831);
-                step(f, Op::Select(ValueType::Float), &[13, 220, 158, 198], 832);
-                step(f, Op::ScaleV, &[20, 198, 49], 833);
-                step(f, Op::SubV, &[48, 49, 50], 834);
-                step(f, Op::Copy(ValueType::Vec3), &[50, 20], 835);
-                step(f, Op::BreakVector, &[20, 199, 219, 187], 836);
-                step(f, Op::ClampF, &[187, 68, 69, 182], 837);
-                step(f, Op::MakeVector, &[199, 219, 182, 48], 838);
-                step(f, Op::MakeTransform, &[48, 6, 5, 8], 839);
-                step(f, Op::ArraySetAt(Elem::Transform), &[1, 7, 8], 840);
-                step(f, Op::MakeTransform, &[47, 1, 5, 8], 841);
-                step(f, Op::ArraySetAt(Elem::Transform), &[2, 7, 8], 842);
-                step(f, Op::JumpIfFalse, &[12, 844], 843)
+            832 => {
+                step(f, Op::Copy(ValueType::Bool), &[9, 18], 833);
+                step(f, Op::Jump, &[863], 834)
             }
-            843 => {
-                step(f, Op::Copy(ValueType::Bool), &[9, 7], 844);
-                844
+            834 => {
+                step(f, Op::MakeVector, &[158, 158, 64, 21], 835);
+                step(f, Op::AddV, &[30, 21, 31], 836);
+                step(f, Op::SubV, &[30, 21, 32], 837);
+                step(f, Op::SphereTrace, &[31, 32, 63, 17, 33, 34, 204], 838);
+                step(f, Op::SubV, &[33, 30, 34], 839);
+                step(f, Op::DistanceV, &[34, 17, 213], 840);
+                step(f, Op::RotateVector, &[0, 9, 33], 841);
+                step(f, Op::ScaleV, &[33, 68, 34], 842);
+                step(f, Op::AddV, &[31, 34, 35], 843);
+                step(f, Op::AddV, &[32, 34, 36], 844);
+                step(f, Op::SphereTrace, &[35, 36, 63, 13, 37, 38, 189], 845);
+                step(f, Op::SubV, &[37, 30, 39], 846);
+                step(f, Op::ArrayAt(Elem::Vec3), &[1, 7, 40], 847);
+                step(f, Op::DistanceV, &[39, 40, 208], 848);
+                step(f, Op::MaxF, &[213, 208, 185], 849);
+                step(f, Op::ScaleV, &[33, 65, 40], 850);
+                step(f, Op::AddV, &[35, 40, 41], 851);
+                step(f, Op::AddV, &[36, 40, 42], 852);
+                step(f, Op::SphereTrace, &[41, 42, 63, 12, 43, 44, 211], 853);
+                step(f, Op::SubV, &[43, 30, 45], 854);
+                step(f, Op::ArrayAt(Elem::Vec3), &[2, 7, 46], 855);
+                step(f, Op::DistanceV, &[45, 46, 184], 856);
+                step(f, Op::MaxF, &[185, 184, 193], 857);
+                step(f, Op::LessEqualF, &[193, 66, 19], 858);
+                step(f, Op::And, &[17, 13, 20], 859);
+                step(f, Op::And, &[20, 11, 17], 860);
+                step(f, Op::And, &[19, 17, 20], 861);
+                step(f, Op::JumpIfFalse, &[20, 863], 862)
             }
-            844 => {
-                step(f, Op::Copy(ValueType::Bool), &[10, 16], 845);
-                845
+            862 => {
+                step(f, Op::Copy(ValueType::Bool), &[9, 18], 863);
+                863
             }
-            845 => {
-                step(f, Op::JumpIfFalse, &[16, 1050], 846)
+            863 => {
+                step(f, Op::JumpIfFalse, &[18, 897], 864)
             }
-            846 => {
-                step(f, Op::GetTransform, &[34, 2, 9, 6], 847);
-                step(f, Op::BreakTransform, &[6, 21, 3, 16], 848);
-                step(f, Op::BreakVector, &[21, 213, 188, 209], 849);
-                step(f, Op::SubF, &[158, 18, 217], 850);
-                step(f, Op::MulF, &[17, 217, 195], 851);
-                step(f, Op::QuatFromAxisAngle, &[9, 195, 4], 852);
-                step(f, Op::GetTransform, &[0, 2, 9, 4], 853);
-                step(f, Op::BreakTransform, &[4, 22, 5, 23], 854);
-                step(f, Op::SubV, &[22, 21, 24], 855);
-                step(f, Op::BreakVector, &[24, 218, 181, 212], 856);
-                step(f, Op::MakeVector, &[218, 181, 156, 25], 857);
-                step(f, Op::RotateVector, &[4, 25, 26], 858);
-                step(f, Op::BreakVector, &[26, 186, 190, 211], 859);
-                step(f, Op::MulF, &[52, 18, 183], 860);
-                step(f, Op::Equals(Elem::Int), &[7, 2, 15], 861);
-                step(f, Op::Select(ValueType::Float), &[15, 158, 160, 205], 862);
-                step(f, Op::MulF, &[183, 205, 210], 863);
-                step(f, Op::AddF, &[186, 210, 214], 864);
-                step(f, Op::AddF, &[213, 214, 215], 865);
-                step(f, Op::AddF, &[188, 190, 221], 866);
-                step(f, Op::BreakVector, &[22, 202, 206, 180], 867);
-                step(f, Op::SubF, &[180, 58, 185], 868);
-                step(f, Op::MakeVector, &[215, 221, 185, 27], 869);
-                step(f, Op::SubF, &[158, 192, 200], 870);
-                step(f, Op::MaxF, &[200, 156, 208], 871);
-                step(f, Op::MulF, &[13, 10, 196], 872);
-                step(f, Op::MulF, &[208, 196, 201], 873);
-                step(f, Op::ScaleV, &[2, 201, 49], 874);
-                step(f, Op::AddV, &[27, 49, 50], 875);
-                step(f, Op::MulF, &[9, 157, 191], 876);
-                step(f, Op::ScaleV, &[2, 191, 28], 877);
-                step(f, Op::AddV, &[50, 28, 20], 878);
-                step(f, Op::RotateVector, &[0, 8, 32], 879);
-                step(f, Op::Copy(ValueType::Float), &[163, 194], 880);
-                step(f, Op::Copy(ValueType::Vec3), &[6, 48], 881);
-                step(f, Op::Copy(ValueType::Vec3), &[9, 47], 882);
-                step(f, Op::Copy(ValueType::Bool), &[10, 19], 883);
-                step(f, Op::Copy(ValueType::Float), &[163, 204], 884);
-                step(f, Op::Copy(ValueType::Vec3), &[6, 50], 885);
-                step(f, Op::MulI, &[0, 0, 8], 886);
-                step(f, Op::Copy(ValueType::Int), &[8, 9], 887);
-                step(f, Op::Copy(ValueType::Int), &[2, 6], 888);
-                step(f, Op::SubI, &[0, 3, 8], 889);
-                step(f, Op::DivI, &[8, 4, 11], 890);
-                step(f, Op::MakeVector, &[156, 156, 63, 51], 891);
-                step(f, Op::ScaleV, &[32, 67, 52], 892);
-                892
+            864 => {
+                step(f, Op::ArrayAt(Elem::Transform), &[1, 7, 7], 865);
+                step(f, Op::BreakTransform, &[7, 46, 6, 47], 866);
+                step(f, Op::AddV, &[30, 17, 48], 867);
+                step(f, Op::Copy(ValueType::Float), &[56, 195], 868);
+                step(f, Op::Copy(ValueType::Float), &[58, 201], 869);
+                step(f, Op::SubV, &[48, 20, 17], 870);
+                step(f, Op::DeltaTime, &[183], 871);
+                step(f, Op::DivF, &[201, 183, 200], 872);
+                step(f, Op::ScaleV, &[17, 200, 49], 873);
+                step(f, Op::AddV, &[48, 49, 50], 874);
+                step(f, Op::AddV, &[20, 49, 51], 875);
+                step(f, Op::SubV, &[46, 51, 49], 876);
+                step(f, Op::FloatLerp, &[158, 160, 195, 188], 877);
+                step(f, Op::SubF, &[160, 188, 202], 878);
+                step(f, Op::ScaleV, &[49, 202, 51], 879);
+                step(f, Op::AddV, &[50, 51, 49], 880);
+                step(f, Op::MulF, &[195, 183, 194], 881);
+                step(f, Op::GreaterF, &[194, 158, 17], 882);
+                step(f, Op::DivF, &[188, 194, 196], 883);
+                step(f, Op::Select(ValueType::Float), &[17, 196, 160, 215], 884);
+                step(f, Op::ScaleV, &[17, 215, 50], 885);
+                step(f, Op::SubV, &[49, 50, 51], 886);
+                step(f, Op::Copy(ValueType::Vec3), &[51, 17], 887);
+                step(f, Op::BreakVector, &[17, 190, 191, 192], 888);
+                step(f, Op::ClampF, &[192, 69, 70, 204], 889);
+                step(f, Op::MakeVector, &[190, 191, 204, 49], 890);
+                step(f, Op::MakeTransform, &[49, 6, 6, 8], 891);
+                step(f, Op::ArraySetAt(Elem::Transform), &[1, 7, 8], 892);
+                step(f, Op::MakeTransform, &[48, 1, 6, 8], 893);
+                step(f, Op::ArraySetAt(Elem::Transform), &[2, 7, 8], 894);
+                step(f, Op::JumpIfFalse, &[11, 896], 895)
             }
-            892 => {
-                step(f, Op::ForNext, &[6, 9, 8, 939], 893)
+            895 => {
+                step(f, Op::Copy(ValueType::Bool), &[9, 7], 896);
+                896
             }
-            893 => {
-                step(f, Op::ModI, &[8, 0, 12], 894);
-                step(f, Op::ToFloat, &[12, 222], 895);
-                step(f, Op::MulF, &[222, 64, 203], 896);
-                step(f, Op::MulF, &[203, 205, 189], 897);
-                step(f, Op::MakeVector, &[189, 156, 156, 53], 898);
-                step(f, Op::DivI, &[8, 0, 12], 899);
-                step(f, Op::SubI, &[12, 11, 8], 900);
-                step(f, Op::ToFloat, &[8, 207], 901);
-                step(f, Op::MulF, &[207, 64, 197], 902);
-                step(f, Op::ScaleV, &[32, 197, 54], 903);
-                step(f, Op::AddV, &[53, 54, 55], 904);
-                step(f, Op::AddV, &[20, 55, 53], 905);
-                step(f, Op::AddV, &[53, 51, 54], 906);
-                step(f, Op::SubV, &[53, 51, 56], 907);
-                step(f, Op::SphereTrace, &[54, 56, 62, 20, 53, 57, 216], 908);
-                step(f, Op::BreakVector, &[53, 220, 198, 187], 909);
-                step(f, Op::AddV, &[54, 52, 58], 910);
-                step(f, Op::AddV, &[56, 52, 54], 911);
-                step(f, Op::SphereTrace, &[58, 54, 62, 14, 56, 59, 182], 912);
-                step(f, Op::BreakVector, &[56, 199, 219, 222], 913);
-                step(f, Op::SubF, &[187, 222, 203], 914);
-                step(f, Op::AbsF, &[203, 189], 915);
-                step(f, Op::Select(ValueType::Float), &[20, 156, 158, 207], 916);
-                step(f, Op::AddF, &[189, 207, 197], 917);
-                step(f, Op::LengthV, &[55, 216], 918);
-                step(f, Op::RemapF, &[216, 156, 169, 156, 158, 9, 198], 919);
-                step(f, Op::MinF, &[187, 222, 220], 920);
-                step(f, Op::RemapF, &[220, 170, 169, 158, 157, 9, 182], 921);
-                step(f, Op::AddF, &[198, 182, 199], 922);
-                step(f, Op::AddF, &[197, 199, 219], 923);
-                step(f, Op::LessF, &[219, 194, 13], 924);
-                step(f, Op::And, &[20, 13, 12], 925);
-                step(f, Op::JumpIfFalse, &[12, 933], 926)
+            896 => {
+                step(f, Op::Copy(ValueType::Bool), &[10, 16], 897);
+                897
             }
-            926 => {
-                step(f, Op::Copy(ValueType::Float), &[194, 204], 927);
-                step(f, Op::Copy(ValueType::Vec3), &[48, 50], 928);
-                step(f, Op::Copy(ValueType::Float), &[219, 194], 929);
-                step(f, Op::Copy(ValueType::Vec3), &[53, 48], 930);
-                step(f, Op::Copy(ValueType::Vec3), &[57, 47], 931);
-                step(f, Op::Copy(ValueType::Bool), &[9, 19], 932);
-                step(f, Op::Jump, &[938], 933)
+            897 => {
+                step(f, Op::JumpIfFalse, &[16, 1102], 898)
             }
-            933 => {
-                step(f, Op::LessF, &[219, 204, 16], 934);
-                step(f, Op::And, &[20, 16, 15], 935);
-                step(f, Op::JumpIfFalse, &[15, 938], 936)
+            898 => {
+                step(f, Op::GetTransform, &[34, 2, 9, 6], 899);
+                step(f, Op::BreakTransform, &[6, 18, 3, 22], 900);
+                step(f, Op::BreakVector, &[18, 203, 218, 182], 901);
+                step(f, Op::SubF, &[160, 18, 209], 902);
+                step(f, Op::MulF, &[17, 209, 212], 903);
+                step(f, Op::QuatFromAxisAngle, &[10, 212, 4], 904);
+                step(f, Op::GetTransform, &[0, 2, 9, 4], 905);
+                step(f, Op::BreakTransform, &[4, 23, 5, 24], 906);
+                step(f, Op::SubV, &[23, 18, 25], 907);
+                step(f, Op::BreakVector, &[25, 206, 205, 223], 908);
+                step(f, Op::MakeVector, &[206, 205, 158, 26], 909);
+                step(f, Op::RotateVector, &[4, 26, 27], 910);
+                step(f, Op::BreakVector, &[27, 214, 198, 216], 911);
+                step(f, Op::MulF, &[53, 18, 207], 912);
+                step(f, Op::Equals(Elem::Int), &[7, 2, 14], 913);
+                step(f, Op::Select(ValueType::Float), &[14, 160, 162, 210], 914);
+                step(f, Op::MulF, &[207, 210, 217], 915);
+                step(f, Op::AddF, &[214, 217, 221], 916);
+                step(f, Op::AddF, &[203, 221, 197], 917);
+                step(f, Op::AddF, &[218, 198, 222], 918);
+                step(f, Op::BreakVector, &[23, 219, 220, 224], 919);
+                step(f, Op::SubF, &[224, 59, 186], 920);
+                step(f, Op::MakeVector, &[197, 222, 186, 28], 921);
+                step(f, Op::SubF, &[160, 199, 208], 922);
+                step(f, Op::MaxF, &[208, 158, 213], 923);
+                step(f, Op::MulF, &[13, 10, 184], 924);
+                step(f, Op::MulF, &[213, 184, 185], 925);
+                step(f, Op::ScaleV, &[2, 185, 50], 926);
+                step(f, Op::AddV, &[28, 50, 51], 927);
+                step(f, Op::MulF, &[9, 159, 187], 928);
+                step(f, Op::ScaleV, &[2, 187, 29], 929);
+                step(f, Op::AddV, &[51, 29, 17], 930);
+                step(f, Op::RotateVector, &[0, 9, 33], 931);
+                step(f, Op::Copy(ValueType::Float), &[165, 193], 932);
+                step(f, Op::Copy(ValueType::Vec3), &[7, 49], 933);
+                step(f, Op::Copy(ValueType::Vec3), &[10, 48], 934);
+                step(f, Op::Copy(ValueType::Bool), &[10, 19], 935);
+                step(f, Op::Copy(ValueType::Float), &[165, 201], 936);
+                step(f, Op::Copy(ValueType::Vec3), &[7, 51], 937);
+                step(f, Op::MulI, &[0, 0, 6], 938);
+                step(f, Op::Copy(ValueType::Int), &[6, 8], 939);
+                step(f, Op::Copy(ValueType::Int), &[2, 6], 940);
+                step(f, Op::SubI, &[0, 3, 9], 941);
+                step(f, Op::DivI, &[9, 4, 10], 942);
+                step(f, Op::MakeVector, &[158, 158, 64, 52], 943);
+                step(f, Op::ScaleV, &[33, 68, 53], 944);
+                944
             }
-            936 => {
-                step(f, Op::Copy(ValueType::Float), &[219, 204], 937);
-                step(f, Op::Copy(ValueType::Vec3), &[53, 50], 938);
-                938
+            944 => {
+                step(f, Op::ForNext, &[6, 8, 9, 991], 945)
             }
-            938 => {
-                step(f, Op::Jump, &[892], 939)
+            945 => {
+                step(f, Op::ModI, &[9, 0, 6], 946);
+                step(f, Op::ToFloat, &[6, 200], 947);
+                step(f, Op::MulF, &[200, 65, 202], 948);
+                step(f, Op::MulF, &[202, 210, 183], 949);
+                step(f, Op::MakeVector, &[183, 158, 158, 54], 950);
+                step(f, Op::DivI, &[9, 0, 8], 951);
+                step(f, Op::SubI, &[8, 10, 6], 952);
+                step(f, Op::ToFloat, &[6, 195], 953);
+                step(f, Op::MulF, &[195, 65, 188], 954);
+                step(f, Op::ScaleV, &[33, 188, 55], 955);
+                step(f, Op::AddV, &[54, 55, 56], 956);
+                step(f, Op::AddV, &[17, 56, 54], 957);
+                step(f, Op::AddV, &[54, 52, 55], 958);
+                step(f, Op::SubV, &[54, 52, 17], 959);
+                step(f, Op::SphereTrace, &[55, 17, 63, 20, 52, 54, 194], 960);
+                step(f, Op::BreakVector, &[52, 196, 215, 192], 961);
+                step(f, Op::AddV, &[55, 53, 57], 962);
+                step(f, Op::AddV, &[17, 53, 55], 963);
+                step(f, Op::SphereTrace, &[57, 55, 63, 18, 17, 53, 190], 964);
+                step(f, Op::BreakVector, &[17, 191, 204, 200], 965);
+                step(f, Op::SubF, &[192, 200, 202], 966);
+                step(f, Op::AbsF, &[202, 183], 967);
+                step(f, Op::Select(ValueType::Float), &[20, 158, 160, 195], 968);
+                step(f, Op::AddF, &[183, 195, 188], 969);
+                step(f, Op::LengthV, &[56, 194], 970);
+                step(f, Op::RemapF, &[194, 158, 171, 158, 160, 9, 196], 971);
+                step(f, Op::MinF, &[192, 200, 215], 972);
+                step(f, Op::RemapF, &[215, 172, 171, 160, 159, 9, 190], 973);
+                step(f, Op::AddF, &[196, 190, 191], 974);
+                step(f, Op::AddF, &[188, 191, 204], 975);
+                step(f, Op::LessF, &[204, 193, 17], 976);
+                step(f, Op::And, &[20, 17, 11], 977);
+                step(f, Op::JumpIfFalse, &[11, 985], 978)
             }
-            939 => {
-                step(f, Op::JumpIfFalse, &[8, 941], 940)
+            978 => {
+                step(f, Op::Copy(ValueType::Float), &[193, 201], 979);
+                step(f, Op::Copy(ValueType::Vec3), &[49, 51], 980);
+                step(f, Op::Copy(ValueType::Float), &[204, 193], 981);
+                step(f, Op::Copy(ValueType::Vec3), &[52, 49], 982);
+                step(f, Op::Copy(ValueType::Vec3), &[54, 48], 983);
+                step(f, Op::Copy(ValueType::Bool), &[9, 19], 984);
+                step(f, Op::Jump, &[990], 985)
             }
-            940 => {
-                step(f, Op::DrawSphere, &[48, 62, 8], 941);
-                941
+            985 => {
+                step(f, Op::LessF, &[204, 201, 16], 986);
+                step(f, Op::And, &[20, 16, 14], 987);
+                step(f, Op::JumpIfFalse, &[14, 990], 988)
             }
-            941 => {
-                step(f, Op::GreaterF, &[66, 156, 14], 942);
-                step(f, Op::SubF, &[194, 204, 203], 943);
-                step(f, Op::DivF, &[203, 66, 189], 944);
-                step(f, Op::PowF, &[171, 189, 207], 945);
-                step(f, Op::Select(ValueType::Float), &[14, 207, 156, 216], 946);
-                step(f, Op::ScaleV, &[50, 216, 54], 947);
-                step(f, Op::AddV, &[48, 54, 58], 948);
-                step(f, Op::AddF, &[216, 158, 187], 949);
-                step(f, Op::DivF, &[158, 187, 222], 950);
-                step(f, Op::ScaleV, &[58, 222, 59], 951);
-                step(f, Op::Copy(ValueType::Vec3), &[59, 56], 952);
-                step(f, Op::Copy(ValueType::Vec3), &[47, 55], 953);
-                step(f, Op::Copy(ValueType::Bool), &[19, 13], 954);
-                step(f, Op::ArrayAt(Elem::Transform), &[1, 7, 7], 955);
-                step(f, Op::BreakTransform, &[7, 45, 6, 46], 956);
-                step(f, Op::ArrayAt(Elem::Float), &[2, 7, 192], 957);
-                step(f, Op::SubF, &[158, 192, 200], 958);
-                step(f, Op::MaxF, &[200, 156, 208], 959);
-                step(f, Op::MulF, &[13, 10, 196], 960);
-                step(f, Op::MulF, &[208, 196, 201], 961);
-                step(f, Op::ScaleV, &[2, 201, 49], 962);
-                step(f, Op::SubV, &[56, 49, 57], 963);
-                step(f, Op::Select(ValueType::Vec3), &[13, 57, 45, 53], 964);
-                step(f, Op::ArrayAt(Elem::Transform), &[2, 7, 5], 965);
-                step(f, Op::BreakTransform, &[5, 19, 2, 18], 966);
-                step(f, Op::Copy(ValueType::Float), &[55, 220], 967);
-                step(f, Op::Copy(ValueType::Float), &[57, 182], 968);
-                step(f, Op::SubV, &[53, 19, 20], 969);
-                step(f, Op::DeltaTime, &[198], 970);
-                step(f, Op::DivF, &[182, 198, 197], 971);
-                step(f, Op::ScaleV, &[20, 197, 51], 972);
-                step(f, Op::AddV, &[53, 51, 52], 973);
-                step(f, Op::AddV, &[19, 51, 50], 974);
-                step(f, Op::SubV, &[45, 50, 48], 975);
-                step(f, Op::FloatLerp, &[156, 158, 220, 199], 976);
-                step(f, Op::SubF, &[158, 199, 219], 977);
-                step(f, Op::ScaleV, &[48, 219, 54], 978);
-                step(f, Op::AddV, &[52, 54, 58], 979);
-                step(f, Op::MulF, &[220, 198, 194], 980);
-                step(f, Op::GreaterF, &[194, 156, 12], 981);
-                step(f, Op::DivF, &[199, 194, 204], 982);
-                step(f, Op::Select(ValueType::Float), &[12, 204, 158, 203], 983);
-                step(f, Op::ScaleV, &[20, 203, 59], 984);
-                step(f, Op::SubV, &[58, 59, 47], 985);
-                step(f, Op::Copy(ValueType::Vec3), &[47, 49], 986);
-                step(f, Op::BreakVector, &[49, 189, 207, 216], 987);
-                step(f, Op::ClampF, &[216, 68, 69, 187], 988);
-                step(f, Op::MakeVector, &[189, 207, 187, 56], 989);
-                step(f, Op::RotationFromNormal, &[55, 222, 200, 2], 990);
-                step(f, Op::PerFootRotationFactor, &[17, 117, 118, 196], 991);
-                step(f, Op::MulF, &[17, 196, 208], 992);
-                step(f, Op::SubF, &[158, 18, 217], 993);
-                step(f, Op::MulF, &[208, 217, 201], 994);
-                step(f, Op::QuatFromAxisAngle, &[9, 201, 7], 995);
-                step(f, Op::MulQ, &[2, 7, 8], 996);
-                step(f, Op::Select(ValueType::Quat), &[13, 8, 6, 2], 997);
-                step(f, Op::MakeTransform, &[56, 2, 5, 8], 998);
-                step(f, Op::ArraySetAt(Elem::Transform), &[1, 7, 8], 999);
-                step(f, Op::ArrayAt(Elem::Transform), &[1, 7, 7], 1000);
-                step(f, Op::BreakTransform, &[7, 45, 6, 46], 1001);
-                step(f, Op::Select(ValueType::Vec3), &[13, 57, 45, 53], 1002);
-                step(f, Op::MakeTransform, &[53, 1, 5, 5], 1003);
-                step(f, Op::ArraySetAt(Elem::Transform), &[2, 7, 5], 1004);
-                step(f, Op::GetTransform, &[34, 2, 9, 6], 1005);
-                step(f, Op::BreakTransform, &[6, 21, 3, 16], 1006);
-                step(f, Op::BreakVector, &[21, 213, 188, 209], 1007);
-                step(f, Op::MulF, &[17, 217, 195], 1008);
-                step(f, Op::QuatFromAxisAngle, &[9, 195, 4], 1009);
-                step(f, Op::GetTransform, &[0, 2, 9, 4], 1010);
-                step(f, Op::BreakTransform, &[4, 22, 5, 23], 1011);
-                step(f, Op::SubV, &[22, 21, 24], 1012);
-                step(f, Op::BreakVector, &[24, 218, 181, 212], 1013);
-                step(f, Op::MakeVector, &[218, 181, 156, 25], 1014);
-                step(f, Op::RotateVector, &[4, 25, 26], 1015);
-                step(f, Op::BreakVector, &[26, 186, 190, 211], 1016);
-                step(f, Op::MulF, &[52, 18, 183], 1017);
-                step(f, Op::MulF, &[183, 205, 210], 1018);
-                step(f, Op::AddF, &[186, 210, 214], 1019);
-                step(f, Op::AddF, &[213, 214, 215], 1020);
-                step(f, Op::AddF, &[188, 190, 221], 1021);
-                step(f, Op::BreakVector, &[22, 202, 206, 180], 1022);
-                step(f, Op::SubF, &[180, 58, 185], 1023);
-                step(f, Op::MakeVector, &[215, 221, 185, 27], 1024);
-                step(f, Op::MulF, &[9, 157, 191], 1025);
-                step(f, Op::ScaleV, &[2, 191, 28], 1026);
-                step(f, Op::AddV, &[27, 28, 29], 1027);
-                step(f, Op::SubV, &[53, 29, 18], 1028);
-                step(f, Op::ArraySetAt(Elem::Vec3), &[0, 7, 18], 1029);
-                step(f, Op::ArraySetAt(Elem::Bool), &[1, 7, 13], 1030);
-                step(f, Op::GreaterEqualF, &[192, 158, 17], 1031);
-                step(f, Op::JumpIfFalse, &[17, 1048], 1032)
+            988 => {
+                step(f, Op::Copy(ValueType::Float), &[204, 201], 989);
+                step(f, Op::Copy(ValueType::Vec3), &[52, 51], 990);
+                990
             }
-            1032 => {
-                step(f, Op::MakeVector, &[156, 156, 63, 17], 1033);
-                step(f, Op::AddV, &[29, 17, 30], 1034);
-                step(f, Op::RotateVector, &[0, 8, 32], 1035);
-                step(f, Op::ScaleV, &[32, 67, 33], 1036);
-                step(f, Op::AddV, &[30, 33, 34], 1037);
-                step(f, Op::SubV, &[29, 17, 31], 1038);
-                step(f, Op::AddV, &[31, 33, 35], 1039);
-                step(f, Op::SphereTrace, &[34, 35, 62, 18, 36, 37, 184], 1040);
-                step(f, Op::SubV, &[36, 29, 38], 1041);
-                step(f, Op::ArraySetAt(Elem::Vec3), &[1, 7, 38], 1042);
-                step(f, Op::ScaleV, &[32, 64, 39], 1043);
-                step(f, Op::AddV, &[34, 39, 40], 1044);
-                step(f, Op::AddV, &[35, 39, 41], 1045);
-                step(f, Op::SphereTrace, &[40, 41, 62, 11, 42, 43, 193], 1046);
-                step(f, Op::SubV, &[42, 29, 44], 1047);
-                step(f, Op::ArraySetAt(Elem::Vec3), &[2, 7, 44], 1048);
-                1048
+            990 => {
+                step(f, Op::Jump, &[944], 991)
             }
-            1048 => {
-                step(f, Op::JumpIfFalse, &[13, 1050], 1049)
+            991 => {
+                step(f, Op::JumpIfFalse, &[8, 993], 992)
             }
-            1049 => {
-                step(f, Op::Copy(ValueType::Bool), &[9, 7], 1050);
-                1050
+            992 => {
+                step(f, Op::DrawSphere, &[49, 63, 9], 993);
+                993
             }
-            1050 => {
-                step(f, Op::ArrayAt(Elem::Float), &[4, 7, 182], 1051);
-                step(f, Op::FloatLerp, &[182, 156, 110, 197], 1052);
-                step(f, Op::ArrayAt(Elem::Bool), &[0, 7, 16], 1053);
-                step(f, Op::ArrayAt(Elem::Float), &[2, 7, 219], 1054);
-                step(f, Op::GreaterEqualF, &[219, 158, 20], 1055);
-                step(f, Op::And, &[16, 20, 15], 1056);
-                step(f, Op::ArrayAt(Elem::Transform), &[0, 7, 8], 1057);
-                step(f, Op::GreaterF, &[26, 156, 14], 1058);
-                step(f, Op::InterpolateTransform, &[2, 3, 27, 7], 1059);
-                step(f, Op::Select(ValueType::Transform), &[14, 7, 2, 5], 1060);
-                step(f, Op::MakeAbsolute, &[8, 5, 6], 1061);
-                step(f, Op::BreakTransform, &[6, 19, 7, 51], 1062);
-                step(f, Op::RotateVector, &[7, 8, 50], 1063);
-                step(f, Op::SubF, &[158, 18, 198], 1064);
-                step(f, Op::MulF, &[17, 198, 220], 1065);
-                step(f, Op::LimitRotationAroundZ, &[7, 220, 107, 8], 1066);
-                step(f, Op::RotateVector, &[8, 8, 48], 1067);
-                step(f, Op::CrossV, &[50, 48, 52], 1068);
-                step(f, Op::BreakVector, &[52, 194, 199, 204], 1069);
-                step(f, Op::DotV, &[50, 48, 203], 1070);
-                step(f, Op::Atan2F, &[204, 203, 216], 1071);
-                step(f, Op::AbsF, &[216, 187], 1072);
-                step(f, Op::Select(ValueType::Float), &[15, 187, 156, 189], 1073);
-                step(f, Op::AddF, &[197, 189, 207], 1074);
-                step(f, Op::ArraySetAt(Elem::Float), &[4, 7, 207], 1075);
-                step(f, Op::ArrayAt(Elem::Transform), &[8, 7, 4], 1076);
-                step(f, Op::BreakTransform, &[4, 54, 2, 20], 1077);
-                step(f, Op::AddF, &[72, 73, 200], 1078);
-                step(f, Op::ClampSpatially, &[19, 54, 156, 200, 58], 1079);
-                step(f, Op::MakeTransform, &[58, 8, 5, 8], 1080);
-                step(f, Op::ArraySetAt(Elem::Transform), &[0, 7, 8], 1081);
-                step(f, Op::JumpIfFalse, &[16, 1158], 1082)
-            }
-            1082 => {
-                step(f, Op::JumpIfFalse, &[20, 1084], 1083)
-            }
-            1083 => {
-                step(f, Op::Jump, &[1157], 1084)
+            993 => {
+                step(f, Op::GreaterF, &[67, 158, 18], 994);
+                step(f, Op::SubF, &[193, 201, 202], 995);
+                step(f, Op::DivF, &[202, 67, 183], 996);
+                step(f, Op::PowF, &[173, 183, 195], 997);
+                step(f, Op::Select(ValueType::Float), &[18, 195, 158, 194], 998);
+                step(f, Op::ScaleV, &[51, 194, 53], 999);
+                step(f, Op::AddV, &[49, 53, 55], 1000);
+                step(f, Op::AddF, &[194, 160, 192], 1001);
+                step(f, Op::DivF, &[160, 192, 200], 1002);
+                step(f, Op::ScaleV, &[55, 200, 57], 1003);
+                step(f, Op::Copy(ValueType::Vec3), &[57, 17], 1004);
+                step(f, Op::Copy(ValueType::Vec3), &[48, 56], 1005);
+                step(f, Op::Copy(ValueType::Bool), &[19, 17], 1006);
+                step(f, Op::ArrayAt(Elem::Transform), &[1, 7, 7], 1007);
+                step(f, Op::BreakTransform, &[7, 46, 6, 47], 1008);
+                step(f, Op::ArrayAt(Elem::Float), &[2, 7, 199], 1009);
+                step(f, Op::SubF, &[160, 199, 208], 1010);
+                step(f, Op::MaxF, &[208, 158, 213], 1011);
+                step(f, Op::MulF, &[13, 10, 184], 1012);
+                step(f, Op::MulF, &[213, 184, 185], 1013);
+                step(f, Op::ScaleV, &[2, 185, 50], 1014);
+                step(f, Op::SubV, &[17, 50, 54], 1015);
+                step(f, Op::Select(ValueType::Vec3), &[17, 54, 46, 52], 1016);
+                step(f, Op::ArrayAt(Elem::Transform), &[2, 7, 5], 1017);
+                step(f, Op::BreakTransform, &[5, 20, 2, 19], 1018);
+                step(f, Op::Copy(ValueType::Float), &[56, 215], 1019);
+                step(f, Op::Copy(ValueType::Float), &[58, 190], 1020);
+                step(f, Op::SubV, &[52, 20, 51], 1021);
+                step(f, Op::DeltaTime, &[196], 1022);
+                step(f, Op::DivF, &[190, 196, 188], 1023);
+                step(f, Op::ScaleV, &[51, 188, 49], 1024);
+                step(f, Op::AddV, &[52, 49, 53], 1025);
+                step(f, Op::AddV, &[20, 49, 55], 1026);
+                step(f, Op::SubV, &[46, 55, 57], 1027);
+                step(f, Op::FloatLerp, &[158, 160, 215, 191], 1028);
+                step(f, Op::SubF, &[160, 191, 204], 1029);
+                step(f, Op::ScaleV, &[57, 204, 48], 1030);
+                step(f, Op::AddV, &[53, 48, 17], 1031);
+                step(f, Op::MulF, &[215, 196, 193], 1032);
+                step(f, Op::GreaterF, &[193, 158, 11], 1033);
+                step(f, Op::DivF, &[191, 193, 201], 1034);
+                step(f, Op::Select(ValueType::Float), &[11, 201, 160, 202], 1035);
+                step(f, Op::ScaleV, &[51, 202, 50], 1036);
+                step(f, Op::SubV, &[17, 50, 19], 1037);
+                step(f, Op::Copy(ValueType::Vec3), &[19, 20], 1038);
+                step(f, Op::BreakVector, &[20, 183, 195, 194], 1039);
+                step(f, Op::ClampF, &[194, 69, 70, 192], 1040);
+                step(f, Op::MakeVector, &[183, 195, 192, 49], 1041);
+                step(f, Op::RotationFromNormal, &[56, 200, 208, 2], 1042);
+                step(f, Op::PerFootRotationFactor, &[17, 119, 120, 184], 1043);
+                step(f, Op::MulF, &[17, 184, 213], 1044);
+                step(f, Op::SubF, &[160, 18, 209], 1045);
+                step(f, Op::MulF, &[213, 209, 185], 1046);
+                step(f, Op::QuatFromAxisAngle, &[10, 185, 7], 1047);
+                step(f, Op::MulQ, &[2, 7, 8], 1048);
+                step(f, Op::Select(ValueType::Quat), &[17, 8, 6, 2], 1049);
+                step(f, Op::MakeTransform, &[49, 2, 6, 8], 1050);
+                step(f, Op::ArraySetAt(Elem::Transform), &[1, 7, 8], 1051);
+                step(f, Op::ArrayAt(Elem::Transform), &[1, 7, 7], 1052);
+                step(f, Op::BreakTransform, &[7, 46, 6, 47], 1053);
+                step(f, Op::Select(ValueType::Vec3), &[17, 54, 46, 52], 1054);
+                step(f, Op::MakeTransform, &[52, 1, 6, 5], 1055);
+                step(f, Op::ArraySetAt(Elem::Transform), &[2, 7, 5], 1056);
+                step(f, Op::GetTransform, &[34, 2, 9, 6], 1057);
+                step(f, Op::BreakTransform, &[6, 18, 3, 22], 1058);
+                step(f, Op::BreakVector, &[18, 203, 218, 182], 1059);
+                step(f, Op::MulF, &[17, 209, 212], 1060);
+                step(f, Op::QuatFromAxisAngle, &[10, 212, 4], 1061);
+                step(f, Op::GetTransform, &[0, 2, 9, 4], 1062);
+                step(f, Op::BreakTransform, &[4, 23, 5, 24], 1063);
+                step(f, Op::SubV, &[23, 18, 25], 1064);
+                step(f, Op::BreakVector, &[25, 206, 205, 223], 1065);
+                step(f, Op::MakeVector, &[206, 205, 158, 26], 1066);
+                step(f, Op::RotateVector, &[4, 26, 27], 1067);
+                step(f, Op::BreakVector, &[27, 214, 198, 216], 1068);
+                step(f, Op::MulF, &[53, 18, 207], 1069);
+                step(f, Op::MulF, &[207, 210, 217], 1070);
+                step(f, Op::AddF, &[214, 217, 221], 1071);
+                step(f, Op::AddF, &[203, 221, 197], 1072);
+                step(f, Op::AddF, &[218, 198, 222], 1073);
+                step(f, Op::BreakVector, &[23, 219, 220, 224], 1074);
+                step(f, Op::SubF, &[224, 59, 186], 1075);
+                step(f, Op::MakeVector, &[197, 222, 186, 28], 1076);
+                step(f, Op::MulF, &[9, 159, 187], 1077);
+                step(f, Op::ScaleV, &[2, 187, 29], 1078);
+                step(f, Op::AddV, &[28, 29, 30], 1079);
+                step(f, Op::SubV, &[52, 30, 55], 1080);
+                step(f, Op::ArraySetAt(Elem::Vec3), &[0, 7, 55], 1081);
+                step(f, Op::ArraySetAt(Elem::Bool), &[1, 7, 17], 1082);
+                step(f, Op::GreaterEqualF, &[199, 160, 15], 1083);
+                step(f, Op::JumpIfFalse, &[15, 1100], 1084)
             }
             1084 => {
-                step(f, Op::ArrayAt(Elem::Transform), &[1, 7, 6], 1085);
-                step(f, Op::BreakTransform, &[6, 59, 6, 47], 1086);
-                step(f, Op::SubF, &[158, 219, 222], 1087);
-                step(f, Op::MulF, &[13, 10, 196], 1088);
-                step(f, Op::MulF, &[222, 196, 208], 1089);
-                step(f, Op::ScaleV, &[2, 208, 49], 1090);
-                step(f, Op::AddV, &[59, 49, 55], 1091);
-                step(f, Op::Equals(Elem::Int), &[7, 2, 19], 1092);
-                step(f, Op::Select(ValueType::Int), &[19, 3, 2, 12], 1093);
-                step(f, Op::ArrayAt(Elem::Bool), &[0, 12, 12], 1094);
-                step(f, Op::ArrayAt(Elem::Transform), &[0, 12, 4], 1095);
-                step(f, Op::BreakTransform, &[4, 56, 3, 46], 1096);
-                step(f, Op::ArrayAt(Elem::Transform), &[3, 12, 8], 1097);
-                step(f, Op::BreakTransform, &[8, 45, 5, 57], 1098);
-                step(f, Op::LessEqualF, &[93, 156, 17], 1099);
-                step(f, Op::ArrayAt(Elem::Float), &[2, 12, 201], 1100);
-                step(f, Op::SmoothStepF, &[201, 156, 93, 209], 1101);
-                step(f, Op::Select(ValueType::Float), &[17, 158, 209, 217], 1102);
-                step(f, Op::LerpV, &[56, 45, 217, 16], 1103);
-                step(f, Op::MakeTransform, &[16, 1, 5, 9], 1104);
-                step(f, Op::Select(ValueType::Transform), &[12, 4, 9, 10], 1105);
-                step(f, Op::MakeAbsolute, &[10, 5, 11], 1106);
-                step(f, Op::Select(ValueType::Transform), &[19, 11, 10, 12], 1107);
-                step(f, Op::BreakTransform, &[12, 23, 4, 21], 1108);
-                step(f, Op::SubF, &[158, 19, 195], 1109);
-                step(f, Op::MulF, &[198, 195, 212], 1110);
-                step(f, Op::MulF, &[17, 212, 181], 1111);
-                step(f, Op::FootAvoidance, &[55, 23, 181, 19, 89, 24], 1112);
-                step(f, Op::RemapF, &[18, 92, 158, 156, 158, 9, 218], 1113);
-                step(f, Op::LerpV, &[55, 24, 218, 25], 1114);
-                step(f, Op::FootAvoidance, &[25, 23, 20, 19, 115, 26], 1115);
-                step(f, Op::LerpV, &[25, 26, 19, 22], 1116);
-                step(f, Op::MakeTransform, &[22, 6, 5, 13], 1117);
-                step(f, Op::BreakTransform, &[13, 27, 7, 28], 1118);
-                step(f, Op::MakeVector, &[156, 156, 63, 53], 1119);
-                step(f, Op::AddV, &[27, 53, 18], 1120);
-                step(f, Op::SubV, &[27, 53, 30], 1121);
-                step(f, Op::LineTrace, &[18, 30, 18, 17, 31, 211], 1122);
-                step(f, Op::RotateVector, &[7, 9, 33], 1123);
-                step(f, Op::FindQuatBetween, &[33, 31, 2], 1124);
-                step(f, Op::MulQ, &[2, 7, 8], 1125);
-                step(f, Op::MulF, &[61, 60, 183], 1126);
-                step(f, Op::AddF, &[183, 71, 205], 1127);
-                step(f, Op::NegF, &[205, 186], 1128);
-                step(f, Op::MakeVector, &[156, 186, 156, 37], 1129);
-                step(f, Op::RotateVector, &[8, 37, 36], 1130);
-                step(f, Op::AddV, &[17, 36, 38], 1131);
-                step(f, Op::AddV, &[38, 53, 32], 1132);
-                step(f, Op::SubV, &[38, 53, 34], 1133);
-                step(f, Op::LineTrace, &[32, 34, 11, 35, 39, 210], 1134);
-                step(f, Op::BreakVector, &[35, 213, 214, 188], 1135);
-                step(f, Op::BreakVector, &[38, 190, 202, 206], 1136);
-                step(f, Op::SubF, &[188, 206, 180], 1137);
-                step(f, Op::Select(ValueType::Float), &[11, 180, 156, 185], 1138);
-                step(f, Op::AddF, &[67, 71, 215], 1139);
-                step(f, Op::MakeVector, &[156, 215, 156, 40], 1140);
-                step(f, Op::RotateVector, &[8, 40, 41], 1141);
-                step(f, Op::AddV, &[17, 41, 43], 1142);
-                step(f, Op::AddV, &[43, 53, 29], 1143);
-                step(f, Op::SubV, &[43, 53, 42], 1144);
-                step(f, Op::LineTrace, &[29, 42, 13, 44, 51, 221], 1145);
-                step(f, Op::BreakVector, &[44, 191, 192, 184], 1146);
-                step(f, Op::BreakVector, &[43, 193, 182, 220], 1147);
-                step(f, Op::SubF, &[184, 220, 194], 1148);
-                step(f, Op::Select(ValueType::Float), &[13, 194, 156, 199], 1149);
-                step(f, Op::MaxF, &[185, 199, 203], 1150);
-                step(f, Op::ClampF, &[203, 156, 70, 204], 1151);
-                step(f, Op::MakeVector, &[156, 156, 204, 52], 1152);
-                step(f, Op::AddV, &[17, 52, 48], 1153);
-                step(f, Op::MakeTransform, &[48, 8, 5, 14], 1154);
-                step(f, Op::Select(ValueType::Transform), &[18, 14, 13, 15], 1155);
-                step(f, Op::Copy(ValueType::Transform), &[15, 13], 1156);
-                step(f, Op::ArraySetAt(Elem::Transform), &[3, 7, 13], 1157);
-                1157
+                step(f, Op::MakeVector, &[158, 158, 64, 21], 1085);
+                step(f, Op::AddV, &[30, 21, 31], 1086);
+                step(f, Op::RotateVector, &[0, 9, 33], 1087);
+                step(f, Op::ScaleV, &[33, 68, 34], 1088);
+                step(f, Op::AddV, &[31, 34, 35], 1089);
+                step(f, Op::SubV, &[30, 21, 32], 1090);
+                step(f, Op::AddV, &[32, 34, 36], 1091);
+                step(f, Op::SphereTrace, &[35, 36, 63, 13, 37, 38, 189], 1092);
+                step(f, Op::SubV, &[37, 30, 39], 1093);
+                step(f, Op::ArraySetAt(Elem::Vec3), &[1, 7, 39], 1094);
+                step(f, Op::ScaleV, &[33, 65, 40], 1095);
+                step(f, Op::AddV, &[35, 40, 41], 1096);
+                step(f, Op::AddV, &[36, 40, 42], 1097);
+                step(f, Op::SphereTrace, &[41, 42, 63, 12, 43, 44, 211], 1098);
+                step(f, Op::SubV, &[43, 30, 45], 1099);
+                step(f, Op::ArraySetAt(Elem::Vec3), &[2, 7, 45], 1100);
+                1100
             }
-            1157 => {
-                step(f, Op::Jump, &[1274], 1158)
+            1100 => {
+                step(f, Op::JumpIfFalse, &[17, 1102], 1101)
             }
-            1158 => {
-                step(f, Op::ArrayAt(Elem::Transform), &[3, 7, 14], 1159);
-                step(f, Op::MakeAbsolute, &[14, 5, 15], 1160);
-                step(f, Op::BreakTransform, &[15, 50, 2, 20], 1161);
-                step(f, Op::ArrayAt(Elem::Transform), &[1, 7, 6], 1162);
-                step(f, Op::BreakTransform, &[6, 59, 6, 47], 1163);
-                step(f, Op::SubF, &[158, 219, 222], 1164);
-                step(f, Op::MulF, &[13, 10, 196], 1165);
-                step(f, Op::MulF, &[222, 196, 208], 1166);
-                step(f, Op::ScaleV, &[2, 208, 49], 1167);
-                step(f, Op::AddV, &[59, 49, 55], 1168);
-                step(f, Op::Equals(Elem::Int), &[7, 2, 19], 1169);
-                step(f, Op::Select(ValueType::Int), &[19, 3, 2, 12], 1170);
-                step(f, Op::ArrayAt(Elem::Bool), &[0, 12, 12], 1171);
-                step(f, Op::ArrayAt(Elem::Transform), &[0, 12, 4], 1172);
-                step(f, Op::BreakTransform, &[4, 56, 3, 46], 1173);
-                step(f, Op::ArrayAt(Elem::Transform), &[3, 12, 8], 1174);
-                step(f, Op::BreakTransform, &[8, 45, 5, 57], 1175);
-                step(f, Op::LessEqualF, &[93, 156, 17], 1176);
-                step(f, Op::ArrayAt(Elem::Float), &[2, 12, 201], 1177);
-                step(f, Op::SmoothStepF, &[201, 156, 93, 209], 1178);
-                step(f, Op::Select(ValueType::Float), &[17, 158, 209, 217], 1179);
-                step(f, Op::LerpV, &[56, 45, 217, 16], 1180);
-                step(f, Op::MakeTransform, &[16, 1, 5, 9], 1181);
-                step(f, Op::Select(ValueType::Transform), &[12, 4, 9, 10], 1182);
-                step(f, Op::MakeAbsolute, &[10, 5, 11], 1183);
-                step(f, Op::Select(ValueType::Transform), &[19, 11, 10, 12], 1184);
-                step(f, Op::BreakTransform, &[12, 23, 4, 21], 1185);
-                step(f, Op::SubF, &[158, 19, 195], 1186);
-                step(f, Op::MulF, &[198, 195, 212], 1187);
-                step(f, Op::MulF, &[17, 212, 181], 1188);
-                step(f, Op::FootAvoidance, &[55, 23, 181, 19, 89, 24], 1189);
-                step(f, Op::RemapF, &[18, 92, 158, 156, 158, 9, 218], 1190);
-                step(f, Op::LerpV, &[55, 24, 218, 25], 1191);
-                step(f, Op::FootAvoidance, &[25, 23, 20, 19, 115, 26], 1192);
-                step(f, Op::LerpV, &[25, 26, 19, 22], 1193);
-                step(f, Op::ArrayAt(Elem::Transform), &[4, 7, 13], 1194);
-                step(f, Op::MakeAbsolute, &[13, 5, 14], 1195);
-                step(f, Op::BreakTransform, &[14, 19, 7, 58], 1196);
-                step(f, Op::ArrayAt(Elem::Float), &[3, 7, 216], 1197);
-                step(f, Op::SubF, &[219, 216, 187], 1198);
-                step(f, Op::DeltaTime, &[189], 1199);
-                step(f, Op::DivF, &[57, 189, 197], 1200);
-                step(f, Op::MulF, &[187, 197, 207], 1201);
-                step(f, Op::AddF, &[216, 207, 200], 1202);
-                step(f, Op::ClampF, &[200, 156, 158, 211], 1203);
-                step(f, Op::AddF, &[219, 207, 183], 1204);
-                step(f, Op::ClampF, &[183, 156, 158, 205], 1205);
-                step(f, Op::AddF, &[211, 205, 186], 1206);
-                step(f, Op::MulF, &[186, 157, 210], 1207);
-                step(f, Op::SubF, &[158, 210, 213], 1208);
-                step(f, Op::GreaterF, &[187, 156, 15], 1209);
-                step(f, Op::SubF, &[205, 211, 214], 1210);
-                step(f, Op::DivF, &[214, 187, 190], 1211);
-                step(f, Op::Select(ValueType::Float), &[15, 190, 158, 202], 1212);
-                step(f, Op::MulF, &[213, 202, 188], 1213);
-                step(f, Op::MulF, &[88, 188, 206], 1214);
-                step(f, Op::Copy(ValueType::Float), &[57, 180], 1215);
-                step(f, Op::SubV, &[22, 19, 28], 1216);
-                step(f, Op::DeltaTime, &[215], 1217);
-                step(f, Op::DivF, &[180, 215, 221], 1218);
-                step(f, Op::ScaleV, &[28, 221, 27], 1219);
-                step(f, Op::AddV, &[22, 27, 18], 1220);
-                step(f, Op::AddV, &[19, 27, 30], 1221);
-                step(f, Op::SubV, &[50, 30, 31], 1222);
-                step(f, Op::FloatLerp, &[156, 158, 206, 191], 1223);
-                step(f, Op::SubF, &[158, 191, 192], 1224);
-                step(f, Op::ScaleV, &[31, 192, 33], 1225);
-                step(f, Op::AddV, &[18, 33, 37], 1226);
-                step(f, Op::MulF, &[206, 215, 182], 1227);
-                step(f, Op::GreaterF, &[182, 156, 11], 1228);
-                step(f, Op::DivF, &[191, 182, 193], 1229);
-                step(f, Op::Select(ValueType::Float), &[11, 193, 158, 184], 1230);
-                step(f, Op::ScaleV, &[28, 184, 36], 1231);
-                step(f, Op::SubV, &[37, 36, 32], 1232);
-                step(f, Op::Copy(ValueType::Vec3), &[32, 34], 1233);
-                step(f, Op::MakeTransform, &[34, 6, 5, 15], 1234);
-                step(f, Op::BreakTransform, &[15, 39, 8, 35], 1235);
-                step(f, Op::MakeVector, &[156, 156, 63, 38], 1236);
-                step(f, Op::AddV, &[39, 38, 40], 1237);
-                step(f, Op::SubV, &[39, 38, 41], 1238);
-                step(f, Op::LineTrace, &[40, 41, 13, 53, 29, 220], 1239);
-                step(f, Op::RotateVector, &[8, 9, 42], 1240);
-                step(f, Op::FindQuatBetween, &[42, 29, 2], 1241);
-                step(f, Op::MulQ, &[2, 8, 7], 1242);
-                step(f, Op::MulF, &[61, 60, 194], 1243);
-                step(f, Op::AddF, &[194, 71, 185], 1244);
-                step(f, Op::NegF, &[185, 199], 1245);
-                step(f, Op::MakeVector, &[156, 199, 156, 51], 1246);
-                step(f, Op::RotateVector, &[7, 51, 44], 1247);
-                step(f, Op::AddV, &[53, 44, 43], 1248);
-                step(f, Op::AddV, &[43, 38, 17], 1249);
-                step(f, Op::SubV, &[43, 38, 52], 1250);
-                step(f, Op::LineTrace, &[17, 52, 18, 48, 20, 203], 1251);
-                step(f, Op::BreakVector, &[48, 204, 189, 197], 1252);
-                step(f, Op::BreakVector, &[43, 216, 200, 207], 1253);
-                step(f, Op::SubF, &[197, 207, 183], 1254);
-                step(f, Op::Select(ValueType::Float), &[18, 183, 156, 186], 1255);
-                step(f, Op::AddF, &[67, 71, 210], 1256);
-                step(f, Op::MakeVector, &[156, 210, 156, 58], 1257);
-                step(f, Op::RotateVector, &[7, 58, 19], 1258);
-                step(f, Op::AddV, &[53, 19, 27], 1259);
-                step(f, Op::AddV, &[27, 38, 30], 1260);
-                step(f, Op::SubV, &[27, 38, 50], 1261);
-                step(f, Op::LineTrace, &[30, 50, 15, 31, 18, 205], 1262);
-                step(f, Op::BreakVector, &[31, 211, 187, 214], 1263);
-                step(f, Op::BreakVector, &[27, 190, 202, 213], 1264);
-                step(f, Op::SubF, &[214, 213, 188], 1265);
-                step(f, Op::Select(ValueType::Float), &[15, 188, 156, 180], 1266);
-                step(f, Op::MaxF, &[186, 180, 221], 1267);
-                step(f, Op::ClampF, &[221, 156, 70, 192], 1268);
-                step(f, Op::MakeVector, &[156, 156, 192, 33], 1269);
-                step(f, Op::AddV, &[53, 33, 28], 1270);
-                step(f, Op::MakeTransform, &[28, 7, 5, 13], 1271);
-                step(f, Op::Select(ValueType::Transform), &[13, 13, 15, 14], 1272);
-                step(f, Op::Copy(ValueType::Transform), &[14, 13], 1273);
-                step(f, Op::ArraySetAt(Elem::Transform), &[3, 7, 13], 1274);
-                1274
+            1101 => {
+                step(f, Op::Copy(ValueType::Bool), &[9, 7], 1102);
+                1102
             }
-            1274 => {
-                step(f, Op::JumpIfFalse, &[20, 1357], 1275)
+            1102 => {
+                step(f, Op::ArrayAt(Elem::Float), &[4, 7, 190], 1103);
+                step(f, Op::FloatLerp, &[190, 158, 112, 188], 1104);
+                step(f, Op::ArrayAt(Elem::Bool), &[0, 7, 16], 1105);
+                step(f, Op::ArrayAt(Elem::Float), &[2, 7, 204], 1106);
+                step(f, Op::GreaterEqualF, &[204, 160, 20], 1107);
+                step(f, Op::And, &[16, 20, 14], 1108);
+                step(f, Op::ArrayAt(Elem::Transform), &[0, 7, 8], 1109);
+                step(f, Op::GreaterF, &[27, 158, 18], 1110);
+                step(f, Op::InterpolateTransform, &[2, 3, 28, 7], 1111);
+                step(f, Op::Select(ValueType::Transform), &[18, 7, 2, 5], 1112);
+                step(f, Op::MakeAbsolute, &[8, 5, 6], 1113);
+                step(f, Op::BreakTransform, &[6, 57, 7, 48], 1114);
+                step(f, Op::RotateVector, &[7, 9, 53], 1115);
+                step(f, Op::SubF, &[160, 18, 196], 1116);
+                step(f, Op::MulF, &[17, 196, 215], 1117);
+                step(f, Op::LimitRotationAroundZ, &[7, 215, 109, 8], 1118);
+                step(f, Op::RotateVector, &[8, 9, 51], 1119);
+                step(f, Op::CrossV, &[53, 51, 17], 1120);
+                step(f, Op::BreakVector, &[17, 191, 193, 201], 1121);
+                step(f, Op::DotV, &[53, 51, 202], 1122);
+                step(f, Op::Atan2F, &[201, 202, 194], 1123);
+                step(f, Op::AbsF, &[194, 183], 1124);
+                step(f, Op::Select(ValueType::Float), &[14, 183, 158, 192], 1125);
+                step(f, Op::AddF, &[188, 192, 195], 1126);
+                step(f, Op::ArraySetAt(Elem::Float), &[4, 7, 195], 1127);
+                step(f, Op::ArrayAt(Elem::Transform), &[8, 7, 4], 1128);
+                step(f, Op::BreakTransform, &[4, 50, 2, 19], 1129);
+                step(f, Op::AddF, &[73, 74, 200], 1130);
+                step(f, Op::ClampSpatially, &[57, 50, 158, 200, 20], 1131);
+                step(f, Op::MakeTransform, &[20, 8, 6, 8], 1132);
+                step(f, Op::ArraySetAt(Elem::Transform), &[0, 7, 8], 1133);
+                step(f, Op::JumpIfFalse, &[16, 1210], 1134)
             }
-            1275 => {
-                step(f, Op::JumpIfFalse, &[16, 1277], 1276)
+            1134 => {
+                step(f, Op::JumpIfFalse, &[20, 1136], 1135)
             }
-            1276 => {
-                step(f, Op::Jump, &[1338], 1277)
+            1135 => {
+                step(f, Op::Jump, &[1209], 1136)
             }
-            1277 => {
-                step(f, Op::ArrayAt(Elem::Transform), &[3, 7, 15], 1278);
-                step(f, Op::BreakTransform, &[15, 36, 2, 37], 1279);
-                step(f, Op::Equals(Elem::Int), &[7, 2, 19], 1280);
-                step(f, Op::Select(ValueType::Int), &[19, 3, 2, 12], 1281);
-                step(f, Op::ArrayAt(Elem::Transform), &[6, 12, 14], 1282);
-                step(f, Op::BreakTransform, &[14, 32, 8, 34], 1283);
-                step(f, Op::MakeAbsolute, &[14, 5, 13], 1284);
-                step(f, Op::BreakTransform, &[13, 35, 7, 39], 1285);
-                step(f, Op::ArrayAt(Elem::Float), &[2, 12, 201], 1286);
-                step(f, Op::SmoothStepF, &[201, 156, 158, 206], 1287);
-                step(f, Op::RemapF, &[18, 156, 92, 156, 158, 9, 215], 1288);
-                step(f, Op::MulF, &[206, 215, 182], 1289);
-                step(f, Op::Select(ValueType::Float), &[19, 182, 156, 191], 1290);
-                step(f, Op::LerpV, &[32, 35, 191, 40], 1291);
-                step(f, Op::MakeTransform, &[40, 1, 5, 16], 1292);
-                step(f, Op::BreakTransform, &[16, 41, 9, 29], 1293);
-                step(f, Op::SubF, &[158, 19, 195], 1294);
-                step(f, Op::MulF, &[198, 195, 212], 1295);
-                step(f, Op::MulF, &[17, 212, 181], 1296);
-                step(f, Op::FootAvoidance, &[36, 41, 181, 19, 89, 42], 1297);
-                step(f, Op::MakeTransform, &[42, 2, 5, 17], 1298);
-                step(f, Op::BreakTransform, &[17, 51, 2, 44], 1299);
-                step(f, Op::MakeVector, &[156, 156, 63, 17], 1300);
-                step(f, Op::AddV, &[51, 17, 20], 1301);
-                step(f, Op::SubV, &[51, 17, 52], 1302);
-                step(f, Op::LineTrace, &[20, 52, 11, 48, 43, 193], 1303);
-                step(f, Op::RotateVector, &[2, 9, 58], 1304);
-                step(f, Op::FindQuatBetween, &[58, 43, 10], 1305);
-                step(f, Op::MulQ, &[10, 2, 11], 1306);
-                step(f, Op::MulF, &[61, 60, 184], 1307);
-                step(f, Op::AddF, &[184, 71, 220], 1308);
-                step(f, Op::NegF, &[220, 194], 1309);
-                step(f, Op::MakeVector, &[156, 194, 156, 19], 1310);
-                step(f, Op::RotateVector, &[11, 19, 38], 1311);
-                step(f, Op::AddV, &[48, 38, 18], 1312);
-                step(f, Op::AddV, &[18, 17, 30], 1313);
-                step(f, Op::SubV, &[18, 17, 50], 1314);
-                step(f, Op::LineTrace, &[30, 50, 18, 31, 27, 185], 1315);
-                step(f, Op::BreakVector, &[31, 199, 203, 189], 1316);
-                step(f, Op::BreakVector, &[18, 204, 200, 216], 1317);
-                step(f, Op::SubF, &[189, 216, 197], 1318);
-                step(f, Op::Select(ValueType::Float), &[18, 197, 156, 207], 1319);
-                step(f, Op::AddF, &[67, 71, 183], 1320);
-                step(f, Op::MakeVector, &[156, 183, 156, 33], 1321);
-                step(f, Op::RotateVector, &[11, 33, 53], 1322);
-                step(f, Op::AddV, &[48, 53, 28], 1323);
-                step(f, Op::AddV, &[28, 17, 37], 1324);
-                step(f, Op::SubV, &[28, 17, 36], 1325);
-                step(f, Op::LineTrace, &[37, 36, 15, 42, 44, 210], 1326);
-                step(f, Op::BreakVector, &[42, 205, 187, 211], 1327);
-                step(f, Op::BreakVector, &[28, 190, 202, 213], 1328);
-                step(f, Op::SubF, &[211, 213, 214], 1329);
-                step(f, Op::Select(ValueType::Float), &[15, 214, 156, 188], 1330);
-                step(f, Op::MaxF, &[207, 188, 180], 1331);
-                step(f, Op::ClampF, &[180, 156, 70, 186], 1332);
-                step(f, Op::MakeVector, &[156, 156, 186, 51], 1333);
-                step(f, Op::AddV, &[48, 51, 20], 1334);
-                step(f, Op::MakeTransform, &[20, 11, 5, 18], 1335);
-                step(f, Op::Select(ValueType::Transform), &[11, 18, 17, 19], 1336);
-                step(f, Op::Copy(ValueType::Transform), &[19, 17], 1337);
-                step(f, Op::ArraySetAt(Elem::Transform), &[0, 7, 17], 1338);
-                1338
+            1136 => {
+                step(f, Op::ArrayAt(Elem::Transform), &[1, 7, 6], 1137);
+                step(f, Op::BreakTransform, &[6, 56, 6, 49], 1138);
+                step(f, Op::SubF, &[160, 204, 208], 1139);
+                step(f, Op::MulF, &[13, 10, 184], 1140);
+                step(f, Op::MulF, &[208, 184, 213], 1141);
+                step(f, Op::ScaleV, &[2, 213, 47], 1142);
+                step(f, Op::AddV, &[56, 47, 46], 1143);
+                step(f, Op::Equals(Elem::Int), &[7, 2, 19], 1144);
+                step(f, Op::Select(ValueType::Int), &[19, 3, 2, 9], 1145);
+                step(f, Op::ArrayAt(Elem::Bool), &[0, 9, 11], 1146);
+                step(f, Op::ArrayAt(Elem::Transform), &[0, 9, 4], 1147);
+                step(f, Op::BreakTransform, &[4, 54, 3, 22], 1148);
+                step(f, Op::ArrayAt(Elem::Transform), &[3, 9, 8], 1149);
+                step(f, Op::BreakTransform, &[8, 24, 5, 18], 1150);
+                step(f, Op::LessEqualF, &[95, 158, 15], 1151);
+                step(f, Op::ArrayAt(Elem::Float), &[2, 9, 185], 1152);
+                step(f, Op::SmoothStepF, &[185, 158, 95, 182], 1153);
+                step(f, Op::Select(ValueType::Float), &[15, 160, 182, 209], 1154);
+                step(f, Op::LerpV, &[54, 24, 209, 25], 1155);
+                step(f, Op::MakeTransform, &[25, 1, 6, 9], 1156);
+                step(f, Op::Select(ValueType::Transform), &[11, 4, 9, 10], 1157);
+                step(f, Op::MakeAbsolute, &[10, 5, 11], 1158);
+                step(f, Op::Select(ValueType::Transform), &[19, 11, 10, 12], 1159);
+                step(f, Op::BreakTransform, &[12, 26, 4, 27], 1160);
+                step(f, Op::SubF, &[160, 19, 212], 1161);
+                step(f, Op::MulF, &[196, 212, 223], 1162);
+                step(f, Op::MulF, &[17, 223, 205], 1163);
+                step(f, Op::FootAvoidance, &[46, 26, 205, 19, 91, 23], 1164);
+                step(f, Op::RemapF, &[18, 94, 160, 158, 160, 9, 206], 1165);
+                step(f, Op::LerpV, &[46, 23, 206, 28], 1166);
+                step(f, Op::FootAvoidance, &[28, 26, 20, 19, 117, 29], 1167);
+                step(f, Op::LerpV, &[28, 29, 19, 52], 1168);
+                step(f, Op::MakeTransform, &[52, 6, 6, 13], 1169);
+                step(f, Op::BreakTransform, &[13, 55, 7, 31], 1170);
+                step(f, Op::MakeVector, &[158, 158, 64, 21], 1171);
+                step(f, Op::AddV, &[55, 21, 32], 1172);
+                step(f, Op::SubV, &[55, 21, 34], 1173);
+                step(f, Op::LineTrace, &[32, 34, 13, 38, 37, 216], 1174);
+                step(f, Op::RotateVector, &[7, 10, 39], 1175);
+                step(f, Op::FindQuatBetween, &[39, 37, 2], 1176);
+                step(f, Op::MulQ, &[2, 7, 8], 1177);
+                step(f, Op::MulF, &[62, 61, 207], 1178);
+                step(f, Op::AddF, &[207, 72, 210], 1179);
+                step(f, Op::NegF, &[210, 214], 1180);
+                step(f, Op::MakeVector, &[158, 214, 158, 33], 1181);
+                step(f, Op::RotateVector, &[8, 33, 35], 1182);
+                step(f, Op::AddV, &[38, 35, 36], 1183);
+                step(f, Op::AddV, &[36, 21, 40], 1184);
+                step(f, Op::SubV, &[36, 21, 41], 1185);
+                step(f, Op::LineTrace, &[40, 41, 12, 42, 44, 217], 1186);
+                step(f, Op::BreakVector, &[42, 203, 221, 198], 1187);
+                step(f, Op::BreakVector, &[36, 218, 219, 220], 1188);
+                step(f, Op::SubF, &[198, 220, 224], 1189);
+                step(f, Op::Select(ValueType::Float), &[12, 224, 158, 186], 1190);
+                step(f, Op::AddF, &[68, 72, 197], 1191);
+                step(f, Op::MakeVector, &[158, 197, 158, 30], 1192);
+                step(f, Op::RotateVector, &[8, 30, 43], 1193);
+                step(f, Op::AddV, &[38, 43, 45], 1194);
+                step(f, Op::AddV, &[45, 21, 48], 1195);
+                step(f, Op::SubV, &[45, 21, 17], 1196);
+                step(f, Op::LineTrace, &[48, 17, 17, 51, 53, 222], 1197);
+                step(f, Op::BreakVector, &[51, 187, 199, 189], 1198);
+                step(f, Op::BreakVector, &[45, 211, 190, 215], 1199);
+                step(f, Op::SubF, &[189, 215, 191], 1200);
+                step(f, Op::Select(ValueType::Float), &[17, 191, 158, 193], 1201);
+                step(f, Op::MaxF, &[186, 193, 201], 1202);
+                step(f, Op::ClampF, &[201, 158, 71, 202], 1203);
+                step(f, Op::MakeVector, &[158, 158, 202, 19], 1204);
+                step(f, Op::AddV, &[38, 19, 57], 1205);
+                step(f, Op::MakeTransform, &[57, 8, 6, 14], 1206);
+                step(f, Op::Select(ValueType::Transform), &[13, 14, 13, 15], 1207);
+                step(f, Op::Copy(ValueType::Transform), &[15, 13], 1208);
+                step(f, Op::ArraySetAt(Elem::Transform), &[3, 7, 13], 1209);
+                1209
             }
-            1338 => {
-                step(f, Op::ArrayAt(Elem::Transform), &[0, 7, 18], 1339);
-                step(f, Op::BreakTransform, &[18, 52, 2, 43], 1340);
-                step(f, Op::SubV, &[52, 54, 58], 1341);
-                step(f, Op::LengthV, &[58, 221], 1342);
-                step(f, Op::SubF, &[72, 73, 192], 1343);
-                step(f, Op::SubF, &[221, 192, 193], 1344);
-                step(f, Op::MulF, &[73, 161, 184], 1345);
-                step(f, Op::ClampF, &[193, 156, 184, 220], 1346);
-                step(f, Op::MulF, &[220, 220, 194], 1347);
-                step(f, Op::MulF, &[73, 172, 185], 1348);
-                step(f, Op::DivF, &[194, 185, 199], 1349);
-                step(f, Op::SubF, &[221, 199, 203], 1350);
-                step(f, Op::DivF, &[203, 221, 200], 1351);
-                step(f, Op::ScaleV, &[58, 200, 19], 1352);
-                step(f, Op::AddV, &[54, 19, 38], 1353);
-                step(f, Op::MakeTransform, &[38, 2, 5, 19], 1354);
-                step(f, Op::ArraySetAt(Elem::Transform), &[5, 7, 19], 1355);
-                step(f, Op::ArraySetAt(Elem::Transform), &[6, 7, 19], 1356);
-                step(f, Op::Jump, &[1523], 1357)
+            1209 => {
+                step(f, Op::Jump, &[1326], 1210)
             }
-            1357 => {
-                step(f, Op::ArrayAt(Elem::Transform), &[0, 7, 18], 1358);
-                step(f, Op::BreakTransform, &[18, 52, 2, 43], 1359);
-                step(f, Op::SubV, &[52, 54, 58], 1360);
-                step(f, Op::LengthV, &[58, 221], 1361);
-                step(f, Op::SubF, &[72, 73, 192], 1362);
-                step(f, Op::SubF, &[221, 192, 193], 1363);
-                step(f, Op::MulF, &[73, 161, 184], 1364);
-                step(f, Op::ClampF, &[193, 156, 184, 220], 1365);
-                step(f, Op::MulF, &[220, 220, 194], 1366);
-                step(f, Op::MulF, &[73, 172, 185], 1367);
-                step(f, Op::DivF, &[194, 185, 199], 1368);
-                step(f, Op::SubF, &[221, 199, 203], 1369);
-                step(f, Op::DivF, &[203, 221, 200], 1370);
-                step(f, Op::ScaleV, &[58, 200, 19], 1371);
-                step(f, Op::AddV, &[54, 19, 38], 1372);
-                step(f, Op::MakeTransform, &[38, 2, 5, 19], 1373);
-                step(f, Op::ArrayAt(Elem::Transform), &[3, 7, 15], 1374);
-                step(f, Op::ClampF, &[219, 156, 158, 204], 1375);
-                step(f, Op::Copy(ValueType::Array(Elem::Vec3)), &[6, 5], 1376);
-                step(f, Op::ArrayReset(Elem::Vec3), &[5], 1377);
-                step(f, Op::BreakTransform, &[19, 27, 10, 30], 1378);
-                step(f, Op::ArrayAdd(Elem::Vec3), &[5, 27], 1379);
-                step(f, Op::UnitV, &[2, 50], 1380);
-                step(f, Op::LengthV, &[2, 189], 1381);
-                step(f, Op::RemapF, &[189, 156, 74, 156, 75, 9, 216], 1382);
-                step(f, Op::ScaleV, &[50, 216, 31], 1383);
-                step(f, Op::SubV, &[27, 31, 18], 1384);
-                step(f, Op::MakeVector, &[156, 156, 77, 33], 1385);
-                step(f, Op::AddV, &[18, 33, 53], 1386);
-                step(f, Op::ArrayAdd(Elem::Vec3), &[5, 53], 1387);
-                step(f, Op::RemapF, &[189, 156, 74, 156, 79, 9, 197], 1388);
-                step(f, Op::MakeVector, &[156, 156, 197, 17], 1389);
-                step(f, Op::AddV, &[53, 17, 36], 1390);
-                step(f, Op::BreakTransform, &[15, 37, 11, 44], 1391);
-                step(f, Op::BreakVector, &[37, 183, 210, 187], 1392);
-                step(f, Op::BreakVector, &[27, 205, 190, 202], 1393);
-                step(f, Op::SubF, &[187, 202, 211], 1394);
-                step(f, Op::MaxF, &[211, 156, 213], 1395);
-                step(f, Op::MulF, &[213, 81, 214], 1396);
-                step(f, Op::MinF, &[214, 82, 188], 1397);
-                step(f, Op::AbsF, &[211, 207], 1398);
-                step(f, Op::RemapF, &[207, 156, 85, 156, 84, 9, 180], 1399);
-                step(f, Op::AddF, &[188, 180, 186], 1400);
-                step(f, Op::MakeVector, &[156, 156, 186, 42], 1401);
-                step(f, Op::AddV, &[36, 42, 28], 1402);
-                step(f, Op::ArrayAdd(Elem::Vec3), &[5, 28], 1403);
-                step(f, Op::RemapF, &[189, 156, 74, 156, 76, 9, 192], 1404);
-                step(f, Op::ScaleV, &[50, 192, 48], 1405);
-                step(f, Op::AddV, &[37, 48, 51], 1406);
-                step(f, Op::MakeVector, &[156, 156, 78, 20], 1407);
-                step(f, Op::AddV, &[51, 20, 43], 1408);
-                step(f, Op::RemapF, &[189, 156, 74, 156, 80, 9, 184], 1409);
-                step(f, Op::MakeVector, &[156, 156, 184, 52], 1410);
-                step(f, Op::AddV, &[43, 52, 58], 1411);
-                step(f, Op::NegF, &[211, 193], 1412);
-                step(f, Op::MaxF, &[193, 156, 220], 1413);
-                step(f, Op::MulF, &[220, 83, 185], 1414);
-                step(f, Op::AddF, &[185, 180, 194], 1415);
-                step(f, Op::MakeVector, &[156, 156, 194, 19], 1416);
-                step(f, Op::AddV, &[58, 19, 54], 1417);
-                step(f, Op::LerpV, &[28, 54, 157, 38], 1418);
-                step(f, Op::GetTransform, &[35, 2, 9, 17], 1419);
-                step(f, Op::BreakTransform, &[17, 30, 2, 31], 1420);
-                step(f, Op::BreakVector, &[30, 199, 203, 221], 1421);
-                step(f, Op::SubF, &[158, 18, 200], 1422);
-                step(f, Op::MulF, &[86, 200, 216], 1423);
-                step(f, Op::MulF, &[17, 216, 197], 1424);
-                step(f, Op::QuatFromAxisAngle, &[9, 197, 2], 1425);
-                step(f, Op::SubV, &[38, 30, 18], 1426);
-                step(f, Op::BreakVector, &[18, 183, 210, 190], 1427);
-                step(f, Op::MakeVector, &[183, 210, 156, 33], 1428);
-                step(f, Op::RotateVector, &[2, 33, 17], 1429);
-                step(f, Op::BreakVector, &[17, 205, 187, 202], 1430);
-                step(f, Op::AddF, &[199, 205, 213], 1431);
-                step(f, Op::AddF, &[203, 187, 214], 1432);
-                step(f, Op::BreakVector, &[38, 207, 188, 186], 1433);
-                step(f, Op::MakeVector, &[213, 214, 186, 53], 1434);
-                step(f, Op::DistanceV, &[27, 37, 192], 1435);
-                step(f, Op::RemapF, &[192, 161, 173, 156, 158, 9, 189], 1436);
-                step(f, Op::LerpV, &[38, 53, 189, 44], 1437);
-                step(f, Op::ArrayAdd(Elem::Vec3), &[5, 44], 1438);
-                step(f, Op::ArrayAdd(Elem::Vec3), &[5, 54], 1439);
-                step(f, Op::ArrayAdd(Elem::Vec3), &[5, 43], 1440);
-                step(f, Op::ArrayAdd(Elem::Vec3), &[5, 37], 1441);
-                step(f, Op::JumpIfFalse, &[8, 1443], 1442)
+            1210 => {
+                step(f, Op::ArrayAt(Elem::Transform), &[3, 7, 14], 1211);
+                step(f, Op::MakeAbsolute, &[14, 5, 15], 1212);
+                step(f, Op::BreakTransform, &[15, 20, 2, 31], 1213);
+                step(f, Op::ArrayAt(Elem::Transform), &[1, 7, 6], 1214);
+                step(f, Op::BreakTransform, &[6, 56, 6, 49], 1215);
+                step(f, Op::SubF, &[160, 204, 208], 1216);
+                step(f, Op::MulF, &[13, 10, 184], 1217);
+                step(f, Op::MulF, &[208, 184, 213], 1218);
+                step(f, Op::ScaleV, &[2, 213, 47], 1219);
+                step(f, Op::AddV, &[56, 47, 46], 1220);
+                step(f, Op::Equals(Elem::Int), &[7, 2, 19], 1221);
+                step(f, Op::Select(ValueType::Int), &[19, 3, 2, 9], 1222);
+                step(f, Op::ArrayAt(Elem::Bool), &[0, 9, 11], 1223);
+                step(f, Op::ArrayAt(Elem::Transform), &[0, 9, 4], 1224);
+                step(f, Op::BreakTransform, &[4, 54, 3, 22], 1225);
+                step(f, Op::ArrayAt(Elem::Transform), &[3, 9, 8], 1226);
+                step(f, Op::BreakTransform, &[8, 24, 5, 18], 1227);
+                step(f, Op::LessEqualF, &[95, 158, 15], 1228);
+                step(f, Op::ArrayAt(Elem::Float), &[2, 9, 185], 1229);
+                step(f, Op::SmoothStepF, &[185, 158, 95, 182], 1230);
+                step(f, Op::Select(ValueType::Float), &[15, 160, 182, 209], 1231);
+                step(f, Op::LerpV, &[54, 24, 209, 25], 1232);
+                step(f, Op::MakeTransform, &[25, 1, 6, 9], 1233);
+                step(f, Op::Select(ValueType::Transform), &[11, 4, 9, 10], 1234);
+                step(f, Op::MakeAbsolute, &[10, 5, 11], 1235);
+                step(f, Op::Select(ValueType::Transform), &[19, 11, 10, 12], 1236);
+                step(f, Op::BreakTransform, &[12, 26, 4, 27], 1237);
+                step(f, Op::SubF, &[160, 19, 212], 1238);
+                step(f, Op::MulF, &[196, 212, 223], 1239);
+                step(f, Op::MulF, &[17, 223, 205], 1240);
+                step(f, Op::FootAvoidance, &[46, 26, 205, 19, 91, 23], 1241);
+                step(f, Op::RemapF, &[18, 94, 160, 158, 160, 9, 206], 1242);
+                step(f, Op::LerpV, &[46, 23, 206, 28], 1243);
+                step(f, Op::FootAvoidance, &[28, 26, 20, 19, 117, 29], 1244);
+                step(f, Op::LerpV, &[28, 29, 19, 52], 1245);
+                step(f, Op::ArrayAt(Elem::Transform), &[4, 7, 13], 1246);
+                step(f, Op::MakeAbsolute, &[13, 5, 14], 1247);
+                step(f, Op::BreakTransform, &[14, 55, 7, 32], 1248);
+                step(f, Op::ArrayAt(Elem::Float), &[3, 7, 194], 1249);
+                step(f, Op::SubF, &[204, 194, 183], 1250);
+                step(f, Op::DeltaTime, &[188], 1251);
+                step(f, Op::DivF, &[58, 188, 192], 1252);
+                step(f, Op::MulF, &[183, 192, 195], 1253);
+                step(f, Op::AddF, &[194, 195, 200], 1254);
+                step(f, Op::ClampF, &[200, 158, 160, 216], 1255);
+                step(f, Op::AddF, &[204, 195, 207], 1256);
+                step(f, Op::ClampF, &[207, 158, 160, 210], 1257);
+                step(f, Op::AddF, &[216, 210, 214], 1258);
+                step(f, Op::MulF, &[214, 159, 217], 1259);
+                step(f, Op::SubF, &[160, 217, 203], 1260);
+                step(f, Op::GreaterF, &[183, 158, 14], 1261);
+                step(f, Op::SubF, &[210, 216, 221], 1262);
+                step(f, Op::DivF, &[221, 183, 218], 1263);
+                step(f, Op::Select(ValueType::Float), &[14, 218, 160, 219], 1264);
+                step(f, Op::MulF, &[203, 219, 198], 1265);
+                step(f, Op::MulF, &[90, 198, 220], 1266);
+                step(f, Op::Copy(ValueType::Float), &[58, 224], 1267);
+                step(f, Op::SubV, &[52, 55, 34], 1268);
+                step(f, Op::DeltaTime, &[197], 1269);
+                step(f, Op::DivF, &[224, 197, 222], 1270);
+                step(f, Op::ScaleV, &[34, 222, 37], 1271);
+                step(f, Op::AddV, &[52, 37, 39], 1272);
+                step(f, Op::AddV, &[55, 37, 33], 1273);
+                step(f, Op::SubV, &[20, 33, 35], 1274);
+                step(f, Op::FloatLerp, &[158, 160, 220, 187], 1275);
+                step(f, Op::SubF, &[160, 187, 199], 1276);
+                step(f, Op::ScaleV, &[35, 199, 40], 1277);
+                step(f, Op::AddV, &[39, 40, 41], 1278);
+                step(f, Op::MulF, &[220, 197, 190], 1279);
+                step(f, Op::GreaterF, &[190, 158, 12], 1280);
+                step(f, Op::DivF, &[187, 190, 211], 1281);
+                step(f, Op::Select(ValueType::Float), &[12, 211, 160, 189], 1282);
+                step(f, Op::ScaleV, &[34, 189, 44], 1283);
+                step(f, Op::SubV, &[41, 44, 42], 1284);
+                step(f, Op::Copy(ValueType::Vec3), &[42, 36], 1285);
+                step(f, Op::MakeTransform, &[36, 6, 6, 15], 1286);
+                step(f, Op::BreakTransform, &[15, 30, 8, 43], 1287);
+                step(f, Op::MakeVector, &[158, 158, 64, 21], 1288);
+                step(f, Op::AddV, &[30, 21, 17], 1289);
+                step(f, Op::SubV, &[30, 21, 48], 1290);
+                step(f, Op::LineTrace, &[17, 48, 17, 53, 51, 215], 1291);
+                step(f, Op::RotateVector, &[8, 10, 45], 1292);
+                step(f, Op::FindQuatBetween, &[45, 51, 2], 1293);
+                step(f, Op::MulQ, &[2, 8, 7], 1294);
+                step(f, Op::MulF, &[62, 61, 191], 1295);
+                step(f, Op::AddF, &[191, 72, 186], 1296);
+                step(f, Op::NegF, &[186, 193], 1297);
+                step(f, Op::MakeVector, &[158, 193, 158, 19], 1298);
+                step(f, Op::RotateVector, &[7, 19, 38], 1299);
+                step(f, Op::AddV, &[53, 38, 57], 1300);
+                step(f, Op::AddV, &[57, 21, 31], 1301);
+                step(f, Op::SubV, &[57, 21, 32], 1302);
+                step(f, Op::LineTrace, &[31, 32, 13, 37, 55, 201], 1303);
+                step(f, Op::BreakVector, &[37, 202, 188, 192], 1304);
+                step(f, Op::BreakVector, &[57, 194, 200, 195], 1305);
+                step(f, Op::SubF, &[192, 195, 207], 1306);
+                step(f, Op::Select(ValueType::Float), &[13, 207, 158, 214], 1307);
+                step(f, Op::AddF, &[68, 72, 217], 1308);
+                step(f, Op::MakeVector, &[158, 217, 158, 20], 1309);
+                step(f, Op::RotateVector, &[7, 20, 33], 1310);
+                step(f, Op::AddV, &[53, 33, 35], 1311);
+                step(f, Op::AddV, &[35, 21, 39], 1312);
+                step(f, Op::SubV, &[35, 21, 40], 1313);
+                step(f, Op::LineTrace, &[39, 40, 14, 34, 41, 210], 1314);
+                step(f, Op::BreakVector, &[34, 216, 183, 221], 1315);
+                step(f, Op::BreakVector, &[35, 218, 203, 219], 1316);
+                step(f, Op::SubF, &[221, 219, 198], 1317);
+                step(f, Op::Select(ValueType::Float), &[14, 198, 158, 224], 1318);
+                step(f, Op::MaxF, &[214, 224, 222], 1319);
+                step(f, Op::ClampF, &[222, 158, 71, 199], 1320);
+                step(f, Op::MakeVector, &[158, 158, 199, 44], 1321);
+                step(f, Op::AddV, &[53, 44, 42], 1322);
+                step(f, Op::MakeTransform, &[42, 7, 6, 13], 1323);
+                step(f, Op::Select(ValueType::Transform), &[17, 13, 15, 14], 1324);
+                step(f, Op::Copy(ValueType::Transform), &[14, 13], 1325);
+                step(f, Op::ArraySetAt(Elem::Transform), &[3, 7, 13], 1326);
+                1326
             }
-            1442 => {
-                step(f, Op::DrawSpline, &[5, 2, 5, 157, 11], 1443);
-                1443
+            1326 => {
+                step(f, Op::JumpIfFalse, &[20, 1409], 1327)
             }
-            1443 => {
-                step(f, Op::Spline, &[5, 204, 2, 36, 42], 1444);
-                step(f, Op::SlerpQ, &[10, 11, 204, 2], 1445);
-                step(f, Op::MulF, &[204, 166, 184], 1446);
-                step(f, Op::SinF, &[184, 211], 1447);
-                step(f, Op::SmoothStepF, &[204, 156, 100, 193], 1448);
-                step(f, Op::MulF, &[211, 193, 220], 1449);
-                step(f, Op::MulF, &[220, 87, 180], 1450);
-                step(f, Op::SlerpQ, &[2, 1, 180, 10], 1451);
-                step(f, Op::MakeTransform, &[36, 10, 5, 18], 1452);
-                step(f, Op::Copy(ValueType::Transform), &[18, 19], 1453);
-                step(f, Op::BreakTransform, &[19, 50, 11, 48], 1454);
-                step(f, Op::Equals(Elem::Int), &[7, 2, 19], 1455);
-                step(f, Op::Select(ValueType::Int), &[19, 3, 2, 12], 1456);
-                step(f, Op::ArrayAt(Elem::Transform), &[6, 12, 14], 1457);
-                step(f, Op::BreakTransform, &[14, 32, 8, 34], 1458);
-                step(f, Op::GreaterF, &[26, 156, 14], 1459);
-                step(f, Op::InterpolateTransform, &[2, 3, 27, 7], 1460);
-                step(f, Op::Select(ValueType::Transform), &[14, 7, 2, 5], 1461);
-                step(f, Op::MakeAbsolute, &[14, 5, 13], 1462);
-                step(f, Op::BreakTransform, &[13, 35, 7, 39], 1463);
-                step(f, Op::ArrayAt(Elem::Float), &[2, 12, 201], 1464);
-                step(f, Op::SmoothStepF, &[201, 156, 158, 206], 1465);
-                step(f, Op::RemapF, &[18, 156, 92, 156, 158, 9, 215], 1466);
-                step(f, Op::MulF, &[206, 215, 182], 1467);
-                step(f, Op::Select(ValueType::Float), &[19, 182, 156, 191], 1468);
-                step(f, Op::LerpV, &[32, 35, 191, 40], 1469);
-                step(f, Op::MakeTransform, &[40, 1, 5, 16], 1470);
-                step(f, Op::BreakTransform, &[16, 41, 9, 29], 1471);
-                step(f, Op::SubF, &[158, 18, 198], 1472);
-                step(f, Op::SubF, &[158, 19, 195], 1473);
-                step(f, Op::MulF, &[198, 195, 212], 1474);
-                step(f, Op::MulF, &[17, 212, 181], 1475);
-                step(f, Op::ArrayAt(Elem::Bool), &[0, 12, 13], 1476);
-                step(f, Op::Select(ValueType::Float), &[13, 90, 156, 185], 1477);
-                step(f, Op::ArrayAt(Elem::Float), &[2, 7, 219], 1478);
-                step(f, Op::ClampF, &[219, 156, 158, 204], 1479);
-                step(f, Op::MulF, &[204, 166, 194], 1480);
-                step(f, Op::SinF, &[194, 221], 1481);
-                step(f, Op::MulF, &[221, 221, 200], 1482);
-                step(f, Op::MulF, &[185, 200, 216], 1483);
-                step(f, Op::AddF, &[89, 216, 197], 1484);
-                step(f, Op::FootAvoidance, &[50, 41, 181, 19, 197, 20], 1485);
-                step(f, Op::SubV, &[20, 50, 51], 1486);
-                step(f, Op::LengthV, &[51, 190], 1487);
-                step(f, Op::AddF, &[190, 216, 183], 1488);
-                step(f, Op::DivF, &[190, 183, 210], 1489);
-                step(f, Op::MulF, &[114, 161, 202], 1490);
-                step(f, Op::LessEqualF, &[190, 202, 16], 1491);
-                step(f, Op::MulF, &[114, 172, 199], 1492);
-                step(f, Op::DivF, &[190, 199, 205], 1493);
-                step(f, Op::DivF, &[114, 190, 187], 1494);
-                step(f, Op::SubF, &[158, 187, 203], 1495);
-                step(f, Op::Select(ValueType::Float), &[16, 205, 203, 188], 1496);
-                step(f, Op::GreaterF, &[114, 156, 18], 1497);
-                step(f, Op::Select(ValueType::Float), &[18, 19, 156, 207], 1498);
-                step(f, Op::LerpF, &[210, 188, 207, 186], 1499);
-                step(f, Op::LessF, &[201, 219, 15], 1500);
-                step(f, Op::LessEqualF, &[91, 156, 11], 1501);
-                step(f, Op::SmoothStepF, &[201, 156, 91, 213], 1502);
-                step(f, Op::MulF, &[213, 18, 214], 1503);
-                step(f, Op::SubF, &[158, 214, 192], 1504);
-                step(f, Op::Select(ValueType::Float), &[11, 158, 192, 189], 1505);
-                step(f, Op::Select(ValueType::Float), &[15, 189, 158, 184], 1506);
-                step(f, Op::MulF, &[186, 184, 193], 1507);
-                step(f, Op::SmoothStepF, &[204, 156, 91, 211], 1508);
-                step(f, Op::Select(ValueType::Float), &[11, 158, 211, 220], 1509);
-                step(f, Op::MulF, &[193, 220, 180], 1510);
-                step(f, Op::ScaleV, &[51, 180, 52], 1511);
-                step(f, Op::AddV, &[50, 52, 19], 1512);
-                step(f, Op::MulF, &[6, 147, 206], 1513);
-                step(f, Op::MulF, &[206, 200, 215], 1514);
-                step(f, Op::MakeVector, &[156, 156, 215, 58], 1515);
-                step(f, Op::AddV, &[19, 58, 28], 1516);
-                step(f, Op::MakeTransform, &[28, 11, 5, 15], 1517);
-                step(f, Op::ArraySetAt(Elem::Transform), &[5, 7, 15], 1518);
-                step(f, Op::ScaleV, &[51, 193, 31], 1519);
-                step(f, Op::AddV, &[50, 31, 30], 1520);
-                step(f, Op::AddV, &[30, 58, 18], 1521);
-                step(f, Op::MakeTransform, &[18, 11, 5, 17], 1522);
-                step(f, Op::ArraySetAt(Elem::Transform), &[6, 7, 17], 1523);
-                1523
+            1327 => {
+                step(f, Op::JumpIfFalse, &[16, 1329], 1328)
             }
-            1523 => {
-                step(f, Op::JumpIfFalse, &[14, 1546], 1524)
+            1328 => {
+                step(f, Op::Jump, &[1390], 1329)
             }
-            1524 => {
-                step(f, Op::ArrayAt(Elem::Transform), &[5, 7, 18], 1525);
-                step(f, Op::BreakTransform, &[18, 33, 2, 17], 1526);
-                step(f, Op::ArrayAt(Elem::Transform), &[8, 7, 19], 1527);
-                step(f, Op::BreakTransform, &[19, 27, 10, 38], 1528);
-                step(f, Op::MulF, &[26, 26, 182], 1529);
-                step(f, Op::LerpV, &[33, 27, 182, 53], 1530);
-                step(f, Op::SubF, &[158, 26, 191], 1531);
-                step(f, Op::MulF, &[26, 191, 194], 1532);
-                step(f, Op::MulF, &[149, 161, 221], 1533);
-                step(f, Op::MulF, &[194, 221, 185], 1534);
-                step(f, Op::MakeVector, &[156, 156, 185, 44], 1535);
-                step(f, Op::AddV, &[53, 44, 54], 1536);
-                step(f, Op::SlerpQ, &[2, 10, 26, 8], 1537);
-                step(f, Op::MakeTransform, &[54, 8, 5, 7], 1538);
-                step(f, Op::ArraySetAt(Elem::Transform), &[5, 7, 7], 1539);
-                step(f, Op::ArrayAt(Elem::Transform), &[5, 7, 18], 1540);
-                step(f, Op::BreakTransform, &[18, 33, 2, 17], 1541);
-                step(f, Op::LerpV, &[33, 27, 182, 53], 1542);
-                step(f, Op::AddV, &[53, 44, 54], 1543);
-                step(f, Op::SlerpQ, &[2, 10, 26, 8], 1544);
-                step(f, Op::MakeTransform, &[54, 8, 5, 7], 1545);
-                step(f, Op::ArraySetAt(Elem::Transform), &[6, 7, 7], 1546);
-                1546
+            1329 => {
+                step(f, Op::ArrayAt(Elem::Transform), &[3, 7, 15], 1330);
+                step(f, Op::BreakTransform, &[15, 36, 2, 43], 1331);
+                step(f, Op::Equals(Elem::Int), &[7, 2, 19], 1332);
+                step(f, Op::Select(ValueType::Int), &[19, 3, 2, 9], 1333);
+                step(f, Op::ArrayAt(Elem::Transform), &[6, 9, 14], 1334);
+                step(f, Op::BreakTransform, &[14, 30, 8, 17], 1335);
+                step(f, Op::MakeAbsolute, &[14, 5, 13], 1336);
+                step(f, Op::BreakTransform, &[13, 48, 7, 45], 1337);
+                step(f, Op::ArrayAt(Elem::Float), &[2, 9, 185], 1338);
+                step(f, Op::SmoothStepF, &[185, 158, 160, 197], 1339);
+                step(f, Op::RemapF, &[18, 158, 94, 158, 160, 9, 220], 1340);
+                step(f, Op::MulF, &[197, 220, 187], 1341);
+                step(f, Op::Select(ValueType::Float), &[19, 187, 158, 190], 1342);
+                step(f, Op::LerpV, &[30, 48, 190, 51], 1343);
+                step(f, Op::MakeTransform, &[51, 1, 6, 16], 1344);
+                step(f, Op::BreakTransform, &[16, 19, 9, 38], 1345);
+                step(f, Op::SubF, &[160, 19, 212], 1346);
+                step(f, Op::MulF, &[196, 212, 223], 1347);
+                step(f, Op::MulF, &[17, 223, 205], 1348);
+                step(f, Op::FootAvoidance, &[36, 19, 205, 19, 91, 31], 1349);
+                step(f, Op::MakeTransform, &[31, 2, 6, 17], 1350);
+                step(f, Op::BreakTransform, &[17, 32, 2, 55], 1351);
+                step(f, Op::MakeVector, &[158, 158, 64, 37], 1352);
+                step(f, Op::AddV, &[32, 37, 57], 1353);
+                step(f, Op::SubV, &[32, 37, 20], 1354);
+                step(f, Op::LineTrace, &[57, 20, 12, 33, 21, 211], 1355);
+                step(f, Op::RotateVector, &[2, 10, 39], 1356);
+                step(f, Op::FindQuatBetween, &[39, 21, 10], 1357);
+                step(f, Op::MulQ, &[10, 2, 11], 1358);
+                step(f, Op::MulF, &[62, 61, 189], 1359);
+                step(f, Op::AddF, &[189, 72, 215], 1360);
+                step(f, Op::NegF, &[215, 191], 1361);
+                step(f, Op::MakeVector, &[158, 191, 158, 40], 1362);
+                step(f, Op::RotateVector, &[11, 40, 41], 1363);
+                step(f, Op::AddV, &[33, 41, 34], 1364);
+                step(f, Op::AddV, &[34, 37, 35], 1365);
+                step(f, Op::SubV, &[34, 37, 44], 1366);
+                step(f, Op::LineTrace, &[35, 44, 13, 53, 42, 186], 1367);
+                step(f, Op::BreakVector, &[53, 193, 201, 188], 1368);
+                step(f, Op::BreakVector, &[34, 202, 194, 200], 1369);
+                step(f, Op::SubF, &[188, 200, 192], 1370);
+                step(f, Op::Select(ValueType::Float), &[13, 192, 158, 195], 1371);
+                step(f, Op::AddF, &[68, 72, 207], 1372);
+                step(f, Op::MakeVector, &[158, 207, 158, 43], 1373);
+                step(f, Op::RotateVector, &[11, 43, 36], 1374);
+                step(f, Op::AddV, &[33, 36, 31], 1375);
+                step(f, Op::AddV, &[31, 37, 55], 1376);
+                step(f, Op::SubV, &[31, 37, 32], 1377);
+                step(f, Op::LineTrace, &[55, 32, 14, 20, 57, 217], 1378);
+                step(f, Op::BreakVector, &[20, 210, 183, 216], 1379);
+                step(f, Op::BreakVector, &[31, 203, 218, 219], 1380);
+                step(f, Op::SubF, &[216, 219, 221], 1381);
+                step(f, Op::Select(ValueType::Float), &[14, 221, 158, 198], 1382);
+                step(f, Op::MaxF, &[195, 198, 214], 1383);
+                step(f, Op::ClampF, &[214, 158, 71, 224], 1384);
+                step(f, Op::MakeVector, &[158, 158, 224, 21], 1385);
+                step(f, Op::AddV, &[33, 21, 39], 1386);
+                step(f, Op::MakeTransform, &[39, 11, 6, 18], 1387);
+                step(f, Op::Select(ValueType::Transform), &[12, 18, 17, 19], 1388);
+                step(f, Op::Copy(ValueType::Transform), &[19, 17], 1389);
+                step(f, Op::ArraySetAt(Elem::Transform), &[0, 7, 17], 1390);
+                1390
             }
-            1546 => {
-                step(f, Op::GreaterEqualF, &[219, 158, 20], 1547);
-                step(f, Op::ArraySetAt(Elem::Bool), &[0, 7, 20], 1548);
-                step(f, Op::ArrayAt(Elem::Transform), &[1, 7, 6], 1549);
-                step(f, Op::BreakTransform, &[6, 59, 6, 47], 1550);
-                step(f, Op::SubF, &[158, 219, 222], 1551);
-                step(f, Op::MulF, &[13, 10, 196], 1552);
-                step(f, Op::MulF, &[222, 196, 208], 1553);
-                step(f, Op::ScaleV, &[2, 208, 49], 1554);
-                step(f, Op::AddV, &[59, 49, 55], 1555);
-                step(f, Op::Equals(Elem::Int), &[7, 2, 19], 1556);
-                step(f, Op::Select(ValueType::Int), &[19, 3, 2, 12], 1557);
-                step(f, Op::ArrayAt(Elem::Bool), &[0, 12, 12], 1558);
-                step(f, Op::ArrayAt(Elem::Transform), &[0, 12, 4], 1559);
-                step(f, Op::BreakTransform, &[4, 56, 3, 46], 1560);
-                step(f, Op::ArrayAt(Elem::Transform), &[3, 12, 8], 1561);
-                step(f, Op::BreakTransform, &[8, 45, 5, 57], 1562);
-                step(f, Op::LessEqualF, &[93, 156, 17], 1563);
-                step(f, Op::ArrayAt(Elem::Float), &[2, 12, 201], 1564);
-                step(f, Op::SmoothStepF, &[201, 156, 93, 209], 1565);
-                step(f, Op::Select(ValueType::Float), &[17, 158, 209, 217], 1566);
-                step(f, Op::LerpV, &[56, 45, 217, 16], 1567);
-                step(f, Op::MakeTransform, &[16, 1, 5, 9], 1568);
-                step(f, Op::Select(ValueType::Transform), &[12, 4, 9, 10], 1569);
-                step(f, Op::MakeAbsolute, &[10, 5, 11], 1570);
-                step(f, Op::Select(ValueType::Transform), &[19, 11, 10, 12], 1571);
-                step(f, Op::BreakTransform, &[12, 23, 4, 21], 1572);
-                step(f, Op::SubF, &[158, 19, 195], 1573);
-                step(f, Op::MulF, &[198, 195, 212], 1574);
-                step(f, Op::MulF, &[17, 212, 181], 1575);
-                step(f, Op::FootAvoidance, &[55, 23, 181, 19, 89, 24], 1576);
-                step(f, Op::RemapF, &[18, 92, 158, 156, 158, 9, 218], 1577);
-                step(f, Op::LerpV, &[55, 24, 218, 25], 1578);
-                step(f, Op::FootAvoidance, &[25, 23, 20, 19, 115, 26], 1579);
-                step(f, Op::LerpV, &[25, 26, 19, 22], 1580);
-                step(f, Op::MakeTransform, &[22, 1, 5, 14], 1581);
-                step(f, Op::ArraySetAt(Elem::Transform), &[4, 7, 14], 1582);
-                step(f, Op::ArrayAt(Elem::Transform), &[5, 7, 13], 1583);
-                step(f, Op::BreakTransform, &[13, 43, 7, 37], 1584);
-                step(f, Op::MakeVector, &[156, 156, 58, 42], 1585);
-                step(f, Op::AddV, &[43, 42, 36], 1586);
-                step(f, Op::GetTransform, &[0, 2, 9, 16], 1587);
-                step(f, Op::BreakTransform, &[16, 48, 9, 34], 1588);
-                step(f, Op::MakeTransform, &[36, 9, 5, 15], 1589);
-                step(f, Op::ArrayAt(Elem::Bone), &[2, 7, 20], 1590);
-                step(f, Op::GetTransform, &[20, 2, 9, 17], 1591);
-                step(f, Op::BreakTransform, &[17, 39, 11, 32], 1592);
-                step(f, Op::SubV, &[39, 48, 35], 1593);
-                step(f, Op::AddV, &[36, 35, 40], 1594);
-                step(f, Op::FootPivots, &[36, 40, 60, 59, 58, 61, 29, 41, 20], 1595);
-                step(f, Op::GetParent, &[0, 18], 1596);
-                step(f, Op::GetParent, &[18, 19], 1597);
-                step(f, Op::GetTransform, &[19, 2, 10, 19], 1598);
-                step(f, Op::BreakTransform, &[19, 52, 2, 19], 1599);
-                step(f, Op::SubV, &[43, 52, 28], 1600);
-                step(f, Op::DotV, &[28, 8, 197], 1601);
-                step(f, Op::RemapF, &[197, 95, 94, 96, 156, 9, 216], 1602);
-                step(f, Op::LengthV, &[2, 183], 1603);
-                step(f, Op::RemapF, &[183, 156, 106, 156, 158, 9, 202], 1604);
-                step(f, Op::MulF, &[216, 202, 199], 1605);
-                step(f, Op::QuatFromAxisAngle, &[12, 199, 10], 1606);
-                step(f, Op::RotateAroundPoint, &[15, 29, 10, 18], 1607);
-                step(f, Op::ArrayAt(Elem::Float), &[2, 7, 190], 1608);
-                step(f, Op::SmoothStepF, &[190, 156, 100, 187], 1609);
-                step(f, Op::SubF, &[158, 190, 203], 1610);
-                step(f, Op::SmoothStepF, &[203, 156, 100, 205], 1611);
-                step(f, Op::MulF, &[187, 205, 188], 1612);
-                step(f, Op::LerpF, &[99, 158, 188, 207], 1613);
-                step(f, Op::MulF, &[199, 207, 210], 1614);
-                step(f, Op::QuatFromAxisAngle, &[12, 210, 8], 1615);
-                step(f, Op::SubV, &[41, 29, 51], 1616);
-                step(f, Op::RotateVector, &[8, 51, 31], 1617);
-                step(f, Op::AddV, &[29, 31, 50], 1618);
-                step(f, Op::RemapF, &[197, 97, 95, 98, 156, 9, 213], 1619);
-                step(f, Op::MulF, &[213, 202, 214], 1620);
-                step(f, Op::QuatFromAxisAngle, &[12, 214, 6], 1621);
-                step(f, Op::RotateAroundPoint, &[18, 50, 6, 7], 1622);
-                step(f, Op::RemapF, &[197, 101, 102, 156, 103, 9, 192], 1623);
-                step(f, Op::RotateVector, &[7, 9, 30], 1624);
-                step(f, Op::BreakVector, &[30, 189, 184, 186], 1625);
-                step(f, Op::CosF, &[105, 204], 1626);
-                step(f, Op::CosF, &[104, 211], 1627);
-                step(f, Op::RemapF, &[186, 204, 211, 156, 158, 9, 220], 1628);
-                step(f, Op::MulF, &[202, 220, 180], 1629);
-                step(f, Op::MulF, &[192, 180, 200], 1630);
-                step(f, Op::QuatFromAxisAngle, &[12, 200, 3], 1631);
-                step(f, Op::RotateAroundPoint, &[7, 20, 3, 6], 1632);
-                step(f, Op::SubF, &[158, 18, 206], 1633);
-                step(f, Op::MulF, &[17, 206, 215], 1634);
-                step(f, Op::LimitRotationAroundZ, &[7, 215, 107, 5], 1635);
-                step(f, Op::RotateAroundPoint, &[6, 43, 5, 8], 1636);
-                step(f, Op::BreakTransform, &[8, 58, 4, 18], 1637);
-                step(f, Op::ArrayAt(Elem::Float), &[4, 7, 193], 1638);
-                step(f, Op::MulF, &[193, 108, 191], 1639);
-                step(f, Op::MulF, &[191, 109, 194], 1640);
-                step(f, Op::AddF, &[191, 109, 221], 1641);
-                step(f, Op::DivF, &[194, 221, 185], 1642);
-                step(f, Op::MakeVector, &[156, 156, 185, 38], 1643);
-                step(f, Op::AddV, &[58, 38, 17], 1644);
-                step(f, Op::MakeTransform, &[17, 4, 18, 4], 1645);
-                step(f, Op::ArraySetAt(Elem::Transform), &[7, 7, 4], 1646);
-                step(f, Op::JumpIfFalse, &[8, 1651], 1647)
+            1390 => {
+                step(f, Op::ArrayAt(Elem::Transform), &[0, 7, 18], 1391);
+                step(f, Op::BreakTransform, &[18, 40, 2, 41], 1392);
+                step(f, Op::SubV, &[40, 50, 35], 1393);
+                step(f, Op::LengthV, &[35, 222], 1394);
+                step(f, Op::SubF, &[73, 74, 199], 1395);
+                step(f, Op::SubF, &[222, 199, 211], 1396);
+                step(f, Op::MulF, &[74, 163, 189], 1397);
+                step(f, Op::ClampF, &[211, 158, 189, 215], 1398);
+                step(f, Op::MulF, &[215, 215, 191], 1399);
+                step(f, Op::MulF, &[74, 174, 186], 1400);
+                step(f, Op::DivF, &[191, 186, 193], 1401);
+                step(f, Op::SubF, &[222, 193, 201], 1402);
+                step(f, Op::DivF, &[201, 222, 194], 1403);
+                step(f, Op::ScaleV, &[35, 194, 42], 1404);
+                step(f, Op::AddV, &[50, 42, 44], 1405);
+                step(f, Op::MakeTransform, &[44, 2, 6, 19], 1406);
+                step(f, Op::ArraySetAt(Elem::Transform), &[5, 7, 19], 1407);
+                step(f, Op::ArraySetAt(Elem::Transform), &[6, 7, 19], 1408);
+                step(f, Op::Jump, &[1578], 1409)
             }
-            1647 => {
-                step(f, Op::DrawPoint, &[20, 174, 12], 1648);
-                step(f, Op::DrawPoint, &[29, 174, 8], 1649);
-                step(f, Op::DrawPoint, &[50, 174, 9], 1650);
-                step(f, Op::DrawTransform, &[13, 173, 157], 1651);
-                1651
+            1409 => {
+                step(f, Op::ArrayAt(Elem::Transform), &[0, 7, 18], 1410);
+                step(f, Op::BreakTransform, &[18, 40, 2, 41], 1411);
+                step(f, Op::SubV, &[40, 50, 35], 1412);
+                step(f, Op::LengthV, &[35, 222], 1413);
+                step(f, Op::SubF, &[73, 74, 199], 1414);
+                step(f, Op::SubF, &[222, 199, 211], 1415);
+                step(f, Op::MulF, &[74, 163, 189], 1416);
+                step(f, Op::ClampF, &[211, 158, 189, 215], 1417);
+                step(f, Op::MulF, &[215, 215, 191], 1418);
+                step(f, Op::MulF, &[74, 174, 186], 1419);
+                step(f, Op::DivF, &[191, 186, 193], 1420);
+                step(f, Op::SubF, &[222, 193, 201], 1421);
+                step(f, Op::DivF, &[201, 222, 194], 1422);
+                step(f, Op::ScaleV, &[35, 194, 42], 1423);
+                step(f, Op::AddV, &[50, 42, 44], 1424);
+                step(f, Op::MakeTransform, &[44, 2, 6, 19], 1425);
+                step(f, Op::ArrayAt(Elem::Transform), &[3, 7, 15], 1426);
+                step(f, Op::ClampF, &[204, 158, 160, 202], 1427);
+                step(f, Op::Copy(ValueType::Array(Elem::Vec3)), &[6, 5], 1428);
+                step(f, Op::ArrayReset(Elem::Vec3), &[5], 1429);
+                step(f, Op::BreakTransform, &[19, 53, 10, 34], 1430);
+                step(f, Op::ArrayAdd(Elem::Vec3), &[5, 53], 1431);
+                step(f, Op::UnitV, &[2, 43], 1432);
+                step(f, Op::LengthV, &[2, 188], 1433);
+                step(f, Op::RemapF, &[188, 158, 75, 158, 76, 9, 200], 1434);
+                step(f, Op::ScaleV, &[43, 200, 36], 1435);
+                step(f, Op::SubV, &[53, 36, 37], 1436);
+                step(f, Op::MakeVector, &[158, 158, 78, 32], 1437);
+                step(f, Op::AddV, &[37, 32, 55], 1438);
+                step(f, Op::ArrayAdd(Elem::Vec3), &[5, 55], 1439);
+                step(f, Op::RemapF, &[188, 158, 75, 158, 81, 9, 192], 1440);
+                step(f, Op::MakeVector, &[158, 158, 192, 57], 1441);
+                step(f, Op::AddV, &[55, 57, 20], 1442);
+                step(f, Op::BreakTransform, &[15, 31, 11, 21], 1443);
+                step(f, Op::BreakVector, &[31, 207, 217, 183], 1444);
+                step(f, Op::BreakVector, &[53, 210, 203, 218], 1445);
+                step(f, Op::SubF, &[183, 218, 216], 1446);
+                step(f, Op::MaxF, &[216, 158, 219], 1447);
+                step(f, Op::MulF, &[219, 83, 221], 1448);
+                step(f, Op::MinF, &[221, 84, 195], 1449);
+                step(f, Op::AbsF, &[216, 198], 1450);
+                step(f, Op::RemapF, &[198, 158, 87, 158, 86, 9, 214], 1451);
+                step(f, Op::AddF, &[195, 214, 224], 1452);
+                step(f, Op::MakeVector, &[158, 158, 224, 33], 1453);
+                step(f, Op::AddV, &[20, 33, 39], 1454);
+                step(f, Op::ArrayAdd(Elem::Vec3), &[5, 39], 1455);
+                step(f, Op::RemapF, &[188, 158, 75, 158, 77, 9, 199], 1456);
+                step(f, Op::ScaleV, &[43, 199, 41], 1457);
+                step(f, Op::AddV, &[31, 41, 40], 1458);
+                step(f, Op::LerpF, &[29, 52, 18, 189], 1459);
+                step(f, Op::MulF, &[14, 189, 211], 1460);
+                step(f, Op::RemapF, &[211, 160, 38, 79, 80, 9, 215], 1461);
+                step(f, Op::MakeVector, &[158, 158, 215, 35], 1462);
+                step(f, Op::AddV, &[40, 35, 42], 1463);
+                step(f, Op::RemapF, &[188, 158, 75, 158, 82, 9, 186], 1464);
+                step(f, Op::MakeVector, &[158, 158, 186, 50], 1465);
+                step(f, Op::AddV, &[42, 50, 44], 1466);
+                step(f, Op::NegF, &[216, 191], 1467);
+                step(f, Op::MaxF, &[191, 158, 193], 1468);
+                step(f, Op::MulF, &[193, 85, 201], 1469);
+                step(f, Op::AddF, &[201, 214, 222], 1470);
+                step(f, Op::MakeVector, &[158, 158, 222, 34], 1471);
+                step(f, Op::AddV, &[44, 34, 36], 1472);
+                step(f, Op::LerpV, &[39, 36, 159, 32], 1473);
+                step(f, Op::GetTransform, &[35, 2, 9, 17], 1474);
+                step(f, Op::BreakTransform, &[17, 37, 2, 55], 1475);
+                step(f, Op::BreakVector, &[37, 194, 200, 192], 1476);
+                step(f, Op::SubF, &[160, 18, 207], 1477);
+                step(f, Op::MulF, &[88, 207, 217], 1478);
+                step(f, Op::MulF, &[17, 217, 203], 1479);
+                step(f, Op::QuatFromAxisAngle, &[10, 203, 2], 1480);
+                step(f, Op::SubV, &[32, 37, 57], 1481);
+                step(f, Op::BreakVector, &[57, 210, 183, 218], 1482);
+                step(f, Op::MakeVector, &[210, 183, 158, 21], 1483);
+                step(f, Op::RotateVector, &[2, 21, 20], 1484);
+                step(f, Op::BreakVector, &[20, 219, 221, 198], 1485);
+                step(f, Op::AddF, &[194, 219, 195], 1486);
+                step(f, Op::AddF, &[200, 221, 224], 1487);
+                step(f, Op::BreakVector, &[32, 199, 189, 211], 1488);
+                step(f, Op::MakeVector, &[195, 224, 211, 33], 1489);
+                step(f, Op::DistanceV, &[53, 31, 215], 1490);
+                step(f, Op::RemapF, &[215, 163, 175, 158, 160, 9, 188], 1491);
+                step(f, Op::LerpV, &[32, 33, 188, 43], 1492);
+                step(f, Op::ArrayAdd(Elem::Vec3), &[5, 43], 1493);
+                step(f, Op::ArrayAdd(Elem::Vec3), &[5, 36], 1494);
+                step(f, Op::ArrayAdd(Elem::Vec3), &[5, 42], 1495);
+                step(f, Op::ArrayAdd(Elem::Vec3), &[5, 31], 1496);
+                step(f, Op::JumpIfFalse, &[8, 1498], 1497)
             }
-            1651 => {
-                step(f, Op::Jump, &[723], 1652)
+            1497 => {
+                step(f, Op::DrawSpline, &[5, 2, 5, 159, 12], 1498);
+                1498
             }
-            1652 => {
-                step(f, Op::Copy(ValueType::Array(Elem::Bone)), &[1, 5], 1653);
-                step(f, Op::Copy(ValueType::Int), &[2, 8], 1654);
-                1654
+            1498 => {
+                step(f, Op::Spline, &[5, 202, 2, 41, 35], 1499);
+                step(f, Op::SlerpQ, &[10, 11, 202, 2], 1500);
+                step(f, Op::MulF, &[202, 168, 186], 1501);
+                step(f, Op::SinF, &[186, 216], 1502);
+                step(f, Op::SmoothStepF, &[202, 158, 102, 191], 1503);
+                step(f, Op::MulF, &[216, 191, 193], 1504);
+                step(f, Op::MulF, &[193, 89, 201], 1505);
+                step(f, Op::SlerpQ, &[2, 1, 201, 10], 1506);
+                step(f, Op::MakeTransform, &[41, 10, 6, 18], 1507);
+                step(f, Op::Copy(ValueType::Transform), &[18, 19], 1508);
+                step(f, Op::BreakTransform, &[19, 40, 11, 50], 1509);
+                step(f, Op::Equals(Elem::Int), &[7, 2, 19], 1510);
+                step(f, Op::Select(ValueType::Int), &[19, 3, 2, 9], 1511);
+                step(f, Op::ArrayAt(Elem::Transform), &[6, 9, 14], 1512);
+                step(f, Op::BreakTransform, &[14, 30, 8, 17], 1513);
+                step(f, Op::GreaterF, &[27, 158, 18], 1514);
+                step(f, Op::InterpolateTransform, &[2, 3, 28, 7], 1515);
+                step(f, Op::Select(ValueType::Transform), &[18, 7, 2, 5], 1516);
+                step(f, Op::MakeAbsolute, &[14, 5, 13], 1517);
+                step(f, Op::BreakTransform, &[13, 48, 7, 45], 1518);
+                step(f, Op::ArrayAt(Elem::Float), &[2, 9, 185], 1519);
+                step(f, Op::SmoothStepF, &[185, 158, 160, 197], 1520);
+                step(f, Op::RemapF, &[18, 158, 94, 158, 160, 9, 220], 1521);
+                step(f, Op::MulF, &[197, 220, 187], 1522);
+                step(f, Op::Select(ValueType::Float), &[19, 187, 158, 190], 1523);
+                step(f, Op::LerpV, &[30, 48, 190, 51], 1524);
+                step(f, Op::MakeTransform, &[51, 1, 6, 16], 1525);
+                step(f, Op::BreakTransform, &[16, 19, 9, 38], 1526);
+                step(f, Op::SubF, &[160, 18, 196], 1527);
+                step(f, Op::SubF, &[160, 19, 212], 1528);
+                step(f, Op::MulF, &[196, 212, 223], 1529);
+                step(f, Op::MulF, &[17, 223, 205], 1530);
+                step(f, Op::ArrayAt(Elem::Bool), &[0, 9, 17], 1531);
+                step(f, Op::Select(ValueType::Float), &[17, 92, 158, 214], 1532);
+                step(f, Op::ArrayAt(Elem::Float), &[2, 7, 204], 1533);
+                step(f, Op::ClampF, &[204, 158, 160, 202], 1534);
+                step(f, Op::MulF, &[202, 168, 222], 1535);
+                step(f, Op::SinF, &[222, 192], 1536);
+                step(f, Op::MulF, &[192, 192, 207], 1537);
+                step(f, Op::MulF, &[214, 207, 217], 1538);
+                step(f, Op::AddF, &[91, 217, 203], 1539);
+                step(f, Op::FootAvoidance, &[40, 19, 205, 19, 203, 34], 1540);
+                step(f, Op::SubV, &[34, 40, 44], 1541);
+                step(f, Op::LengthV, &[44, 218], 1542);
+                step(f, Op::AddF, &[218, 217, 183], 1543);
+                step(f, Op::DivF, &[218, 183, 210], 1544);
+                step(f, Op::MulF, &[116, 163, 198], 1545);
+                step(f, Op::LessEqualF, &[218, 198, 16], 1546);
+                step(f, Op::MulF, &[116, 174, 194], 1547);
+                step(f, Op::DivF, &[218, 194, 219], 1548);
+                step(f, Op::DivF, &[116, 218, 200], 1549);
+                step(f, Op::SubF, &[160, 200, 221], 1550);
+                step(f, Op::Select(ValueType::Float), &[16, 219, 221, 189], 1551);
+                step(f, Op::GreaterF, &[116, 158, 13], 1552);
+                step(f, Op::Select(ValueType::Float), &[13, 19, 158, 199], 1553);
+                step(f, Op::LerpF, &[210, 189, 199, 195], 1554);
+                step(f, Op::LessF, &[185, 204, 14], 1555);
+                step(f, Op::LessEqualF, &[93, 158, 12], 1556);
+                step(f, Op::SmoothStepF, &[185, 158, 93, 211], 1557);
+                step(f, Op::MulF, &[211, 18, 224], 1558);
+                step(f, Op::SubF, &[160, 224, 215], 1559);
+                step(f, Op::Select(ValueType::Float), &[12, 160, 215, 188], 1560);
+                step(f, Op::Select(ValueType::Float), &[14, 188, 160, 186], 1561);
+                step(f, Op::MulF, &[195, 186, 191], 1562);
+                step(f, Op::SmoothStepF, &[202, 158, 93, 216], 1563);
+                step(f, Op::Select(ValueType::Float), &[12, 160, 216, 193], 1564);
+                step(f, Op::MulF, &[191, 193, 201], 1565);
+                step(f, Op::ScaleV, &[44, 201, 39], 1566);
+                step(f, Op::AddV, &[40, 39, 55], 1567);
+                step(f, Op::MulF, &[6, 149, 197], 1568);
+                step(f, Op::MulF, &[197, 207, 220], 1569);
+                step(f, Op::MakeVector, &[158, 158, 220, 37], 1570);
+                step(f, Op::AddV, &[55, 37, 57], 1571);
+                step(f, Op::MakeTransform, &[57, 11, 6, 15], 1572);
+                step(f, Op::ArraySetAt(Elem::Transform), &[5, 7, 15], 1573);
+                step(f, Op::ScaleV, &[44, 191, 21], 1574);
+                step(f, Op::AddV, &[40, 21, 20], 1575);
+                step(f, Op::AddV, &[20, 37, 53], 1576);
+                step(f, Op::MakeTransform, &[53, 11, 6, 17], 1577);
+                step(f, Op::ArraySetAt(Elem::Transform), &[6, 7, 17], 1578);
+                1578
             }
-            1654 => {
-                step(f, Op::ForEachNext(Elem::Bone), &[5, 8, 1, 6, 9, 1693], 1655)
+            1578 => {
+                step(f, Op::JumpIfFalse, &[18, 1601], 1579)
             }
-            1655 => {
-                step(f, Op::GetParent, &[1, 22], 1656);
-                step(f, Op::GetParent, &[22, 23], 1657);
-                step(f, Op::GetParent, &[23, 24], 1658);
-                step(f, Op::GetTransform, &[24, 2, 10, 9], 1659);
-                step(f, Op::BreakTransform, &[9, 27, 9, 33], 1660);
-                step(f, Op::LengthV, &[1, 182], 1661);
-                step(f, Op::ClavicleOffset, &[15, 182, 121, 125, 219], 1662);
-                step(f, Op::MakeVector, &[156, 156, 219, 44], 1663);
-                step(f, Op::AddV, &[27, 44, 53], 1664);
-                step(f, Op::MakeTransform, &[53, 9, 5, 5], 1665);
-                step(f, Op::SetTransform, &[24, 5, 2, 9, 158], 1666);
-                step(f, Op::GetTransform, &[1, 2, 10, 10], 1667);
-                step(f, Op::GetTransform, &[23, 2, 10, 11], 1668);
-                step(f, Op::BreakTransform, &[11, 54, 11, 47], 1669);
-                step(f, Op::Equals(Elem::Int), &[6, 2, 13], 1670);
-                step(f, Op::Select(ValueType::Int), &[13, 3, 2, 11], 1671);
-                step(f, Op::ArrayAt(Elem::Float), &[0, 11, 196], 1672);
-                step(f, Op::ArmSwingRotation, &[196, 1, 0, 122, 165, 175, 158, 121, 119, 120, 123, 165, 158, 222], 1673);
-                step(f, Op::QuatFromAxisAngle, &[12, 222, 2], 1674);
-                step(f, Op::RotateAroundPoint, &[10, 54, 2, 12], 1675);
-                step(f, Op::BreakTransform, &[12, 49, 10, 59], 1676);
-                step(f, Op::RemapF, &[182, 156, 121, 156, 124, 9, 208], 1677);
-                step(f, Op::MakeVector, &[156, 156, 208, 46], 1678);
-                step(f, Op::AddV, &[49, 46, 57], 1679);
-                step(f, Op::MakeTransform, &[57, 10, 5, 14], 1680);
-                step(f, Op::Select(ValueType::Vec3), &[13, 13, 12, 45], 1681);
-                step(f, Op::Select(ValueType::Vec3), &[13, 8, 14, 56], 1682);
-                step(f, Op::ArrayAt(Elem::Vec3), &[4, 6, 16], 1683);
-                step(f, Op::TwoBoneIK, &[23, 22, 1, 14, 45, 56, 16, 2, 158, 10, 176, 177, 9, 16, 201], 1684);
-                step(f, Op::JumpIfFalse, &[8, 1692], 1685)
+            1579 => {
+                step(f, Op::ArrayAt(Elem::Transform), &[5, 7, 18], 1580);
+                step(f, Op::BreakTransform, &[18, 32, 2, 33], 1581);
+                step(f, Op::ArrayAt(Elem::Transform), &[8, 7, 19], 1582);
+                step(f, Op::BreakTransform, &[19, 43, 10, 36], 1583);
+                step(f, Op::MulF, &[27, 27, 187], 1584);
+                step(f, Op::LerpV, &[32, 43, 187, 42], 1585);
+                step(f, Op::SubF, &[160, 27, 190], 1586);
+                step(f, Op::MulF, &[27, 190, 222], 1587);
+                step(f, Op::MulF, &[151, 163, 192], 1588);
+                step(f, Op::MulF, &[222, 192, 214], 1589);
+                step(f, Op::MakeVector, &[158, 158, 214, 31], 1590);
+                step(f, Op::AddV, &[42, 31, 35], 1591);
+                step(f, Op::SlerpQ, &[2, 10, 27, 8], 1592);
+                step(f, Op::MakeTransform, &[35, 8, 6, 7], 1593);
+                step(f, Op::ArraySetAt(Elem::Transform), &[5, 7, 7], 1594);
+                step(f, Op::ArrayAt(Elem::Transform), &[5, 7, 18], 1595);
+                step(f, Op::BreakTransform, &[18, 32, 2, 33], 1596);
+                step(f, Op::LerpV, &[32, 43, 187, 42], 1597);
+                step(f, Op::AddV, &[42, 31, 35], 1598);
+                step(f, Op::SlerpQ, &[2, 10, 27, 8], 1599);
+                step(f, Op::MakeTransform, &[35, 8, 6, 7], 1600);
+                step(f, Op::ArraySetAt(Elem::Transform), &[6, 7, 7], 1601);
+                1601
             }
-            1685 => {
-                step(f, Op::GetTransform, &[23, 2, 10, 11], 1686);
-                step(f, Op::BreakTransform, &[11, 54, 11, 47], 1687);
-                step(f, Op::GetTransform, &[1, 2, 10, 10], 1688);
-                step(f, Op::RotateAroundPoint, &[10, 54, 2, 12], 1689);
-                step(f, Op::BreakTransform, &[12, 49, 10, 59], 1690);
-                step(f, Op::AddV, &[49, 46, 57], 1691);
-                step(f, Op::DrawLine, &[54, 57, 157, 8], 1692);
-                1692
-            }
-            1692 => {
-                step(f, Op::Jump, &[1654], 1693)
-            }
-            1693 => {
-                step(f, Op::NegF, &[5, 209], 1694);
-                step(f, Op::MakeVector, &[156, 156, 209, 21], 1695);
-                step(f, Op::MakeTransform, &[21, 1, 5, 16], 1696);
-                step(f, Op::SetTransform, &[36, 16, 2, 9, 158], 1697);
-                step(f, Op::Copy(ValueType::Float), &[163, 217], 1698);
-                step(f, Op::Copy(ValueType::Bool), &[10, 18], 1699);
-                step(f, Op::Copy(ValueType::Array(Elem::Transform)), &[5, 11], 1700);
-                step(f, Op::Copy(ValueType::Int), &[2, 12], 1701);
-                step(f, Op::MakeVector, &[156, 156, 63, 24], 1702);
-                1702
+            1601 => {
+                step(f, Op::GreaterEqualF, &[204, 160, 20], 1602);
+                step(f, Op::ArraySetAt(Elem::Bool), &[0, 7, 20], 1603);
+                step(f, Op::ArrayAt(Elem::Transform), &[1, 7, 6], 1604);
+                step(f, Op::BreakTransform, &[6, 56, 6, 49], 1605);
+                step(f, Op::SubF, &[160, 204, 208], 1606);
+                step(f, Op::MulF, &[13, 10, 184], 1607);
+                step(f, Op::MulF, &[208, 184, 213], 1608);
+                step(f, Op::ScaleV, &[2, 213, 47], 1609);
+                step(f, Op::AddV, &[56, 47, 46], 1610);
+                step(f, Op::Equals(Elem::Int), &[7, 2, 19], 1611);
+                step(f, Op::Select(ValueType::Int), &[19, 3, 2, 9], 1612);
+                step(f, Op::ArrayAt(Elem::Bool), &[0, 9, 11], 1613);
+                step(f, Op::ArrayAt(Elem::Transform), &[0, 9, 4], 1614);
+                step(f, Op::BreakTransform, &[4, 54, 3, 22], 1615);
+                step(f, Op::ArrayAt(Elem::Transform), &[3, 9, 8], 1616);
+                step(f, Op::BreakTransform, &[8, 24, 5, 18], 1617);
+                step(f, Op::LessEqualF, &[95, 158, 15], 1618);
+                step(f, Op::ArrayAt(Elem::Float), &[2, 9, 185], 1619);
+                step(f, Op::SmoothStepF, &[185, 158, 95, 182], 1620);
+                step(f, Op::Select(ValueType::Float), &[15, 160, 182, 209], 1621);
+                step(f, Op::LerpV, &[54, 24, 209, 25], 1622);
+                step(f, Op::MakeTransform, &[25, 1, 6, 9], 1623);
+                step(f, Op::Select(ValueType::Transform), &[11, 4, 9, 10], 1624);
+                step(f, Op::MakeAbsolute, &[10, 5, 11], 1625);
+                step(f, Op::Select(ValueType::Transform), &[19, 11, 10, 12], 1626);
+                step(f, Op::BreakTransform, &[12, 26, 4, 27], 1627);
+                step(f, Op::SubF, &[160, 19, 212], 1628);
+                step(f, Op::MulF, &[196, 212, 223], 1629);
+                step(f, Op::MulF, &[17, 223, 205], 1630);
+                step(f, Op::FootAvoidance, &[46, 26, 205, 19, 91, 23], 1631);
+                step(f, Op::RemapF, &[18, 94, 160, 158, 160, 9, 206], 1632);
+                step(f, Op::LerpV, &[46, 23, 206, 28], 1633);
+                step(f, Op::FootAvoidance, &[28, 26, 20, 19, 117, 29], 1634);
+                step(f, Op::LerpV, &[28, 29, 19, 52], 1635);
+                step(f, Op::MakeTransform, &[52, 1, 6, 14], 1636);
+                step(f, Op::ArraySetAt(Elem::Transform), &[4, 7, 14], 1637);
+                step(f, Op::ArrayAt(Elem::Transform), &[5, 7, 13], 1638);
+                step(f, Op::BreakTransform, &[13, 41, 7, 50], 1639);
+                step(f, Op::MakeVector, &[158, 158, 59, 17], 1640);
+                step(f, Op::AddV, &[41, 17, 45], 1641);
+                step(f, Op::GetTransform, &[0, 2, 9, 16], 1642);
+                step(f, Op::BreakTransform, &[16, 30, 9, 48], 1643);
+                step(f, Op::MakeTransform, &[45, 9, 6, 15], 1644);
+                step(f, Op::ArrayAt(Elem::Bone), &[2, 7, 20], 1645);
+                step(f, Op::GetTransform, &[20, 2, 9, 17], 1646);
+                step(f, Op::BreakTransform, &[17, 51, 11, 38], 1647);
+                step(f, Op::SubV, &[51, 30, 19], 1648);
+                step(f, Op::AddV, &[45, 19, 34], 1649);
+                step(f, Op::FootPivots, &[45, 34, 61, 60, 59, 62, 39, 55, 57], 1650);
+                step(f, Op::GetParent, &[0, 18], 1651);
+                step(f, Op::GetParent, &[18, 19], 1652);
+                step(f, Op::GetTransform, &[19, 2, 10, 19], 1653);
+                step(f, Op::BreakTransform, &[19, 44, 2, 21], 1654);
+                step(f, Op::SubV, &[41, 44, 40], 1655);
+                step(f, Op::DotV, &[40, 9, 203], 1656);
+                step(f, Op::RemapF, &[203, 97, 96, 98, 158, 9, 217], 1657);
+                step(f, Op::LengthV, &[2, 183], 1658);
+                step(f, Op::RemapF, &[183, 158, 108, 158, 160, 9, 198], 1659);
+                step(f, Op::MulF, &[217, 198, 194], 1660);
+                step(f, Op::QuatFromAxisAngle, &[13, 194, 10], 1661);
+                step(f, Op::RotateAroundPoint, &[15, 39, 10, 18], 1662);
+                step(f, Op::ArrayAt(Elem::Float), &[2, 7, 218], 1663);
+                step(f, Op::SmoothStepF, &[218, 158, 102, 200], 1664);
+                step(f, Op::SubF, &[160, 218, 219], 1665);
+                step(f, Op::SmoothStepF, &[219, 158, 102, 221], 1666);
+                step(f, Op::MulF, &[200, 221, 189], 1667);
+                step(f, Op::LerpF, &[101, 160, 189, 199], 1668);
+                step(f, Op::MulF, &[194, 199, 210], 1669);
+                step(f, Op::QuatFromAxisAngle, &[13, 210, 8], 1670);
+                step(f, Op::SubV, &[55, 39, 20], 1671);
+                step(f, Op::RotateVector, &[8, 20, 37], 1672);
+                step(f, Op::AddV, &[39, 37, 53], 1673);
+                step(f, Op::RemapF, &[203, 99, 97, 100, 158, 9, 211], 1674);
+                step(f, Op::MulF, &[211, 198, 224], 1675);
+                step(f, Op::QuatFromAxisAngle, &[13, 224, 6], 1676);
+                step(f, Op::RotateAroundPoint, &[18, 53, 6, 7], 1677);
+                step(f, Op::RemapF, &[203, 103, 104, 158, 105, 9, 215], 1678);
+                step(f, Op::RotateVector, &[7, 10, 36], 1679);
+                step(f, Op::BreakVector, &[36, 188, 186, 195], 1680);
+                step(f, Op::CosF, &[107, 202], 1681);
+                step(f, Op::CosF, &[106, 216], 1682);
+                step(f, Op::RemapF, &[195, 202, 216, 158, 160, 9, 193], 1683);
+                step(f, Op::MulF, &[198, 193, 201], 1684);
+                step(f, Op::MulF, &[215, 201, 197], 1685);
+                step(f, Op::QuatFromAxisAngle, &[13, 197, 3], 1686);
+                step(f, Op::RotateAroundPoint, &[7, 57, 3, 6], 1687);
+                step(f, Op::SubF, &[160, 18, 207], 1688);
+                step(f, Op::MulF, &[17, 207, 220], 1689);
+                step(f, Op::LimitRotationAroundZ, &[7, 220, 109, 5], 1690);
+                step(f, Op::RotateAroundPoint, &[6, 41, 5, 8], 1691);
+                step(f, Op::BreakTransform, &[8, 33, 4, 32], 1692);
+                step(f, Op::ArrayAt(Elem::Float), &[4, 7, 191], 1693);
+                step(f, Op::MulF, &[191, 110, 190], 1694);
+                step(f, Op::MulF, &[190, 111, 192], 1695);
+                step(f, Op::AddF, &[190, 111, 222], 1696);
+                step(f, Op::DivF, &[192, 222, 214], 1697);
+                step(f, Op::MakeVector, &[158, 158, 214, 43], 1698);
+                step(f, Op::AddV, &[33, 43, 31], 1699);
+                step(f, Op::MakeTransform, &[31, 4, 32, 4], 1700);
+                step(f, Op::ArraySetAt(Elem::Transform), &[7, 7, 4], 1701);
+                step(f, Op::JumpIfFalse, &[8, 1706], 1702)
             }
             1702 => {
-                step(f, Op::ForEachNext(Elem::Transform), &[11, 12, 17, 7, 10, 1714], 1703)
+                step(f, Op::DrawPoint, &[57, 176, 13], 1703);
+                step(f, Op::DrawPoint, &[39, 176, 9], 1704);
+                step(f, Op::DrawPoint, &[53, 176, 10], 1705);
+                step(f, Op::DrawTransform, &[13, 175, 159], 1706);
+                1706
             }
-            1703 => {
-                step(f, Op::BreakTransform, &[17, 55, 8, 23], 1704);
-                step(f, Op::AddV, &[55, 24, 25], 1705);
-                step(f, Op::SubV, &[55, 24, 26], 1706);
-                step(f, Op::SphereTrace, &[25, 26, 62, 15, 22, 37, 195], 1707);
-                step(f, Op::BreakVector, &[22, 198, 212, 181], 1708);
-                step(f, Op::LessF, &[181, 217, 11], 1709);
-                step(f, Op::And, &[15, 11, 14], 1710);
-                step(f, Op::JumpIfFalse, &[14, 1713], 1711)
+            1706 => {
+                step(f, Op::Jump, &[775], 1707)
             }
-            1711 => {
-                step(f, Op::Copy(ValueType::Float), &[181, 217], 1712);
-                step(f, Op::Copy(ValueType::Bool), &[9, 18], 1713);
-                1713
+            1707 => {
+                step(f, Op::Copy(ValueType::Array(Elem::Bone)), &[1, 5], 1708);
+                step(f, Op::Copy(ValueType::Int), &[2, 8], 1709);
+                1709
             }
-            1713 => {
-                step(f, Op::Jump, &[1702], 1714)
+            1709 => {
+                step(f, Op::ForEachNext(Elem::Bone), &[5, 8, 1, 10, 6, 1748], 1710)
             }
-            1714 => {
-                step(f, Op::Select(ValueType::Float), &[18, 217, 156, 218], 1715);
-                step(f, Op::ClampF, &[218, 68, 69, 183], 1716);
-                step(f, Op::Copy(ValueType::Float), &[183, 216], 1717);
-                step(f, Op::SubF, &[158, 26, 190], 1718);
-                step(f, Op::MulF, &[216, 190, 203], 1719);
-                step(f, Op::SubF, &[158, 146, 187], 1720);
-                step(f, Op::MulF, &[5, 187, 205], 1721);
-                step(f, Op::AddF, &[203, 205, 188], 1722);
-                step(f, Op::MakeVector, &[21, 156, 156, 42], 1723);
-                step(f, Op::MakeVector, &[188, 156, 156, 34], 1724);
-                step(f, Op::Select(ValueType::Float), &[2, 188, 22, 199], 1725);
-                step(f, Op::MakeVector, &[199, 156, 156, 32], 1726);
-                step(f, Op::Copy(ValueType::Float), &[56, 207], 1727);
-                step(f, Op::Copy(ValueType::Float), &[57, 210], 1728);
-                step(f, Op::SubV, &[34, 32, 39], 1729);
-                step(f, Op::DeltaTime, &[213], 1730);
-                step(f, Op::DivF, &[210, 213, 214], 1731);
-                step(f, Op::ScaleV, &[39, 214, 48], 1732);
-                step(f, Op::AddV, &[34, 48, 35], 1733);
-                step(f, Op::AddV, &[32, 48, 36], 1734);
-                step(f, Op::SubV, &[42, 36, 40], 1735);
-                step(f, Op::FloatLerp, &[156, 158, 207, 197], 1736);
-                step(f, Op::SubF, &[158, 197, 184], 1737);
-                step(f, Op::ScaleV, &[40, 184, 19], 1738);
-                step(f, Op::AddV, &[35, 19, 52], 1739);
-                step(f, Op::MulF, &[207, 213, 189], 1740);
-                step(f, Op::GreaterF, &[189, 156, 20], 1741);
-                step(f, Op::DivF, &[197, 189, 186], 1742);
-                step(f, Op::Select(ValueType::Float), &[20, 186, 158, 204], 1743);
-                step(f, Op::ScaleV, &[39, 204, 28], 1744);
-                step(f, Op::SubV, &[52, 28, 41], 1745);
-                step(f, Op::Copy(ValueType::Vec3), &[41, 51], 1746);
-                step(f, Op::BreakVector, &[51, 211, 202, 220], 1747);
-                step(f, Op::Select(ValueType::Float), &[1, 188, 211, 180], 1748);
-                step(f, Op::Copy(ValueType::Float), &[180, 21], 1749);
-                step(f, Op::Copy(ValueType::Float), &[188, 22], 1750);
-                step(f, Op::GetTransform, &[37, 2, 9, 19], 1751);
-                step(f, Op::BreakTransform, &[19, 31, 6, 30], 1752);
-                step(f, Op::PelvisLean, &[1, 128, 133, 134, 192, 200], 1753);
-                step(f, Op::LengthV, &[2, 206], 1754);
-                step(f, Op::RemapF, &[206, 156, 128, 156, 126, 9, 215], 1755);
-                step(f, Op::MulF, &[18, 127, 193], 1756);
-                step(f, Op::SubF, &[158, 193, 191], 1757);
-                step(f, Op::MulF, &[215, 191, 194], 1758);
-                step(f, Op::MulF, &[15, 178, 221], 1759);
-                step(f, Op::SinF, &[221, 185], 1760);
-                step(f, Op::MulF, &[194, 185, 219], 1761);
-                step(f, Op::MulF, &[219, 190, 196], 1762);
-                step(f, Op::AddF, &[196, 21, 222], 1763);
-                step(f, Op::SubF, &[222, 5, 182], 1764);
-                step(f, Op::MakeVector, &[156, 200, 182, 43], 1765);
-                step(f, Op::AddV, &[31, 43, 38], 1766);
-                step(f, Op::ArrayAt(Elem::Transform), &[7, 2, 15], 1767);
-                step(f, Op::BreakTransform, &[15, 58, 3, 17], 1768);
-                step(f, Op::BreakVector, &[58, 208, 201, 209], 1769);
-                step(f, Op::ArrayAt(Elem::Transform), &[7, 3, 18], 1770);
-                step(f, Op::BreakTransform, &[18, 18, 7, 20], 1771);
-                step(f, Op::BreakVector, &[18, 195, 198, 212], 1772);
-                step(f, Op::SubF, &[209, 212, 181], 1773);
-                step(f, Op::PelvisSideLean, &[181, 135, 136, 217], 1774);
-                step(f, Op::ArrayAt(Elem::Transform), &[5, 2, 7], 1775);
-                step(f, Op::BreakTransform, &[7, 29, 5, 50], 1776);
-                step(f, Op::ArrayAt(Elem::Transform), &[5, 3, 6], 1777);
-                step(f, Op::BreakTransform, &[6, 33, 4, 27], 1778);
-                step(f, Op::SlerpQ, &[5, 4, 157, 9], 1779);
-                step(f, Op::EulerFromQuat, &[9, 2, 44], 1780);
-                step(f, Op::BreakVector, &[44, 218, 183, 216], 1781);
-                step(f, Op::RemapF, &[206, 129, 128, 156, 130, 9, 187], 1782);
-                step(f, Op::SubV, &[58, 18, 53], 1783);
-                step(f, Op::RotateVector, &[0, 8, 16], 1784);
-                step(f, Op::DotV, &[53, 16, 203], 1785);
-                step(f, Op::MulF, &[187, 203, 205], 1786);
-                step(f, Op::AddF, &[216, 205, 199], 1787);
-                step(f, Op::MakeVector, &[192, 217, 199, 45], 1788);
-                step(f, Op::QuatFromEuler, &[45, 2, 11], 1789);
-                step(f, Op::MakeTransform, &[38, 11, 5, 8], 1790);
-                step(f, Op::SetTransform, &[38, 8, 2, 9, 158], 1791);
-                step(f, Op::GetTransform, &[39, 3, 9, 4], 1792);
-                step(f, Op::BreakTransform, &[4, 56, 2, 47], 1793);
-                step(f, Op::QuatFromAxisAngle, &[9, 205, 10], 1794);
-                step(f, Op::DivF, &[131, 174, 210], 1795);
-                step(f, Op::QuatScale, &[10, 210, 8], 1796);
-                step(f, Op::MulQ, &[2, 8, 6], 1797);
-                step(f, Op::MakeTransform, &[56, 6, 5, 13], 1798);
-                step(f, Op::SetTransform, &[40, 13, 3, 9, 158], 1799);
-                step(f, Op::GetTransform, &[41, 3, 9, 9], 1800);
-                step(f, Op::BreakTransform, &[9, 59, 3, 46], 1801);
-                step(f, Op::MulQ, &[3, 8, 7], 1802);
-                step(f, Op::MakeTransform, &[59, 7, 5, 5], 1803);
-                step(f, Op::SetTransform, &[42, 5, 3, 9, 158], 1804);
-                step(f, Op::GetTransform, &[43, 3, 9, 14], 1805);
-                step(f, Op::BreakTransform, &[14, 49, 4, 54], 1806);
-                step(f, Op::MulQ, &[4, 8, 5], 1807);
-                step(f, Op::MakeTransform, &[49, 5, 5, 11], 1808);
-                step(f, Op::SetTransform, &[44, 11, 3, 9, 158], 1809);
-                step(f, Op::GetTransform, &[45, 3, 9, 10], 1810);
-                step(f, Op::BreakTransform, &[10, 57, 9, 21], 1811);
-                step(f, Op::QuatScale, &[10, 132, 11], 1812);
-                step(f, Op::MulQ, &[9, 11, 2], 1813);
-                step(f, Op::MakeTransform, &[57, 2, 5, 12], 1814);
-                step(f, Op::SetTransform, &[46, 12, 3, 9, 158], 1815);
-                step(f, Op::Or, &[1, 2, 17], 1816);
-                step(f, Op::Copy(ValueType::Float), &[156, 214], 1817);
-                step(f, Op::Copy(ValueType::Array(Elem::Bone)), &[0, 15], 1818);
-                step(f, Op::Copy(ValueType::Int), &[2, 9], 1819);
-                1819
+            1710 => {
+                step(f, Op::GetParent, &[1, 22], 1711);
+                step(f, Op::GetParent, &[22, 23], 1712);
+                step(f, Op::GetParent, &[23, 24], 1713);
+                step(f, Op::GetTransform, &[24, 2, 10, 9], 1714);
+                step(f, Op::BreakTransform, &[9, 42, 9, 35], 1715);
+                step(f, Op::LengthV, &[1, 187], 1716);
+                step(f, Op::ClavicleOffset, &[15, 187, 123, 127, 204], 1717);
+                step(f, Op::MakeVector, &[158, 158, 204, 49], 1718);
+                step(f, Op::AddV, &[42, 49, 47], 1719);
+                step(f, Op::MakeTransform, &[47, 9, 6, 5], 1720);
+                step(f, Op::SetTransform, &[24, 5, 2, 9, 160], 1721);
+                step(f, Op::GetTransform, &[1, 2, 10, 10], 1722);
+                step(f, Op::GetTransform, &[23, 2, 10, 11], 1723);
+                step(f, Op::BreakTransform, &[11, 56, 11, 22], 1724);
+                step(f, Op::Equals(Elem::Int), &[10, 2, 17], 1725);
+                step(f, Op::Select(ValueType::Int), &[17, 3, 2, 9], 1726);
+                step(f, Op::ArrayAt(Elem::Float), &[0, 9, 184], 1727);
+                step(f, Op::ArmSwingRotation, &[184, 1, 0, 124, 167, 177, 160, 123, 121, 122, 125, 167, 160, 208], 1728);
+                step(f, Op::QuatFromAxisAngle, &[13, 208, 2], 1729);
+                step(f, Op::RotateAroundPoint, &[10, 56, 2, 12], 1730);
+                step(f, Op::BreakTransform, &[12, 18, 10, 24], 1731);
+                step(f, Op::RemapF, &[187, 158, 123, 158, 126, 9, 213], 1732);
+                step(f, Op::MakeVector, &[158, 158, 213, 54], 1733);
+                step(f, Op::AddV, &[18, 54, 25], 1734);
+                step(f, Op::MakeTransform, &[25, 10, 6, 14], 1735);
+                step(f, Op::Select(ValueType::Vec3), &[17, 14, 13, 27], 1736);
+                step(f, Op::Select(ValueType::Vec3), &[17, 9, 15, 23], 1737);
+                step(f, Op::ArrayAt(Elem::Vec3), &[4, 10, 46], 1738);
+                step(f, Op::TwoBoneIK, &[23, 22, 1, 14, 27, 23, 46, 2, 160, 10, 178, 179, 9, 16, 185], 1739);
+                step(f, Op::JumpIfFalse, &[8, 1747], 1740)
             }
-            1819 => {
-                step(f, Op::ForEachNext(Elem::Bone), &[15, 9, 25, 11, 6, 1866], 1820)
+            1740 => {
+                step(f, Op::GetTransform, &[23, 2, 10, 11], 1741);
+                step(f, Op::BreakTransform, &[11, 56, 11, 22], 1742);
+                step(f, Op::GetTransform, &[1, 2, 10, 10], 1743);
+                step(f, Op::RotateAroundPoint, &[10, 56, 2, 12], 1744);
+                step(f, Op::BreakTransform, &[12, 18, 10, 24], 1745);
+                step(f, Op::AddV, &[18, 54, 25], 1746);
+                step(f, Op::DrawLine, &[56, 25, 159, 9], 1747);
+                1747
             }
-            1820 => {
-                step(f, Op::ArrayAt(Elem::Bool), &[0, 11, 12], 1821);
-                step(f, Op::GetParent, &[25, 26], 1822);
-                step(f, Op::GetParent, &[26, 27], 1823);
-                step(f, Op::GetTransform, &[27, 2, 10, 16], 1824);
-                step(f, Op::BreakTransform, &[16, 23, 6, 55], 1825);
-                step(f, Op::BreakVector, &[23, 184, 207, 213], 1826);
-                step(f, Op::ArrayAt(Elem::Transform), &[7, 11, 17], 1827);
-                step(f, Op::BreakTransform, &[17, 25, 3, 26], 1828);
-                step(f, Op::BreakVector, &[25, 189, 197, 186], 1829);
-                step(f, Op::ArrayAt(Elem::Float), &[1, 11, 204], 1830);
-                step(f, Op::MulF, &[204, 137, 202], 1831);
-                step(f, Op::MulF, &[202, 202, 220], 1832);
-                step(f, Op::SubF, &[184, 189, 211], 1833);
-                step(f, Op::SubF, &[207, 197, 180], 1834);
-                step(f, Op::MakeVector, &[211, 180, 156, 37], 1835);
-                step(f, Op::DotV, &[37, 37, 188], 1836);
-                step(f, Op::SubF, &[220, 188, 193], 1837);
-                step(f, Op::SqrtF, &[193, 191], 1838);
-                step(f, Op::AddF, &[186, 191, 215], 1839);
-                step(f, Op::SubF, &[213, 215, 221], 1840);
-                step(f, Op::ArrayAt(Elem::Transform), &[3, 11, 19], 1841);
-                step(f, Op::BreakTransform, &[19, 22, 7, 24], 1842);
-                step(f, Op::BreakVector, &[22, 185, 194, 190], 1843);
-                step(f, Op::AddF, &[190, 58, 219], 1844);
-                step(f, Op::MinF, &[186, 219, 196], 1845);
-                step(f, Op::AddF, &[196, 191, 222], 1846);
-                step(f, Op::SubF, &[213, 222, 182], 1847);
-                step(f, Op::Equals(Elem::Int), &[11, 2, 19], 1848);
-                step(f, Op::Select(ValueType::Int), &[19, 3, 2, 8], 1849);
-                step(f, Op::ArrayAt(Elem::Bool), &[0, 8, 13], 1850);
-                step(f, Op::ArrayAt(Elem::Float), &[2, 8, 200], 1851);
-                step(f, Op::RemapF, &[200, 157, 158, 156, 158, 9, 201], 1852);
-                step(f, Op::RemapF, &[200, 156, 140, 158, 156, 9, 208], 1853);
-                step(f, Op::MaxF, &[201, 208, 195], 1854);
-                step(f, Op::Select(ValueType::Float), &[13, 158, 195, 198], 1855);
-                step(f, Op::LerpF, &[221, 182, 198, 209], 1856);
-                step(f, Op::ArrayAt(Elem::Float), &[2, 11, 212], 1857);
-                step(f, Op::RemapF, &[212, 157, 158, 156, 158, 9, 181], 1858);
-                step(f, Op::MulF, &[209, 181, 183], 1859);
-                step(f, Op::RemapF, &[212, 156, 140, 158, 156, 9, 218], 1860);
-                step(f, Op::MulF, &[221, 218, 206], 1861);
-                step(f, Op::MaxF, &[183, 206, 187], 1862);
-                step(f, Op::Select(ValueType::Float), &[12, 221, 187, 203], 1863);
-                step(f, Op::MaxF, &[214, 203, 216], 1864);
-                step(f, Op::Copy(ValueType::Float), &[216, 214], 1865);
-                step(f, Op::Jump, &[1819], 1866)
+            1747 => {
+                step(f, Op::Jump, &[1709], 1748)
             }
-            1866 => {
-                step(f, Op::ClampF, &[214, 156, 138, 192], 1867);
-                step(f, Op::Copy(ValueType::Float), &[192, 199], 1868);
-                step(f, Op::MakeVector, &[23, 156, 156, 34], 1869);
-                step(f, Op::MakeVector, &[199, 156, 156, 32], 1870);
-                step(f, Op::MakeVector, &[24, 156, 156, 48], 1871);
-                step(f, Op::GreaterF, &[199, 23, 16], 1872);
-                step(f, Op::Select(ValueType::Float), &[16, 142, 139, 217], 1873);
-                step(f, Op::Copy(ValueType::Float), &[57, 205], 1874);
-                step(f, Op::SubV, &[32, 48, 36], 1875);
-                step(f, Op::DeltaTime, &[210], 1876);
-                step(f, Op::DivF, &[205, 210, 204], 1877);
-                step(f, Op::ScaleV, &[36, 204, 42], 1878);
-                step(f, Op::AddV, &[32, 42, 40], 1879);
-                step(f, Op::AddV, &[48, 42, 19], 1880);
-                step(f, Op::SubV, &[34, 19, 35], 1881);
-                step(f, Op::FloatLerp, &[156, 158, 217, 202], 1882);
-                step(f, Op::SubF, &[158, 202, 184], 1883);
-                step(f, Op::ScaleV, &[35, 184, 39], 1884);
-                step(f, Op::AddV, &[40, 39, 28], 1885);
-                step(f, Op::MulF, &[217, 210, 189], 1886);
-                step(f, Op::GreaterF, &[189, 156, 11], 1887);
-                step(f, Op::DivF, &[202, 189, 197], 1888);
-                step(f, Op::Select(ValueType::Float), &[11, 197, 158, 207], 1889);
-                step(f, Op::ScaleV, &[36, 207, 52], 1890);
-                step(f, Op::SubV, &[28, 52, 41], 1891);
-                step(f, Op::Copy(ValueType::Vec3), &[41, 51], 1892);
-                step(f, Op::BreakVector, &[51, 180, 211, 188], 1893);
-                step(f, Op::Select(ValueType::Float), &[17, 199, 180, 220], 1894);
-                step(f, Op::Copy(ValueType::Float), &[220, 23], 1895);
-                step(f, Op::Copy(ValueType::Float), &[199, 24], 1896);
-                step(f, Op::GetTransform, &[47, 2, 10, 15], 1897);
-                step(f, Op::BreakTransform, &[15, 30, 4, 31], 1898);
-                step(f, Op::MakeVector, &[156, 156, 23, 43], 1899);
-                step(f, Op::SubV, &[30, 43, 17], 1900);
-                step(f, Op::MakeTransform, &[17, 4, 5, 18], 1901);
-                step(f, Op::SetTransform, &[48, 18, 2, 9, 158], 1902);
-                step(f, Op::JumpIfFalse, &[8, 1908], 1903)
+            1748 => {
+                step(f, Op::NegF, &[5, 182], 1749);
+                step(f, Op::MakeVector, &[158, 158, 182, 26], 1750);
+                step(f, Op::MakeTransform, &[26, 1, 6, 16], 1751);
+                step(f, Op::SetTransform, &[36, 16, 2, 9, 160], 1752);
+                step(f, Op::Copy(ValueType::Float), &[165, 209], 1753);
+                step(f, Op::Copy(ValueType::Bool), &[10, 13], 1754);
+                step(f, Op::Copy(ValueType::Array(Elem::Transform)), &[5, 11], 1755);
+                step(f, Op::Copy(ValueType::Int), &[2, 7], 1756);
+                step(f, Op::MakeVector, &[158, 158, 64, 28], 1757);
+                1757
             }
-            1903 => {
-                step(f, Op::GetTransform, &[47, 2, 10, 15], 1904);
-                step(f, Op::BreakTransform, &[15, 30, 4, 31], 1905);
-                step(f, Op::SubV, &[30, 43, 17], 1906);
-                step(f, Op::MakeTransform, &[17, 4, 5, 18], 1907);
-                step(f, Op::DrawTransform, &[18, 179, 157], 1908);
-                1908
+            1757 => {
+                step(f, Op::ForEachNext(Elem::Transform), &[11, 7, 17, 6, 8, 1769], 1758)
             }
-            1908 => {
-                step(f, Op::Copy(ValueType::Array(Elem::Bone)), &[0, 6], 1909);
-                step(f, Op::Copy(ValueType::Int), &[2, 7], 1910);
-                1910
+            1758 => {
+                step(f, Op::BreakTransform, &[17, 29, 8, 52], 1759);
+                step(f, Op::AddV, &[29, 28, 50], 1760);
+                step(f, Op::SubV, &[29, 28, 17], 1761);
+                step(f, Op::SphereTrace, &[50, 17, 63, 14, 48, 38, 196], 1762);
+                step(f, Op::BreakVector, &[48, 212, 223, 205], 1763);
+                step(f, Op::LessF, &[205, 209, 12], 1764);
+                step(f, Op::And, &[14, 12, 18], 1765);
+                step(f, Op::JumpIfFalse, &[18, 1768], 1766)
             }
-            1910 => {
-                step(f, Op::ForEachNext(Elem::Bone), &[6, 7, 2, 10, 12, 1959], 1911)
+            1766 => {
+                step(f, Op::Copy(ValueType::Float), &[205, 209], 1767);
+                step(f, Op::Copy(ValueType::Bool), &[9, 13], 1768);
+                1768
             }
-            1911 => {
-                step(f, Op::GetParent, &[2, 29], 1912);
-                step(f, Op::GetParent, &[29, 30], 1913);
-                step(f, Op::GetTransform, &[30, 2, 10, 7], 1914);
-                step(f, Op::BreakTransform, &[7, 20, 8, 29], 1915);
-                step(f, Op::ArrayAt(Elem::Transform), &[7, 10, 6], 1916);
-                step(f, Op::BreakTransform, &[6, 50, 5, 27], 1917);
-                step(f, Op::SubV, &[50, 20, 33], 1918);
-                step(f, Op::LengthV, &[33, 193], 1919);
-                step(f, Op::ArrayAt(Elem::Float), &[1, 10, 215], 1920);
-                step(f, Op::MulF, &[215, 150, 185], 1921);
-                step(f, Op::ArrayAt(Elem::Bool), &[0, 10, 15], 1922);
-                step(f, Op::MulF, &[19, 116, 194], 1923);
-                step(f, Op::ArrayAt(Elem::Float), &[2, 10, 190], 1924);
-                step(f, Op::ClampF, &[190, 156, 158, 186], 1925);
-                step(f, Op::LessF, &[186, 157, 14], 1926);
-                step(f, Op::SmoothStepF, &[186, 152, 153, 219], 1927);
-                step(f, Op::MulF, &[186, 166, 191], 1928);
-                step(f, Op::SinF, &[191, 196], 1929);
-                step(f, Op::MaxF, &[219, 196, 213], 1930);
-                step(f, Op::Select(ValueType::Float), &[14, 213, 196, 222], 1931);
-                step(f, Op::MulF, &[222, 151, 200], 1932);
-                step(f, Op::Select(ValueType::Float), &[15, 194, 200, 201], 1933);
-                step(f, Op::SubF, &[185, 201, 208], 1934);
-                step(f, Op::SubF, &[193, 208, 195], 1935);
-                step(f, Op::MaxF, &[195, 156, 182], 1936);
-                step(f, Op::MulF, &[182, 182, 198], 1937);
-                step(f, Op::AddF, &[182, 201, 181], 1938);
-                step(f, Op::DivF, &[198, 181, 209], 1939);
-                step(f, Op::SubF, &[193, 209, 212], 1940);
-                step(f, Op::DivF, &[212, 193, 218], 1941);
-                step(f, Op::ScaleV, &[33, 218, 44], 1942);
-                step(f, Op::AddV, &[20, 44, 18], 1943);
-                step(f, Op::ClampSpatially, &[18, 20, 156, 185, 58], 1944);
-                step(f, Op::MakeTransform, &[58, 5, 5, 8], 1945);
-                step(f, Op::Equals(Elem::Int), &[10, 2, 18], 1946);
-                step(f, Op::Select(ValueType::Vec3), &[18, 13, 12, 16], 1947);
-                step(f, Op::Select(ValueType::Vec3), &[18, 8, 14, 53], 1948);
-                step(f, Op::ArrayAt(Elem::Transform), &[5, 10, 4], 1949);
-                step(f, Op::BreakTransform, &[4, 45, 10, 38], 1950);
-                step(f, Op::ArrayAt(Elem::Vec3), &[3, 10, 47], 1951);
-                step(f, Op::KneeVector, &[10, 0, 47, 154, 155, 56], 1952);
-                step(f, Op::TwoBoneIK, &[30, 29, 2, 8, 16, 53, 56, 2, 158, 10, 176, 177, 9, 20, 183], 1953);
-                step(f, Op::JumpIfFalse, &[8, 1958], 1954)
+            1768 => {
+                step(f, Op::Jump, &[1757], 1769)
             }
-            1954 => {
-                step(f, Op::GetTransform, &[29, 2, 10, 13], 1955);
-                step(f, Op::BreakTransform, &[13, 46, 9, 59], 1956);
-                step(f, Op::AddV, &[46, 56, 54], 1957);
-                step(f, Op::DrawLine, &[46, 54, 157, 15], 1958);
-                1958
+            1769 => {
+                step(f, Op::Select(ValueType::Float), &[13, 209, 158, 206], 1770);
+                step(f, Op::ClampF, &[206, 69, 70, 183], 1771);
+                step(f, Op::Copy(ValueType::Float), &[183, 217], 1772);
+                step(f, Op::SubF, &[160, 27, 218], 1773);
+                step(f, Op::MulF, &[217, 218, 219], 1774);
+                step(f, Op::SubF, &[160, 148, 200], 1775);
+                step(f, Op::MulF, &[5, 200, 221], 1776);
+                step(f, Op::AddF, &[219, 221, 189], 1777);
+                step(f, Op::MakeVector, &[22, 158, 158, 30], 1778);
+                step(f, Op::MakeVector, &[189, 158, 158, 51], 1779);
+                step(f, Op::Select(ValueType::Float), &[2, 189, 23, 194], 1780);
+                step(f, Op::MakeVector, &[194, 158, 158, 19], 1781);
+                step(f, Op::Copy(ValueType::Float), &[57, 199], 1782);
+                step(f, Op::Copy(ValueType::Float), &[58, 210], 1783);
+                step(f, Op::SubV, &[51, 19, 34], 1784);
+                step(f, Op::DeltaTime, &[211], 1785);
+                step(f, Op::DivF, &[210, 211, 224], 1786);
+                step(f, Op::ScaleV, &[34, 224, 45], 1787);
+                step(f, Op::AddV, &[51, 45, 21], 1788);
+                step(f, Op::AddV, &[19, 45, 44], 1789);
+                step(f, Op::SubV, &[30, 44, 40], 1790);
+                step(f, Op::FloatLerp, &[158, 160, 199, 203], 1791);
+                step(f, Op::SubF, &[160, 203, 186], 1792);
+                step(f, Op::ScaleV, &[40, 186, 55], 1793);
+                step(f, Op::AddV, &[21, 55, 20], 1794);
+                step(f, Op::MulF, &[199, 211, 188], 1795);
+                step(f, Op::GreaterF, &[188, 158, 20], 1796);
+                step(f, Op::DivF, &[203, 188, 195], 1797);
+                step(f, Op::Select(ValueType::Float), &[20, 195, 160, 202], 1798);
+                step(f, Op::ScaleV, &[34, 202, 37], 1799);
+                step(f, Op::SubV, &[20, 37, 36], 1800);
+                step(f, Op::Copy(ValueType::Vec3), &[36, 41], 1801);
+                step(f, Op::BreakVector, &[41, 216, 193, 198], 1802);
+                step(f, Op::Select(ValueType::Float), &[1, 189, 216, 201], 1803);
+                step(f, Op::Copy(ValueType::Float), &[201, 22], 1804);
+                step(f, Op::Copy(ValueType::Float), &[189, 23], 1805);
+                step(f, Op::GetTransform, &[37, 2, 9, 19], 1806);
+                step(f, Op::BreakTransform, &[19, 33, 6, 43], 1807);
+                step(f, Op::PelvisLean, &[1, 130, 135, 136, 215, 197], 1808);
+                step(f, Op::LengthV, &[2, 207], 1809);
+                step(f, Op::RemapF, &[207, 158, 130, 158, 128, 9, 220], 1810);
+                step(f, Op::MulF, &[18, 129, 191], 1811);
+                step(f, Op::SubF, &[160, 191, 190], 1812);
+                step(f, Op::MulF, &[220, 190, 192], 1813);
+                step(f, Op::MulF, &[15, 180, 222], 1814);
+                step(f, Op::SinF, &[222, 214], 1815);
+                step(f, Op::MulF, &[192, 214, 204], 1816);
+                step(f, Op::MulF, &[204, 218, 184], 1817);
+                step(f, Op::AddF, &[184, 22, 208], 1818);
+                step(f, Op::SubF, &[208, 5, 187], 1819);
+                step(f, Op::MakeVector, &[158, 197, 187, 31], 1820);
+                step(f, Op::AddV, &[33, 31, 32], 1821);
+                step(f, Op::ArrayAt(Elem::Transform), &[7, 2, 15], 1822);
+                step(f, Op::BreakTransform, &[15, 57, 3, 39], 1823);
+                step(f, Op::BreakVector, &[57, 213, 185, 182], 1824);
+                step(f, Op::ArrayAt(Elem::Transform), &[7, 3, 18], 1825);
+                step(f, Op::BreakTransform, &[18, 53, 7, 35], 1826);
+                step(f, Op::BreakVector, &[53, 196, 212, 223], 1827);
+                step(f, Op::SubF, &[182, 223, 205], 1828);
+                step(f, Op::PelvisSideLean, &[205, 137, 138, 209], 1829);
+                step(f, Op::ArrayAt(Elem::Transform), &[5, 2, 7], 1830);
+                step(f, Op::BreakTransform, &[7, 42, 5, 49], 1831);
+                step(f, Op::ArrayAt(Elem::Transform), &[5, 3, 6], 1832);
+                step(f, Op::BreakTransform, &[6, 47, 4, 23], 1833);
+                step(f, Op::SlerpQ, &[5, 4, 159, 9], 1834);
+                step(f, Op::EulerFromQuat, &[9, 2, 27], 1835);
+                step(f, Op::BreakVector, &[27, 206, 183, 217], 1836);
+                step(f, Op::RemapF, &[207, 131, 130, 158, 132, 9, 200], 1837);
+                step(f, Op::SubV, &[57, 53, 46], 1838);
+                step(f, Op::RotateVector, &[0, 9, 22], 1839);
+                step(f, Op::DotV, &[46, 22, 219], 1840);
+                step(f, Op::MulF, &[200, 219, 221], 1841);
+                step(f, Op::AddF, &[217, 221, 194], 1842);
+                step(f, Op::MakeVector, &[215, 209, 194, 24], 1843);
+                step(f, Op::QuatFromEuler, &[24, 2, 11], 1844);
+                step(f, Op::MakeTransform, &[32, 11, 6, 8], 1845);
+                step(f, Op::SetTransform, &[38, 8, 2, 9, 160], 1846);
+                step(f, Op::GetTransform, &[39, 3, 9, 4], 1847);
+                step(f, Op::BreakTransform, &[4, 18, 2, 54], 1848);
+                step(f, Op::QuatFromAxisAngle, &[10, 221, 10], 1849);
+                step(f, Op::DivF, &[133, 176, 210], 1850);
+                step(f, Op::QuatScale, &[10, 210, 8], 1851);
+                step(f, Op::MulQ, &[2, 8, 6], 1852);
+                step(f, Op::MakeTransform, &[18, 6, 6, 13], 1853);
+                step(f, Op::SetTransform, &[40, 13, 3, 9, 160], 1854);
+                step(f, Op::GetTransform, &[41, 3, 9, 9], 1855);
+                step(f, Op::BreakTransform, &[9, 25, 3, 56], 1856);
+                step(f, Op::MulQ, &[3, 8, 7], 1857);
+                step(f, Op::MakeTransform, &[25, 7, 6, 5], 1858);
+                step(f, Op::SetTransform, &[42, 5, 3, 9, 160], 1859);
+                step(f, Op::GetTransform, &[43, 3, 9, 14], 1860);
+                step(f, Op::BreakTransform, &[14, 26, 4, 52], 1861);
+                step(f, Op::MulQ, &[4, 8, 5], 1862);
+                step(f, Op::MakeTransform, &[26, 5, 6, 11], 1863);
+                step(f, Op::SetTransform, &[44, 11, 3, 9, 160], 1864);
+                step(f, Op::GetTransform, &[45, 3, 9, 10], 1865);
+                step(f, Op::BreakTransform, &[10, 28, 9, 29], 1866);
+                step(f, Op::QuatScale, &[10, 134, 11], 1867);
+                step(f, Op::MulQ, &[9, 11, 2], 1868);
+                step(f, Op::MakeTransform, &[28, 2, 6, 12], 1869);
+                step(f, Op::SetTransform, &[46, 12, 3, 9, 160], 1870);
+                step(f, Op::Or, &[1, 2, 15], 1871);
+                step(f, Op::Copy(ValueType::Float), &[158, 224], 1872);
+                step(f, Op::Copy(ValueType::Array(Elem::Bone)), &[0, 15], 1873);
+                step(f, Op::Copy(ValueType::Int), &[2, 9], 1874);
+                1874
+            }
+            1874 => {
+                step(f, Op::ForEachNext(Elem::Bone), &[15, 9, 25, 10, 6, 1921], 1875)
+            }
+            1875 => {
+                step(f, Op::ArrayAt(Elem::Bool), &[0, 10, 11], 1876);
+                step(f, Op::GetParent, &[25, 26], 1877);
+                step(f, Op::GetParent, &[26, 27], 1878);
+                step(f, Op::GetTransform, &[27, 2, 10, 16], 1879);
+                step(f, Op::BreakTransform, &[16, 17, 6, 38], 1880);
+                step(f, Op::BreakVector, &[17, 186, 199, 211], 1881);
+                step(f, Op::ArrayAt(Elem::Transform), &[7, 10, 17], 1882);
+                step(f, Op::BreakTransform, &[17, 50, 3, 48], 1883);
+                step(f, Op::BreakVector, &[50, 188, 203, 195], 1884);
+                step(f, Op::ArrayAt(Elem::Float), &[1, 10, 202], 1885);
+                step(f, Op::MulF, &[202, 139, 193], 1886);
+                step(f, Op::MulF, &[193, 193, 198], 1887);
+                step(f, Op::SubF, &[186, 188, 216], 1888);
+                step(f, Op::SubF, &[199, 203, 201], 1889);
+                step(f, Op::MakeVector, &[216, 201, 158, 51], 1890);
+                step(f, Op::DotV, &[51, 51, 189], 1891);
+                step(f, Op::SubF, &[198, 189, 191], 1892);
+                step(f, Op::SqrtF, &[191, 190], 1893);
+                step(f, Op::AddF, &[195, 190, 220], 1894);
+                step(f, Op::SubF, &[211, 220, 222], 1895);
+                step(f, Op::ArrayAt(Elem::Transform), &[3, 10, 19], 1896);
+                step(f, Op::BreakTransform, &[19, 19, 7, 45], 1897);
+                step(f, Op::BreakVector, &[19, 192, 214, 204], 1898);
+                step(f, Op::AddF, &[204, 59, 218], 1899);
+                step(f, Op::MinF, &[195, 218, 184], 1900);
+                step(f, Op::AddF, &[184, 190, 208], 1901);
+                step(f, Op::SubF, &[211, 208, 187], 1902);
+                step(f, Op::Equals(Elem::Int), &[10, 2, 19], 1903);
+                step(f, Op::Select(ValueType::Int), &[19, 3, 2, 7], 1904);
+                step(f, Op::ArrayAt(Elem::Bool), &[0, 7, 17], 1905);
+                step(f, Op::ArrayAt(Elem::Float), &[2, 7, 197], 1906);
+                step(f, Op::RemapF, &[197, 159, 160, 158, 160, 9, 185], 1907);
+                step(f, Op::RemapF, &[197, 158, 142, 160, 158, 9, 213], 1908);
+                step(f, Op::MaxF, &[185, 213, 196], 1909);
+                step(f, Op::Select(ValueType::Float), &[17, 160, 196, 212], 1910);
+                step(f, Op::LerpF, &[222, 187, 212, 182], 1911);
+                step(f, Op::ArrayAt(Elem::Float), &[2, 10, 223], 1912);
+                step(f, Op::RemapF, &[223, 159, 160, 158, 160, 9, 205], 1913);
+                step(f, Op::MulF, &[182, 205, 183], 1914);
+                step(f, Op::RemapF, &[223, 158, 142, 160, 158, 9, 206], 1915);
+                step(f, Op::MulF, &[222, 206, 207], 1916);
+                step(f, Op::MaxF, &[183, 207, 200], 1917);
+                step(f, Op::Select(ValueType::Float), &[11, 222, 200, 219], 1918);
+                step(f, Op::MaxF, &[224, 219, 217], 1919);
+                step(f, Op::Copy(ValueType::Float), &[217, 224], 1920);
+                step(f, Op::Jump, &[1874], 1921)
+            }
+            1921 => {
+                step(f, Op::ClampF, &[224, 158, 140, 194], 1922);
+                step(f, Op::Copy(ValueType::Float), &[194, 209], 1923);
+                step(f, Op::MakeVector, &[24, 158, 158, 30], 1924);
+                step(f, Op::MakeVector, &[209, 158, 158, 44], 1925);
+                step(f, Op::MakeVector, &[25, 158, 158, 40], 1926);
+                step(f, Op::GreaterF, &[209, 24, 16], 1927);
+                step(f, Op::Select(ValueType::Float), &[16, 144, 141, 215], 1928);
+                step(f, Op::Copy(ValueType::Float), &[58, 221], 1929);
+                step(f, Op::SubV, &[44, 40, 21], 1930);
+                step(f, Op::DeltaTime, &[210], 1931);
+                step(f, Op::DivF, &[221, 210, 202], 1932);
+                step(f, Op::ScaleV, &[21, 202, 55], 1933);
+                step(f, Op::AddV, &[44, 55, 34], 1934);
+                step(f, Op::AddV, &[40, 55, 20], 1935);
+                step(f, Op::SubV, &[30, 20, 37], 1936);
+                step(f, Op::FloatLerp, &[158, 160, 215, 193], 1937);
+                step(f, Op::SubF, &[160, 193, 186], 1938);
+                step(f, Op::ScaleV, &[37, 186, 36], 1939);
+                step(f, Op::AddV, &[34, 36, 41], 1940);
+                step(f, Op::MulF, &[215, 210, 188], 1941);
+                step(f, Op::GreaterF, &[188, 158, 12], 1942);
+                step(f, Op::DivF, &[193, 188, 199], 1943);
+                step(f, Op::Select(ValueType::Float), &[12, 199, 160, 203], 1944);
+                step(f, Op::ScaleV, &[21, 203, 43], 1945);
+                step(f, Op::SubV, &[41, 43, 31], 1946);
+                step(f, Op::Copy(ValueType::Vec3), &[31, 33], 1947);
+                step(f, Op::BreakVector, &[33, 201, 216, 189], 1948);
+                step(f, Op::Select(ValueType::Float), &[15, 209, 201, 198], 1949);
+                step(f, Op::Copy(ValueType::Float), &[198, 24], 1950);
+                step(f, Op::Copy(ValueType::Float), &[209, 25], 1951);
+                step(f, Op::GetTransform, &[47, 2, 10, 15], 1952);
+                step(f, Op::BreakTransform, &[15, 39, 4, 35], 1953);
+                step(f, Op::MakeVector, &[158, 158, 24, 42], 1954);
+                step(f, Op::SubV, &[39, 42, 49], 1955);
+                step(f, Op::MakeTransform, &[49, 4, 6, 18], 1956);
+                step(f, Op::SetTransform, &[48, 18, 2, 9, 160], 1957);
+                step(f, Op::JumpIfFalse, &[8, 1963], 1958)
             }
             1958 => {
-                step(f, Op::Jump, &[1910], 1959)
+                step(f, Op::GetTransform, &[47, 2, 10, 15], 1959);
+                step(f, Op::BreakTransform, &[15, 39, 4, 35], 1960);
+                step(f, Op::SubV, &[39, 42, 49], 1961);
+                step(f, Op::MakeTransform, &[49, 4, 6, 18], 1962);
+                step(f, Op::DrawTransform, &[18, 181, 159], 1963);
+                1963
             }
-            1959 => {
-                step(f, Op::End, &[], 1960)
+            1963 => {
+                step(f, Op::Copy(ValueType::Array(Elem::Bone)), &[0, 6], 1964);
+                step(f, Op::Copy(ValueType::Int), &[2, 8], 1965);
+                1965
+            }
+            1965 => {
+                step(f, Op::ForEachNext(Elem::Bone), &[6, 8, 2, 6, 9, 2014], 1966)
+            }
+            1966 => {
+                step(f, Op::GetParent, &[2, 29], 1967);
+                step(f, Op::GetParent, &[29, 30], 1968);
+                step(f, Op::GetTransform, &[30, 2, 10, 7], 1969);
+                step(f, Op::BreakTransform, &[7, 23, 8, 47], 1970);
+                step(f, Op::ArrayAt(Elem::Transform), &[7, 6, 6], 1971);
+                step(f, Op::BreakTransform, &[6, 27, 5, 53], 1972);
+                step(f, Op::SubV, &[27, 23, 57], 1973);
+                step(f, Op::LengthV, &[57, 191], 1974);
+                step(f, Op::ArrayAt(Elem::Float), &[1, 6, 220], 1975);
+                step(f, Op::MulF, &[220, 152, 192], 1976);
+                step(f, Op::ArrayAt(Elem::Bool), &[0, 6, 14], 1977);
+                step(f, Op::MulF, &[19, 118, 214], 1978);
+                step(f, Op::ArrayAt(Elem::Float), &[2, 6, 204], 1979);
+                step(f, Op::ClampF, &[204, 158, 160, 195], 1980);
+                step(f, Op::LessF, &[195, 159, 18], 1981);
+                step(f, Op::SmoothStepF, &[195, 154, 155, 218], 1982);
+                step(f, Op::MulF, &[195, 168, 184], 1983);
+                step(f, Op::SinF, &[184, 190], 1984);
+                step(f, Op::MaxF, &[218, 190, 208], 1985);
+                step(f, Op::Select(ValueType::Float), &[18, 208, 190, 211], 1986);
+                step(f, Op::MulF, &[211, 153, 197], 1987);
+                step(f, Op::Select(ValueType::Float), &[14, 214, 197, 185], 1988);
+                step(f, Op::SubF, &[192, 185, 213], 1989);
+                step(f, Op::SubF, &[191, 213, 196], 1990);
+                step(f, Op::MaxF, &[196, 158, 187], 1991);
+                step(f, Op::MulF, &[187, 187, 212], 1992);
+                step(f, Op::AddF, &[187, 185, 182], 1993);
+                step(f, Op::DivF, &[212, 182, 205], 1994);
+                step(f, Op::SubF, &[191, 205, 223], 1995);
+                step(f, Op::DivF, &[223, 191, 206], 1996);
+                step(f, Op::ScaleV, &[57, 206, 22], 1997);
+                step(f, Op::AddV, &[23, 22, 46], 1998);
+                step(f, Op::ClampSpatially, &[46, 23, 158, 192, 24], 1999);
+                step(f, Op::MakeTransform, &[24, 5, 6, 8], 2000);
+                step(f, Op::Equals(Elem::Int), &[6, 2, 13], 2001);
+                step(f, Op::Select(ValueType::Vec3), &[13, 14, 13, 32], 2002);
+                step(f, Op::Select(ValueType::Vec3), &[13, 9, 15, 54], 2003);
+                step(f, Op::ArrayAt(Elem::Transform), &[5, 6, 4], 2004);
+                step(f, Op::BreakTransform, &[4, 18, 10, 56], 2005);
+                step(f, Op::ArrayAt(Elem::Vec3), &[3, 6, 25], 2006);
+                step(f, Op::KneeVector, &[10, 0, 25, 156, 157, 52], 2007);
+                step(f, Op::TwoBoneIK, &[30, 29, 2, 8, 32, 54, 52, 2, 160, 10, 178, 179, 9, 20, 183], 2008);
+                step(f, Op::JumpIfFalse, &[8, 2013], 2009)
+            }
+            2009 => {
+                step(f, Op::GetTransform, &[29, 2, 10, 13], 2010);
+                step(f, Op::BreakTransform, &[13, 26, 9, 29], 2011);
+                step(f, Op::AddV, &[26, 52, 28], 2012);
+                step(f, Op::DrawLine, &[26, 28, 159, 16], 2013);
+                2013
+            }
+            2013 => {
+                step(f, Op::Jump, &[1965], 2014)
+            }
+            2014 => {
+                step(f, Op::End, &[], 2015)
             }
             _ => return,
         } };
