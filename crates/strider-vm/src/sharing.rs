@@ -30,37 +30,15 @@
 //! are `fixedbitset`'s.
 
 use crate::program::{Instr, PinSlot, Program};
-use crate::slots::Slots;
+use crate::slots::{SCALAR_TYPES, ScalarLens, Slots};
 use fixedbitset::FixedBitSet;
 use std::cmp::Reverse;
 use std::collections::BinaryHeap;
 use strider_nodes::{Access, Op, Operand, ValueType};
 
-/// The scalar slot types, in the order of [`Slots`]' scalar arrays.
-const SCALARS: [ValueType; 6] = [
-    ValueType::Bool,
-    ValueType::Int,
-    ValueType::Float,
-    ValueType::Vec3,
-    ValueType::Quat,
-    ValueType::Transform,
-];
-
-/// Position of `ty` in [`SCALARS`].
+/// Position of `ty` in [`SCALAR_TYPES`].
 fn scalar(ty: ValueType) -> Option<usize> {
-    SCALARS.iter().position(|&t| t == ty)
-}
-
-/// The lengths of `slots`' scalar arrays, in [`SCALARS`] order.
-fn lens(slots: &Slots) -> [usize; 6] {
-    [
-        slots.bools.len(),
-        slots.ints.len(),
-        slots.floats.len(),
-        slots.vec3s.len(),
-        slots.quats.len(),
-        slots.transforms.len(),
-    ]
+    SCALAR_TYPES.iter().position(|&t| t == ty)
 }
 
 /// Every scalar slot of the program numbered in one range: type `t`'s slot `s` is
@@ -186,7 +164,7 @@ struct Block {
 /// only the values that still own their slot). `layouts` are the instructions' operand
 /// layouts ([`Op::operands`]); the program's operands must all name existing slots.
 pub(crate) fn share(program: &mut Program, layouts: &[Vec<Operand>]) {
-    let ids = Ids::new(lens(&program.initial));
+    let ids = Ids::new(ScalarLens::of(&program.initial).0);
     let n_ids = ids.count();
     let n = program.code.len();
     let mut acc = Accesses::of(program, layouts, &ids);
@@ -409,7 +387,7 @@ pub(crate) fn share(program: &mut Program, layouts: &[Vec<Operand>]) {
         bone_arrays: old.bone_arrays.clone(),
         ..Slots::default()
     };
-    for (t, &ty) in SCALARS.iter().enumerate() {
+    for (t, &ty) in SCALAR_TYPES.iter().enumerate() {
         for _ in 0..after[t] {
             initial.alloc(ty);
         }

@@ -44,7 +44,17 @@ pub struct Slots {
 /// The lengths the scalar slot arrays (bools, ints, floats, vectors, rotations,
 /// transforms) must have at least: the executor indexes them without bounds checks.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
-pub(crate) struct ScalarLens([usize; 6]);
+pub(crate) struct ScalarLens(pub(crate) [usize; 6]);
+
+/// The scalar slot types, in the order of [`ScalarLens`].
+pub(crate) const SCALAR_TYPES: [ValueType; 6] = [
+    ValueType::Bool,
+    ValueType::Int,
+    ValueType::Float,
+    ValueType::Vec3,
+    ValueType::Quat,
+    ValueType::Transform,
+];
 
 impl ScalarLens {
     /// The lengths of `slots`' scalar arrays.
