@@ -3,10 +3,6 @@
 //! skate ≤ 0.5 cm per stance, penetration ≤ 0.5 cm, idle float ≤ 0.5 cm, no crossing legs,
 //! no backward knees, pops ≤ 5 cm per 60 Hz frame, no non-finite values, and a frame-rate
 //! deviation ≤ 1 cm across 30/60/144/240 Hz.
-//!
-//! A target the graph does not meet yet is listed in [`KNOWN_MISSES`] with the figure
-//! measured when it was listed: the test then checks that the metric did not get worse,
-//! and fails once it is met (so the entry gets removed).
 
 use std::path::Path;
 use std::sync::Arc;
@@ -21,11 +17,6 @@ const LOCOMOTION: &str = "graphs/locomotion.ron";
 
 /// Frame rates the frame-rate deviation compares.
 const RATES: [u32; 4] = [30, 60, 144, 240];
-
-/// `(scenario, metric, measured)`: targets `graphs/locomotion.ron` does not meet yet, with
-/// the value measured when the entry was written (a ceiling: the test fails if the metric
-/// gets worse). Reasons are given in docs/locomotion.md.
-const KNOWN_MISSES: &[(&str, &str, f64)] = &[("reverse", "framerate_deviation_cm_max", 2.91)];
 
 /// Runs `graph` through `scenario` at 60 Hz and at every rate of [`RATES`] and returns the
 /// report with the frame-rate deviation filled in.
@@ -52,8 +43,7 @@ fn measure(graph: &str, scenario: &str) -> Report {
     report
 }
 
-/// Asserts every target of `graph` on `scenario`, except the known misses, which must not
-/// get worse.
+/// Asserts every target of `graph` on `scenario`.
 fn assert_targets(graph: &str, scenario: &str) {
     let report = measure(graph, scenario);
     assert!(report.frames > 0, "{scenario}: no frames");
@@ -63,28 +53,11 @@ fn assert_targets(graph: &str, scenario: &str) {
     );
     let mut failures = Vec::new();
     for check in report.targets_met() {
-        let known = KNOWN_MISSES
-            .iter()
-            .find(|(s, m, _)| graph == LOCOMOTION && *s == scenario && *m == check.metric);
-        match known {
-            Some(_) if check.met => failures.push(format!(
-                "{}: {} now meets its target ({} ≤ {} {}): remove it from KNOWN_MISSES",
-                scenario, check.metric, check.value, check.target, check.unit
-            )),
-            Some(&(_, _, ceiling))
-                if check.value.is_nan() || check.value > ceiling * 1.05 + 0.05 =>
-            {
-                failures.push(format!(
-                    "{}: {} got worse: {} {} (listed at {ceiling}, target {})",
-                    scenario, check.metric, check.value, check.unit, check.target
-                ));
-            }
-            Some(_) => {}
-            None if !check.met => failures.push(format!(
+        if !check.met {
+            failures.push(format!(
                 "{}: {} = {} {}, target ≤ {}",
                 scenario, check.metric, check.value, check.unit, check.target
-            )),
-            None => {}
+            ));
         }
     }
     assert!(
