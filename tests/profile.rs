@@ -106,10 +106,23 @@ fn every_instruction_names_the_node_or_step_that_produced_it() {
         .unwrap();
     assert_eq!((o.kind, o.node_type.as_str()), (OriginKind::Step, "For"));
     assert!(o.location.starts_with(&line_of("For(count")), "{o}");
-    let call = (0..program.code().len())
-        .filter_map(|pc| program.instruction_origin(pc))
+    // The argument copies into the call's input: compiled for tools (a slot per pin), as
+    // shared slots let `Acc` be read where the input is (the copy goes).
+    let graph = strider_graph::load_graph_str(Path::new(PATH), GRAPH.to_string()).unwrap();
+    let options = strider_compiler::Options {
+        keep_pin_values: true,
+    };
+    let kept = strider_compiler::compile_with(&graph, options).unwrap();
+    let call = (0..kept.code().len())
+        .filter_map(|pc| kept.instruction_origin(pc))
         .find(|o| o.kind == OriginKind::Call)
         .expect("the call has an origin");
+    assert!(
+        (0..program.code().len())
+            .filter_map(|pc| program.instruction_origin(pc))
+            .all(|o| o.kind != OriginKind::Call),
+        "shared slots leave no argument copy"
+    );
     assert_eq!(call.node_id.as_deref(), Some("twice"));
     assert_eq!(call.node_type, "Twice");
     let sets: Vec<&str> = program

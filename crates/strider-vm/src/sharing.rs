@@ -22,6 +22,19 @@
 //!   never live at the same point, and take the same slot (greedy interval partitioning,
 //!   which uses the fewest slots for a set of ranges).
 //!
+//! Copies between such values mostly go (coalescing, as a register allocator does):
+//!
+//! - a copy from a slot that dies there into one that is born there: the two take one
+//!   slot (a function's argument into its input, a result out of a function);
+//! - a copy from a constant into a slot written by nothing else: readers of that slot read
+//!   the constant's;
+//! - a copy into a kept slot (a graph variable, say) of a value written earlier in the
+//!   same straight run of instructions and read nowhere after the copy: its producer
+//!   writes the kept slot instead, if nothing between them touches the kept slot and the
+//!   producer does not read it.
+//!
+//! Either way the copy then reads and writes one slot, and is removed from the program.
+//!
 //! It relies on what [`Access`] documents: an instruction writes each of its written
 //! operands whenever it runs (and, for a loop step, whenever it does not jump), so a write
 //! ends whatever value the slot held before.
@@ -306,8 +319,21 @@ pub(crate) fn share(program: &mut Program, layouts: &[Vec<Operand>]) {
         }
     }
 
+    let (group, dropped) = coalesce_copies(
+        program,
+        &acc,
+        &ids,
+        Liveness {
+            kept: &kept,
+            written: &written,
+            lo: &mut lo,
+            hi: &mut hi,
+            block_of: &block_of,
+        },
+    );
+
     // New slots, per type: the kept ones first in their old order, then the shared ones
-    // by greedy interval partitioning.
+    // by greedy interval partitioning; a slot coalesced into another takes that one's.
     let mut map = vec![u32::MAX; n_ids];
     let mut occupants: Vec<Vec<u32>> = Vec::with_capacity(6);
     let mut after = [0; 6];
@@ -321,7 +347,8 @@ pub(crate) fn share(program: &mut Program, layouts: &[Vec<Operand>]) {
             count += 1;
         }
         let mut shared: Vec<usize> = range
-            .filter(|&id| !kept.contains(id) && lo[id] != usize::MAX)
+            .clone()
+            .filter(|&id| !kept.contains(id) && group[id] == id as u32 && lo[id] != usize::MAX)
             .collect();
         shared.sort_by_key(|&id| (lo[id], id));
         // (end of range, slot) of the slots in use, earliest end on top.
@@ -341,6 +368,12 @@ pub(crate) fn share(program: &mut Program, layouts: &[Vec<Operand>]) {
             };
             map[id] = slot;
             busy.push(Reverse((hi[id], slot)));
+        }
+        for id in range.filter(|&id| group[id] != id as u32) {
+            map[id] = map[group[id] as usize];
+            if map[id] != u32::MAX {
+                held[map[id] as usize] += 1;
+            }
         }
         *slots = count as usize;
         occupants.push(held);
@@ -374,6 +407,7 @@ pub(crate) fn share(program: &mut Program, layouts: &[Vec<Operand>]) {
             p.slot = map[id];
         }
     }
+    remove_instructions(program, layouts, &dropped);
     let old = &program.initial;
     let mut initial = Slots {
         bones: old.bones.clone(),
@@ -413,4 +447,191 @@ fn carry<T: Copy>(old: &[T], new: &mut [T], moves: &[(usize, usize)]) {
     for &(from, to) in moves {
         new[to] = old[from];
     }
+}
+
+/// What the copy coalescing reads of the liveness: the kept slots, the slots written at
+/// all, each slot's range (first and last position, widened as slots merge) and each
+/// instruction's block.
+struct Liveness<'a> {
+    kept: &'a FixedBitSet,
+    written: &'a FixedBitSet,
+    lo: &'a mut [usize],
+    hi: &'a mut [usize],
+    block_of: &'a [u32],
+}
+
+/// Finds the copies that can go (see the [module docs](self)) and merges their slots:
+/// returns each slot's group (the slot whose new slot it takes; itself if none; a kept
+/// slot is always its own) and the copies to remove. Each merge adds a slot that has no
+/// group members yet to a group, so groups stay flat.
+fn coalesce_copies(
+    program: &Program,
+    acc: &Accesses,
+    ids: &Ids,
+    live: Liveness<'_>,
+) -> (Vec<u32>, FixedBitSet) {
+    let Liveness {
+        kept,
+        written,
+        lo,
+        hi,
+        block_of,
+    } = live;
+    let n_ids = ids.count();
+    let mut group: Vec<u32> = (0..n_ids as u32).collect();
+    let mut has_members = FixedBitSet::with_capacity(n_ids);
+    let mut dropped = FixedBitSet::with_capacity(program.code.len());
+    let mut defs = vec![0u32; n_ids];
+    for &d in &acc.defs {
+        defs[d as usize] += 1;
+    }
+    for (pc, instr) in program.code.iter().enumerate() {
+        let Op::Copy(ty) = instr.op else {
+            continue;
+        };
+        let at = instr.args as usize;
+        let (Some(s), Some(d)) = (
+            ids.id(ty, program.operands[at]),
+            ids.id(ty, program.operands[at + 1]),
+        ) else {
+            continue;
+        };
+        let (gs, gd) = (group[s] as usize, group[d] as usize);
+        // Whether `slots` name `root` or a slot merged into it (which now shares its slot).
+        let names =
+            |slots: &[u32], root: usize| slots.iter().any(|&x| group[x as usize] as usize == root);
+        // In no group, and written by one instruction only.
+        let single =
+            |id: usize| group[id] == id as u32 && !has_members.contains(id) && defs[id] == 1;
+        // Positions `from` to `to` lie in the copy's block (a straight run of instructions).
+        let straight = |from: usize, to: usize| {
+            from <= to
+                && to < block_of.len()
+                && block_of[from] == block_of[pc]
+                && block_of[to] == block_of[pc]
+        };
+        // A slot's range ends at the copy only if no later instruction reads it, unless the
+        // copy ends its block (where the range ends for anything live after the block).
+        let dies_here = |id: usize| hi[id] == pc && straight(pc, pc + 1);
+        // `id`'s first position is its one write, before the copy.
+        let written_first = |id: usize| {
+            lo[id] < pc
+                && acc
+                    .defs(lo[id])
+                    .iter()
+                    .filter(|&&x| x as usize == id)
+                    .count()
+                    == 1
+        };
+        let merge = if gs == gd {
+            Some(None)
+        } else if kept.contains(gs) && !written.contains(gs) {
+            // From a constant into a slot only this copy writes: its readers read the
+            // constant.
+            (!kept.contains(d) && single(d)).then_some(Some((d, gs)))
+        } else if !kept.contains(gs) && !kept.contains(gd) {
+            // From a slot that dies here into one born here; or between two slots written
+            // once each, the second born here (both hold one value from the copy on).
+            let born_here = lo[gd] == pc && group[gd] == gd as u32 && !has_members.contains(gd);
+            (born_here && (dies_here(gs) || (single(s) && single(d) && written_first(s))))
+                .then_some(Some((gd, gs)))
+        } else if kept.contains(gs) {
+            // From a kept slot into a slot only this copy writes, read only later in the
+            // copy's straight run while the kept slot is not written.
+            let last = hi[d];
+            (!kept.contains(d)
+                && single(d)
+                && lo[d] == pc
+                && last > pc
+                && straight(pc, last + 1)
+                && (pc + 1..=last).all(|q| !names(acc.defs(q), gs)))
+            .then_some(Some((d, gs)))
+        } else {
+            // Into a kept slot, from a slot (with what was merged into it) whose whole range
+            // lies in the copy's straight run and starts with a write: its writers write the
+            // kept slot instead, if nothing else touches the kept slot from the first write
+            // on, and nothing writes either after the copy while the value is still read
+            // (the kept slot must keep the copied value).
+            let (p, last) = (lo[gs], hi[gs]);
+            (p < pc
+                && straight(p, pc)
+                && names(acc.defs(p), gs)
+                && !names(acc.uses(p), gs)
+                && (p..pc).all(|q| !names(acc.uses(q), gd) && !names(acc.defs(q), gd))
+                && (dies_here(gs)
+                    || (last > pc
+                        && straight(pc, last + 1)
+                        && (pc + 1..=last)
+                            .all(|q| !names(acc.defs(q), gd) && !names(acc.defs(q), gs)))))
+            .then_some(Some((gs, gd)))
+        };
+        let merged = match merge {
+            None => false,
+            Some(None) => true,
+            Some(Some((member, root))) => {
+                if has_members.contains(member) {
+                    for g in group.iter_mut().filter(|g| **g as usize == member) {
+                        *g = root as u32;
+                    }
+                }
+                group[member] = root as u32;
+                if !kept.contains(root) {
+                    lo[root] = lo[root].min(lo[member]);
+                    hi[root] = hi[root].max(hi[member]);
+                }
+                true
+            }
+        };
+        if merged {
+            let root = group[s] as usize;
+            has_members.insert(root);
+            dropped.insert(pc);
+        }
+    }
+    (group, dropped)
+}
+
+/// Removes the instructions in `dropped` (copies that now read and write one slot): a
+/// jump or an entry to one goes to the instruction after it.
+fn remove_instructions(program: &mut Program, layouts: &[Vec<Operand>], dropped: &FixedBitSet) {
+    if dropped.is_clear() {
+        return;
+    }
+    let n = program.code.len();
+    let mut new_pc = Vec::with_capacity(n + 1);
+    let mut next = 0u32;
+    for pc in 0..n {
+        new_pc.push(next);
+        if !dropped.contains(pc) {
+            next += 1;
+        }
+    }
+    new_pc.push(next);
+    for (pc, (instr, layout)) in program.code.iter().zip(layouts).enumerate() {
+        if dropped.contains(pc) {
+            debug_assert_eq!(
+                program.operands[instr.args as usize],
+                program.operands[instr.args as usize + 1],
+                "a removed copy reads and writes one slot"
+            );
+            continue;
+        }
+        for (k, operand) in layout.iter().enumerate() {
+            if *operand == Operand::Target {
+                let target = &mut program.operands[instr.args as usize + k];
+                *target = new_pc[*target as usize];
+            }
+        }
+    }
+    program.construction = new_pc[program.construction as usize];
+    program.forward = new_pc[program.forward as usize];
+    let keep = |pc: &mut usize| {
+        let kept = !dropped.contains(*pc);
+        *pc += 1;
+        kept
+    };
+    let mut pc = 0;
+    program.code.retain(|_| keep(&mut pc));
+    let mut pc = 0;
+    program.instr_origins.retain(|_| keep(&mut pc));
 }
