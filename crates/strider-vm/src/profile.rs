@@ -6,7 +6,7 @@
 //! are always available (a tool can be built either way); only the executor's timing is
 //! behind the feature.
 
-use crate::program::{InstrOrigin, OriginId, Program};
+use crate::program::{InstrOrigin, OriginId, OriginKind, Program};
 
 /// Whether this build of `strider-vm` has the `profile` feature (and so
 /// `Instance::set_profiling`).
@@ -32,7 +32,7 @@ pub struct NodeProfile {
     pub nanos: u64,
     /// Times the node ran, summed over its copies (a function's nodes have one copy per
     /// call site): for each maximal run of consecutive instructions with this origin, the
-    /// count of the first. Exact for nodes and calls; for a `ForEach`/`For` step the loop's
+    /// count of the first (for a node, one instruction, each). Exact for nodes and calls; for a `ForEach`/`For` step the loop's
     /// back jump adds one per iteration, for a `Branch` the jump over `else` one per `then`.
     pub runs: u64,
     /// Instructions of it executed (sum of their counts).
@@ -79,7 +79,10 @@ pub fn profile_by_node(program: &Program, profile: &[InstrProfile]) -> Vec<NodeP
         let a = &mut acc[id.map_or(none, |id| id.0 as usize)];
         a.nanos += p.nanos;
         a.instructions += p.count;
-        if pc == 0 || id != previous {
+        // A node is one instruction: each counts (two call sites of a function may leave
+        // its nodes' instructions side by side once the copies between them are gone).
+        let node = id.is_some_and(|id| program.origins()[id.0 as usize].kind == OriginKind::Node);
+        if pc == 0 || id != previous || node {
             a.runs += p.count;
         }
         previous = id;
