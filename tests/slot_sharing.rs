@@ -238,9 +238,9 @@ fn values_live_across_loops_branches_and_frames_keep_their_slots() {
 /// Copies the shared program leaves out, and the ones it must keep: a call's argument from
 /// a variable (`Twice(x: var("B"))`), read where the variable is; the calls' results out of
 /// the function, one of them on into a variable (`E`); a node's value set into a variable
-/// by its producer (`y` into `D`, `later` into `C`, `chain` into `F`). `x` is set into `A` and read again by `later`
-/// after `A` changes, so `x` keeps a slot apart from `A` and its copy stays, as does the
-/// constant set into `A`.
+/// by its producer (`y` into `D`, `later` into `C`, `chain` into `F`). `x` is set into `A`
+/// and read again by `later` after `A` changes, so `x` keeps a slot apart from `A` and its
+/// copy stays, as does the constant set into `A`.
 const COPIES: &str = r#"
 Graph(
     version: 1,

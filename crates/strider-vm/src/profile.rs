@@ -31,9 +31,10 @@ pub struct NodeProfile {
     /// Time spent in its instructions, nanoseconds.
     pub nanos: u64,
     /// Times the node ran, summed over its copies (a function's nodes have one copy per
-    /// call site): for each maximal run of consecutive instructions with this origin, the
-    /// count of the first (for a node, one instruction, each). Exact for nodes and calls; for a `ForEach`/`For` step the loop's
-    /// back jump adds one per iteration, for a `Branch` the jump over `else` one per `then`.
+    /// call site): a node is one instruction, so the sum of their counts; for a call or a
+    /// step, for each maximal run of consecutive instructions with this origin, the count
+    /// of the first. Exact for nodes and calls; for a `ForEach`/`For` step the loop's back
+    /// jump adds one per iteration, for a `Branch` the jump over `else` one per `then`.
     pub runs: u64,
     /// Instructions of it executed (sum of their counts).
     pub instructions: u64,

@@ -22,18 +22,22 @@
 //!   never live at the same point, and take the same slot (greedy interval partitioning,
 //!   which uses the fewest slots for a set of ranges).
 //!
-//! Copies between such values mostly go (coalescing, as a register allocator does):
+//! Copies mostly go too (coalescing, as a register allocator does), wherever one slot can
+//! hold both the copy's source and its destination:
 //!
-//! - a copy from a slot that dies there into one that is born there: the two take one
-//!   slot (a function's argument into its input, a result out of a function);
-//! - a copy from a constant into a slot written by nothing else: readers of that slot read
-//!   the constant's;
-//! - a copy into a kept slot (a graph variable, say) of a value written earlier in the
-//!   same straight run of instructions and read nowhere after the copy: its producer
-//!   writes the kept slot instead, if nothing between them touches the kept slot and the
-//!   producer does not read it.
+//! - a value whose range ends at the copy into one whose range starts there (a result out
+//!   of a function, a node's value into a call's input), or two values each written once,
+//!   the second by the copy: the two take one slot;
+//! - a constant into a slot written only by the copy, or a kept slot (a graph variable,
+//!   say) into one read only later in the copy's straight run of instructions while the
+//!   kept slot is not written: readers read the constant or the kept slot where it is;
+//! - a value (with what was merged into it) whose whole range lies in the copy's straight
+//!   run and starts with a write, into a kept slot: its writers write the kept slot
+//!   instead, if nothing touches the kept slot from that write up to the copy (so its
+//!   first writer does not read it) and nothing writes either while the value is still
+//!   read after the copy.
 //!
-//! Either way the copy then reads and writes one slot, and is removed from the program.
+//! The copy then reads and writes one slot, and is removed from the program.
 //!
 //! It relies on what [`Access`] documents: an instruction writes each of its written
 //! operands whenever it runs (and, for a loop step, whenever it does not jump), so a write
@@ -462,8 +466,8 @@ struct Liveness<'a> {
 
 /// Finds the copies that can go (see the [module docs](self)) and merges their slots:
 /// returns each slot's group (the slot whose new slot it takes; itself if none; a kept
-/// slot is always its own) and the copies to remove. Each merge adds a slot that has no
-/// group members yet to a group, so groups stay flat.
+/// slot is always its own) and the copies to remove. Groups stay flat: a merge points the
+/// merged slot, and any slots already merged into it, straight at the new group's slot.
 fn coalesce_copies(
     program: &Program,
     acc: &Accesses,
@@ -500,9 +504,10 @@ fn coalesce_copies(
         // Whether `slots` name `root` or a slot merged into it (which now shares its slot).
         let names =
             |slots: &[u32], root: usize| slots.iter().any(|&x| group[x as usize] as usize == root);
-        // In no group, and written by one instruction only.
-        let single =
-            |id: usize| group[id] == id as u32 && !has_members.contains(id) && defs[id] == 1;
+        // In no group, and with nothing merged into it.
+        let alone = |id: usize| group[id] == id as u32 && !has_members.contains(id);
+        // Alone, and written by one instruction only.
+        let single = |id: usize| alone(id) && defs[id] == 1;
         // Positions `from` to `to` lie in the copy's block (a straight run of instructions).
         let straight = |from: usize, to: usize| {
             from <= to
@@ -523,18 +528,22 @@ fn coalesce_copies(
                     .count()
                     == 1
         };
-        let merge = if gs == gd {
-            Some(None)
-        } else if kept.contains(gs) && !written.contains(gs) {
+        if gs == gd {
+            // Merged already: the copy reads and writes one slot.
+            dropped.insert(pc);
+            continue;
+        }
+        // (slot to merge, group it joins)
+        let merge = if kept.contains(gs) && !written.contains(gs) {
             // From a constant into a slot only this copy writes: its readers read the
             // constant.
-            (!kept.contains(d) && single(d)).then_some(Some((d, gs)))
+            (!kept.contains(d) && single(d)).then_some((d, gs))
         } else if !kept.contains(gs) && !kept.contains(gd) {
             // From a slot that dies here into one born here; or between two slots written
             // once each, the second born here (both hold one value from the copy on).
-            let born_here = lo[gd] == pc && group[gd] == gd as u32 && !has_members.contains(gd);
+            let born_here = lo[gd] == pc && alone(gd);
             (born_here && (dies_here(gs) || (single(s) && single(d) && written_first(s))))
-                .then_some(Some((gd, gs)))
+                .then_some((gd, gs))
         } else if kept.contains(gs) {
             // From a kept slot into a slot only this copy writes, read only later in the
             // copy's straight run while the kept slot is not written.
@@ -545,7 +554,7 @@ fn coalesce_copies(
                 && last > pc
                 && straight(pc, last + 1)
                 && (pc + 1..=last).all(|q| !names(acc.defs(q), gs)))
-            .then_some(Some((d, gs)))
+            .then_some((d, gs))
         } else {
             // Into a kept slot, from a slot (with what was merged into it) whose whole range
             // lies in the copy's straight run and starts with a write: its writers write the
@@ -563,28 +572,20 @@ fn coalesce_copies(
                         && straight(pc, last + 1)
                         && (pc + 1..=last)
                             .all(|q| !names(acc.defs(q), gd) && !names(acc.defs(q), gs)))))
-            .then_some(Some((gs, gd)))
+            .then_some((gs, gd))
         };
-        let merged = match merge {
-            None => false,
-            Some(None) => true,
-            Some(Some((member, root))) => {
-                if has_members.contains(member) {
-                    for g in group.iter_mut().filter(|g| **g as usize == member) {
-                        *g = root as u32;
-                    }
+        if let Some((member, root)) = merge {
+            if has_members.contains(member) {
+                for g in group.iter_mut().filter(|g| **g as usize == member) {
+                    *g = root as u32;
                 }
-                group[member] = root as u32;
-                if !kept.contains(root) {
-                    lo[root] = lo[root].min(lo[member]);
-                    hi[root] = hi[root].max(hi[member]);
-                }
-                true
             }
-        };
-        if merged {
-            let root = group[s] as usize;
+            group[member] = root as u32;
             has_members.insert(root);
+            if !kept.contains(root) {
+                lo[root] = lo[root].min(lo[member]);
+                hi[root] = hi[root].max(hi[member]);
+            }
             dropped.insert(pc);
         }
     }
