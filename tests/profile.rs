@@ -243,10 +243,21 @@ mod profiling {
             inst.run_forward(&input, &EmptyWorld, false);
         }
         let by_node = inst.profile_by_node();
-        let executed: u64 = inst.profile().iter().map(|p| p.count).sum();
+        // A fused instruction counts for both of its nodes; its time is split between them.
+        let executed: u64 = inst
+            .profile()
+            .iter()
+            .zip(program.code())
+            .map(|(p, i)| p.count * if i.op.fused_parts().is_some() { 2 } else { 1 })
+            .sum();
+        assert!(program.code().iter().any(|i| i.op.fused_parts().is_some()));
         assert_eq!(
             by_node.iter().map(|p| p.instructions).sum::<u64>(),
             executed
+        );
+        assert_eq!(
+            by_node.iter().map(|p| p.nanos).sum::<u64>(),
+            inst.profile().iter().map(|p| p.nanos).sum::<u64>()
         );
         // Every forward End ran once per frame; nothing of construction ran.
         let end = pcs(&program, Op::End);

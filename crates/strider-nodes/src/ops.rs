@@ -69,7 +69,55 @@ impl Op {
             ],
             Op::Copy(ty) => vec![Slot(ty, Read), Slot(ty, Write)],
             Op::IntToFloat => vec![Slot(T::Int, Read), Slot(T::Float, Write)],
-            op => crate::registry().layout(op)?.to_vec(),
+            op => match op.fused_parts() {
+                Some((first, second)) => {
+                    let mut layout = first.operands()?;
+                    layout.extend(second.operands()?);
+                    layout
+                }
+                None => crate::registry().layout(op)?.to_vec(),
+            },
+        })
+    }
+
+    /// The fused ops (superinstructions): each runs two ops, one after the other, on their
+    /// operand lists laid end to end ([`Op::fused_parts`]).
+    pub const FUSED: [Op; 14] = [
+        Op::MulFMulF,
+        Op::SubFMulF,
+        Op::MulFAddF,
+        Op::SubFAddF,
+        Op::AddFMulF,
+        Op::MulFSubF,
+        Op::AddFAddF,
+        Op::DivFSubF,
+        Op::AddVAddV,
+        Op::AddVSubV,
+        Op::MulFScaleV,
+        Op::DivFScaleV,
+        Op::GetTransformBreakTransform,
+        Op::ArrayAtBreakTransform,
+    ];
+
+    /// The two ops a fused op runs, in order; `None` for any other op.
+    #[must_use]
+    pub fn fused_parts(self) -> Option<(Op, Op)> {
+        Some(match self {
+            Op::MulFMulF => (Op::MulF, Op::MulF),
+            Op::SubFMulF => (Op::SubF, Op::MulF),
+            Op::MulFAddF => (Op::MulF, Op::AddF),
+            Op::SubFAddF => (Op::SubF, Op::AddF),
+            Op::AddFMulF => (Op::AddF, Op::MulF),
+            Op::MulFSubF => (Op::MulF, Op::SubF),
+            Op::AddFAddF => (Op::AddF, Op::AddF),
+            Op::DivFSubF => (Op::DivF, Op::SubF),
+            Op::AddVAddV => (Op::AddV, Op::AddV),
+            Op::AddVSubV => (Op::AddV, Op::SubV),
+            Op::MulFScaleV => (Op::MulF, Op::ScaleV),
+            Op::DivFScaleV => (Op::DivF, Op::ScaleV),
+            Op::GetTransformBreakTransform => (Op::GetTransform, Op::BreakTransform),
+            Op::ArrayAtBreakTransform => (Op::ArrayAt(Elem::Transform), Op::BreakTransform),
+            _ => return None,
         })
     }
 }
@@ -95,6 +143,39 @@ pub enum Op {
     Copy(ValueType),
     /// `[from: Int, to: Float]`: the implicit lossless conversion.
     IntToFloat,
+
+    // ---- fused: two adjacent instructions joined into one (the VM's superinstructions) ----
+    // Each runs its two ops one after the other on their operand lists laid end to end:
+    // `[a, b, x, c, d, y]` for two arithmetic ops, `x` the first's result and `y` the
+    // second's (which usually reads `x`). See `Op::fused_parts`.
+    /// `MulF` then `MulF`.
+    MulFMulF,
+    /// `SubF` then `MulF`.
+    SubFMulF,
+    /// `MulF` then `AddF`.
+    MulFAddF,
+    /// `SubF` then `AddF`.
+    SubFAddF,
+    /// `AddF` then `MulF`.
+    AddFMulF,
+    /// `MulF` then `SubF`.
+    MulFSubF,
+    /// `AddF` then `AddF`.
+    AddFAddF,
+    /// `DivF` then `SubF`.
+    DivFSubF,
+    /// `AddV` then `AddV`.
+    AddVAddV,
+    /// `AddV` then `SubV`.
+    AddVSubV,
+    /// `MulF` then `ScaleV`.
+    MulFScaleV,
+    /// `DivF` then `ScaleV`.
+    DivFScaleV,
+    /// `GetTransform` then `BreakTransform`.
+    GetTransformBreakTransform,
+    /// `ArrayAt(Transform)` then `BreakTransform`.
+    ArrayAtBreakTransform,
 
     // ---- float ----
     /// Float sum.

@@ -178,6 +178,58 @@ macro_rules! execute {
                 *slot!(transforms, $k)
             };
         }
+        // Bodies an op shares with the fused ops that run it: `$b` is the op's first
+        // operand within the instruction's operands.
+        macro_rules! arith {
+            (AddF, $b:expr) => { f!($b + 2) = f!($b) + f!($b + 1) };
+            (SubF, $b:expr) => { f!($b + 2) = f!($b) - f!($b + 1) };
+            (MulF, $b:expr) => { f!($b + 2) = f!($b) * f!($b + 1) };
+            (DivF, $b:expr) => { f!($b + 2) = k::div_f(f!($b), f!($b + 1)) };
+            (AddV, $b:expr) => { v!($b + 2) = v!($b) + v!($b + 1) };
+            (SubV, $b:expr) => { v!($b + 2) = v!($b) - v!($b + 1) };
+            (ScaleV, $b:expr) => { v!($b + 2) = v!($b) * f!($b + 1) };
+        }
+        macro_rules! break_transform {
+            ($b:expr) => {{
+                let x = t!($b);
+                v!($b + 1) = x.translation;
+                q!($b + 2) = x.rotation;
+                v!($b + 3) = x.scale;
+            }};
+        }
+        macro_rules! get_transform {
+            ($b:expr) => {{
+                let result = match bone($cx.pose, s.bones[at!($b)]) {
+                    None => Transform::IDENTITY,
+                    Some(bi) => {
+                        let global = i!($b + 1) == 0;
+                        match (b!($b + 2), global) {
+                            (true, true) => $cx.pose.skeleton().rest_global(bi),
+                            (true, false) => $cx.pose.skeleton().rest_local(bi),
+                            (false, true) => $cx.pose.global(bi),
+                            (false, false) => $cx.pose.local(bi),
+                        }
+                    }
+                };
+                t!($b + 3) = result;
+            }};
+        }
+        macro_rules! array_at {
+            ($e:expr, $b:expr) => {{
+                let index = i!($b + 1);
+                macro_rules! get {
+                    ($sc:expr, $ar:expr, $zero:expr) => {{
+                        let a = &$ar[at!($b)];
+                        $sc[at!($b + 2)] = if index >= 0 {
+                            a.get(index as usize).copied().unwrap_or($zero)
+                        } else {
+                            $zero
+                        };
+                    }};
+                }
+                by_elem!($e, s, get);
+            }};
+        }
         // Copies the slot of operand `$from` into the slot of operand `$to` (type `$ty`).
         macro_rules! copy_slot {
             ($ty:expr, $from:expr, $to:expr) => {{
@@ -240,10 +292,10 @@ macro_rules! execute {
             Op::Copy(ty) => copy_slot!(ty, 0, 1),
             Op::IntToFloat | Op::ToFloat => f!(1) = i!(0) as f32,
 
-            Op::AddF => f!(2) = f!(0) + f!(1),
-            Op::SubF => f!(2) = f!(0) - f!(1),
-            Op::MulF => f!(2) = f!(0) * f!(1),
-            Op::DivF => f!(2) = k::div_f(f!(0), f!(1)),
+            Op::AddF => arith!(AddF, 0),
+            Op::SubF => arith!(SubF, 0),
+            Op::MulF => arith!(MulF, 0),
+            Op::DivF => arith!(DivF, 0),
             Op::MinF => f!(2) = f!(0).min(f!(1)),
             Op::MaxF => f!(2) = f!(0).max(f!(1)),
             Op::AbsF => f!(1) = f!(0).abs(),
@@ -302,11 +354,11 @@ macro_rules! execute {
             Op::GreaterEqualI => b!(2) = i!(0) >= i!(1),
             Op::Select(ty) => copy_slot!(ty, if b!(0) { 1 } else { 2 }, 3),
 
-            Op::AddV => v!(2) = v!(0) + v!(1),
-            Op::SubV => v!(2) = v!(0) - v!(1),
+            Op::AddV => arith!(AddV, 0),
+            Op::SubV => arith!(SubV, 0),
             Op::MulV => v!(2) = v!(0) * v!(1),
             Op::DivV => v!(2) = k::div_v(v!(0), v!(1)),
-            Op::ScaleV => v!(2) = v!(0) * f!(1),
+            Op::ScaleV => arith!(ScaleV, 0),
             Op::NegV => v!(1) = -v!(0),
             Op::MinV => v!(2) = v!(0).min(v!(1)),
             Op::MaxV => v!(2) = v!(0).max(v!(1)),
@@ -342,12 +394,7 @@ macro_rules! execute {
             Op::FindQuatBetween => q!(2) = k::find_quat_between(v!(0), v!(1)),
 
             Op::MakeTransform => t!(3) = Transform::new(v!(0), k::unit_q(q!(1)), v!(2)),
-            Op::BreakTransform => {
-                let x = t!(0);
-                v!(1) = x.translation;
-                q!(2) = x.rotation;
-                v!(3) = x.scale;
-            }
+            Op::BreakTransform => break_transform!(0),
             Op::MulT => t!(2) = t!(0) * t!(1),
             Op::InverseT => t!(1) = t!(0).inverse(),
             Op::MakeRelative => t!(2) = t!(0).relative_to(&t!(1)),
@@ -387,21 +434,7 @@ macro_rules! execute {
             Op::ClampLength => v!(3) = k::clamp_length(v!(0), f!(1), f!(2)),
             Op::ClampSpatially => v!(4) = k::clamp_spatially(v!(0), v!(1), f!(2), f!(3)),
 
-            Op::GetTransform => {
-                let result = match bone($cx.pose, s.bones[at!(0)]) {
-                    None => Transform::IDENTITY,
-                    Some(bi) => {
-                        let global = i!(1) == 0;
-                        match (b!(2), global) {
-                            (true, true) => $cx.pose.skeleton().rest_global(bi),
-                            (true, false) => $cx.pose.skeleton().rest_local(bi),
-                            (false, true) => $cx.pose.global(bi),
-                            (false, false) => $cx.pose.local(bi),
-                        }
-                    }
-                };
-                t!(3) = result;
-            }
+            Op::GetTransform => get_transform!(0),
             Op::SetTransform => {
                 if let Some(bi) = bone($cx.pose, s.bones[at!(0)]) {
                     let weight = f!(4);
@@ -599,19 +632,62 @@ macro_rules! execute {
                 q!(3) = loco::rotation_from_normal_quat(n);
             }
 
-            Op::ArrayAt(e) => {
-                let index = i!(1);
-                macro_rules! get {
-                    ($sc:expr, $ar:expr, $zero:expr) => {{
-                        let a = &$ar[at!(0)];
-                        $sc[at!(2)] = if index >= 0 {
-                            a.get(index as usize).copied().unwrap_or($zero)
-                        } else {
-                            $zero
-                        };
-                    }};
-                }
-                by_elem!(e, s, get);
+            Op::ArrayAt(e) => array_at!(e, 0),
+            Op::MulFMulF => {
+                arith!(MulF, 0);
+                arith!(MulF, 3);
+            }
+            Op::SubFMulF => {
+                arith!(SubF, 0);
+                arith!(MulF, 3);
+            }
+            Op::MulFAddF => {
+                arith!(MulF, 0);
+                arith!(AddF, 3);
+            }
+            Op::SubFAddF => {
+                arith!(SubF, 0);
+                arith!(AddF, 3);
+            }
+            Op::AddFMulF => {
+                arith!(AddF, 0);
+                arith!(MulF, 3);
+            }
+            Op::MulFSubF => {
+                arith!(MulF, 0);
+                arith!(SubF, 3);
+            }
+            Op::AddFAddF => {
+                arith!(AddF, 0);
+                arith!(AddF, 3);
+            }
+            Op::DivFSubF => {
+                arith!(DivF, 0);
+                arith!(SubF, 3);
+            }
+            Op::AddVAddV => {
+                arith!(AddV, 0);
+                arith!(AddV, 3);
+            }
+            Op::AddVSubV => {
+                arith!(AddV, 0);
+                arith!(SubV, 3);
+            }
+            Op::MulFScaleV => {
+                arith!(MulF, 0);
+                arith!(ScaleV, 3);
+            }
+            Op::DivFScaleV => {
+                arith!(DivF, 0);
+                arith!(ScaleV, 3);
+            }
+            Op::GetTransformBreakTransform => {
+                get_transform!(0);
+                break_transform!(4);
+            }
+            Op::ArrayAtBreakTransform => {
+                array_at!(Elem::Transform, 0);
+                break_transform!(3);
             }
             Op::ArrayCount(e) => {
                 macro_rules! count {

@@ -23,6 +23,7 @@
 //! executor trusts: operand counts and slot types match the op.
 
 mod exec;
+mod fusion;
 pub mod instance;
 pub mod native;
 pub mod profile;

@@ -28,7 +28,8 @@ pub struct InstrProfile {
 pub struct NodeProfile {
     /// The node or step ([`Program::origin`]); `None` for instructions without origin.
     pub origin: Option<OriginId>,
-    /// Time spent in its instructions, nanoseconds.
+    /// Time spent in its instructions, nanoseconds (half of each fused instruction's, see
+    /// [`Program::second_origin_id`]).
     pub nanos: u64,
     /// Times the node ran, summed over its copies (a function's nodes have one copy per
     /// call site): a node is one instruction, so the sum of their counts; for a call or a
@@ -36,7 +37,8 @@ pub struct NodeProfile {
     /// of the first. Exact for nodes and calls; for a `ForEach`/`For` step the loop's back
     /// jump adds one per iteration, for a `Branch` the jump over `else` one per `then`.
     pub runs: u64,
-    /// Instructions of it executed (sum of their counts).
+    /// Instructions of it executed (sum of their counts; a fused instruction counts for
+    /// both of its nodes).
     pub instructions: u64,
 }
 
@@ -77,8 +79,22 @@ pub fn profile_by_node(program: &Program, profile: &[InstrProfile]) -> Vec<NodeP
     let mut previous = None;
     for (pc, p) in profile.iter().enumerate() {
         let id = program.origin_id(pc);
+        // A fused instruction runs two nodes' ops: its time is split evenly between them,
+        // and each counts its runs and one instruction per run.
+        let second = program.second_origin_id(pc);
+        let nanos = if second.is_some() {
+            p.nanos / 2
+        } else {
+            p.nanos
+        };
+        if let Some(second) = second {
+            let b = &mut acc[second.0 as usize];
+            b.nanos += p.nanos - nanos;
+            b.instructions += p.count;
+            b.runs += p.count;
+        }
         let a = &mut acc[id.map_or(none, |id| id.0 as usize)];
-        a.nanos += p.nanos;
+        a.nanos += nanos;
         a.instructions += p.count;
         // A node is one instruction: each counts (two call sites of a function may leave
         // its nodes' instructions side by side once the copies between them are gone).
@@ -86,7 +102,7 @@ pub fn profile_by_node(program: &Program, profile: &[InstrProfile]) -> Vec<NodeP
         if pc == 0 || id != previous || node {
             a.runs += p.count;
         }
-        previous = id;
+        previous = second.or(id);
     }
     acc.retain(|a| a.instructions > 0);
     acc.sort_by(|a, b| {

@@ -198,7 +198,7 @@ pub struct PinSlot {
 pub struct OriginId(pub u32);
 
 /// Marks an instruction without origin in [`Program`]'s per-instruction origin list.
-const NO_ORIGIN: u32 = u32::MAX;
+pub(crate) const NO_ORIGIN: u32 = u32::MAX;
 
 /// A compiled graph: flat instructions, operand slot indices, the initial memory image,
 /// and the tables the host needs. Immutable and `Send + Sync`; share it with `Arc`.
@@ -217,6 +217,9 @@ pub struct Program {
     pub(crate) origins: Vec<InstrOrigin>,
     /// Per instruction, an index into `origins` or [`NO_ORIGIN`]. Same length as `code`.
     pub(crate) instr_origins: Vec<u32>,
+    /// Per instruction, for a fused one ([`Op::FUSED`]) the origin of its second op, an
+    /// index into `origins` or [`NO_ORIGIN`]; empty when nothing was fused.
+    pub(crate) second_origins: Vec<u32>,
     /// Where node outputs, function inputs and locals live, per call path (tools only).
     pub(crate) pin_slots: Vec<PinSlot>,
     /// The lengths of `initial`'s scalar arrays, which cover every scalar slot operand (see
@@ -296,6 +299,17 @@ impl Program {
         }
     }
 
+    /// For a fused instruction (two adjacent ops joined into one, [`Op::FUSED`]), the id
+    /// of its second op's origin ([`Program::origin_id`] is the first's); `None` for any
+    /// other instruction.
+    #[must_use]
+    pub fn second_origin_id(&self, pc: usize) -> Option<OriginId> {
+        match self.second_origins.get(pc) {
+            Some(&i) if i != NO_ORIGIN => Some(OriginId(i)),
+            _ => None,
+        }
+    }
+
     /// The origin table: every distinct origin once, indexed by [`OriginId`].
     #[must_use]
     pub fn origins(&self) -> &[InstrOrigin] {
@@ -356,6 +370,7 @@ impl ProgramBuilder {
                 variables: Vec::new(),
                 origins: Vec::new(),
                 instr_origins: Vec::new(),
+                second_origins: Vec::new(),
                 pin_slots: Vec::new(),
                 scalar_lens: ScalarLens::default(),
                 fingerprint: std::sync::OnceLock::new(),
@@ -572,6 +587,7 @@ impl ProgramBuilder {
         }
         if share {
             crate::sharing::share(p, &layouts);
+            crate::fusion::fuse(p);
         }
         p.scalar_lens = ScalarLens::of(&p.initial);
         self.program

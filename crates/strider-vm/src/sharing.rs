@@ -592,9 +592,14 @@ fn coalesce_copies(
     (group, dropped)
 }
 
-/// Removes the instructions in `dropped` (copies that now read and write one slot): a
-/// jump or an entry to one goes to the instruction after it.
-fn remove_instructions(program: &mut Program, layouts: &[Vec<Operand>], dropped: &FixedBitSet) {
+/// Removes the instructions in `dropped` (here, copies that now read and write one slot;
+/// the second halves of fused pairs in `fusion`): a jump or an entry to one goes to the
+/// instruction after it. `layouts` are the instructions' operand layouts before removal.
+pub(crate) fn remove_instructions(
+    program: &mut Program,
+    layouts: &[Vec<Operand>],
+    dropped: &FixedBitSet,
+) {
     if dropped.is_clear() {
         return;
     }
@@ -610,11 +615,6 @@ fn remove_instructions(program: &mut Program, layouts: &[Vec<Operand>], dropped:
     new_pc.push(next);
     for (pc, (instr, layout)) in program.code.iter().zip(layouts).enumerate() {
         if dropped.contains(pc) {
-            debug_assert_eq!(
-                program.operands[instr.args as usize],
-                program.operands[instr.args as usize + 1],
-                "a removed copy reads and writes one slot"
-            );
             continue;
         }
         for (k, operand) in layout.iter().enumerate() {
@@ -635,4 +635,8 @@ fn remove_instructions(program: &mut Program, layouts: &[Vec<Operand>], dropped:
     program.code.retain(|_| keep(&mut pc));
     let mut pc = 0;
     program.instr_origins.retain(|_| keep(&mut pc));
+    if !program.second_origins.is_empty() {
+        let mut pc = 0;
+        program.second_origins.retain(|_| keep(&mut pc));
+    }
 }
