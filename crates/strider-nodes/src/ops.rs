@@ -80,45 +80,38 @@ impl Op {
         })
     }
 
-    /// The fused ops (superinstructions): each runs two ops, one after the other, on their
-    /// operand lists laid end to end ([`Op::fused_parts`]).
-    pub const FUSED: [Op; 14] = [
-        Op::MulFMulF,
-        Op::SubFMulF,
-        Op::MulFAddF,
-        Op::SubFAddF,
-        Op::AddFMulF,
-        Op::MulFSubF,
-        Op::AddFAddF,
-        Op::DivFSubF,
-        Op::AddVAddV,
-        Op::AddVSubV,
-        Op::MulFScaleV,
-        Op::DivFScaleV,
-        Op::GetTransformBreakTransform,
-        Op::ArrayAtBreakTransform,
+    /// The fused ops (superinstructions), each with the two ops it runs, one after the
+    /// other, on their operand lists laid end to end.
+    pub const FUSED: [(Op, (Op, Op)); 14] = [
+        (Op::MulFMulF, (Op::MulF, Op::MulF)),
+        (Op::SubFMulF, (Op::SubF, Op::MulF)),
+        (Op::MulFAddF, (Op::MulF, Op::AddF)),
+        (Op::SubFAddF, (Op::SubF, Op::AddF)),
+        (Op::AddFMulF, (Op::AddF, Op::MulF)),
+        (Op::MulFSubF, (Op::MulF, Op::SubF)),
+        (Op::AddFAddF, (Op::AddF, Op::AddF)),
+        (Op::DivFSubF, (Op::DivF, Op::SubF)),
+        (Op::AddVAddV, (Op::AddV, Op::AddV)),
+        (Op::AddVSubV, (Op::AddV, Op::SubV)),
+        (Op::MulFScaleV, (Op::MulF, Op::ScaleV)),
+        (Op::DivFScaleV, (Op::DivF, Op::ScaleV)),
+        (
+            Op::GetTransformBreakTransform,
+            (Op::GetTransform, Op::BreakTransform),
+        ),
+        (
+            Op::ArrayAtBreakTransform,
+            (Op::ArrayAt(Elem::Transform), Op::BreakTransform),
+        ),
     ];
 
-    /// The two ops a fused op runs, in order; `None` for any other op.
+    /// The two ops a fused op runs, in order ([`Op::FUSED`]); `None` for any other op.
     #[must_use]
     pub fn fused_parts(self) -> Option<(Op, Op)> {
-        Some(match self {
-            Op::MulFMulF => (Op::MulF, Op::MulF),
-            Op::SubFMulF => (Op::SubF, Op::MulF),
-            Op::MulFAddF => (Op::MulF, Op::AddF),
-            Op::SubFAddF => (Op::SubF, Op::AddF),
-            Op::AddFMulF => (Op::AddF, Op::MulF),
-            Op::MulFSubF => (Op::MulF, Op::SubF),
-            Op::AddFAddF => (Op::AddF, Op::AddF),
-            Op::DivFSubF => (Op::DivF, Op::SubF),
-            Op::AddVAddV => (Op::AddV, Op::AddV),
-            Op::AddVSubV => (Op::AddV, Op::SubV),
-            Op::MulFScaleV => (Op::MulF, Op::ScaleV),
-            Op::DivFScaleV => (Op::DivF, Op::ScaleV),
-            Op::GetTransformBreakTransform => (Op::GetTransform, Op::BreakTransform),
-            Op::ArrayAtBreakTransform => (Op::ArrayAt(Elem::Transform), Op::BreakTransform),
-            _ => return None,
-        })
+        Op::FUSED
+            .iter()
+            .find(|(fused, _)| *fused == self)
+            .map(|&(_, parts)| parts)
     }
 }
 
@@ -147,7 +140,7 @@ pub enum Op {
     // ---- fused: two adjacent instructions joined into one (the VM's superinstructions) ----
     // Each runs its two ops one after the other on their operand lists laid end to end:
     // `[a, b, x, c, d, y]` for two arithmetic ops, `x` the first's result and `y` the
-    // second's (which usually reads `x`). See `Op::fused_parts`.
+    // second's (which usually reads `x`). See `Op::FUSED`.
     /// `MulF` then `MulF`.
     MulFMulF,
     /// `SubF` then `MulF`.

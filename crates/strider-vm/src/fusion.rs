@@ -12,13 +12,13 @@
 //! past a removed instruction.
 
 use crate::program::{NO_ORIGIN, Program};
-use crate::sharing::remove_instructions;
+use crate::sharing::{leaders, remove_instructions};
 use fixedbitset::FixedBitSet;
 use strider_nodes::{Op, Operand};
 
 /// Fuses every pair of adjacent instructions that has a fused op, left to right; the
 /// second instruction of a pair is removed and its origin kept as the fused instruction's
-/// second origin ([`Program::second_origin`]).
+/// second origin ([`Program::second_origin_id`]).
 pub(crate) fn fuse(program: &mut Program) {
     let n = program.code.len();
     let layouts: Vec<Vec<Operand>> = program
@@ -26,16 +26,9 @@ pub(crate) fn fuse(program: &mut Program) {
         .iter()
         .map(|instr| instr.op.operands().unwrap_or_default())
         .collect();
-    let mut leader = FixedBitSet::with_capacity(n + 1);
-    leader.insert(program.construction as usize);
-    leader.insert(program.forward as usize);
-    for (instr, layout) in program.code.iter().zip(&layouts) {
-        for (k, operand) in layout.iter().enumerate() {
-            if *operand == Operand::Target {
-                leader.insert(program.operands[instr.args as usize + k] as usize);
-            }
-        }
-    }
+    // A fused op never jumps, so a pair's second instruction starts a block only when
+    // something jumps to it or an event starts there.
+    let leader = leaders(program, &layouts);
     let mut dropped = FixedBitSet::with_capacity(n);
     program.second_origins = vec![NO_ORIGIN; n];
     let mut pc = 0;
@@ -43,10 +36,10 @@ pub(crate) fn fuse(program: &mut Program) {
         let (first, second) = (program.code[pc], program.code[pc + 1]);
         let fused = Op::FUSED
             .into_iter()
-            .find(|f| f.fused_parts() == Some((first.op, second.op)));
+            .find(|&(_, parts)| parts == (first.op, second.op));
         let contiguous = second.args as usize == first.args as usize + layouts[pc].len();
         match fused {
-            Some(op) if contiguous && !leader.contains(pc + 1) => {
+            Some((op, _)) if contiguous && !leader.contains(pc + 1) => {
                 program.code[pc].op = op;
                 program.second_origins[pc] = program.instr_origins[pc + 1];
                 dropped.insert(pc + 1);
@@ -184,8 +177,8 @@ mod tests {
 
     #[test]
     fn every_fused_op_lays_out_and_runs_both_parts() {
-        for op in Op::FUSED {
-            let (first, second) = op.fused_parts().expect("a fused op has parts");
+        for (op, (first, second)) in Op::FUSED {
+            assert_eq!(op.fused_parts(), Some((first, second)));
             assert_eq!((first.fused_parts(), second.fused_parts()), (None, None));
             let mut both = first.operands().expect("a layout");
             let first_len = both.len();
@@ -197,7 +190,7 @@ mod tests {
             // values, the second op reading the first's results where the types allow.
             let mut pb = ProgramBuilder::new("parts");
             let mut seed = 1.0f32;
-            let slots: Vec<u32> = both
+            let mut slots: Vec<u32> = both
                 .iter()
                 .map(|operand| {
                     seed += 1.5;
@@ -211,7 +204,6 @@ mod tests {
                     }
                 })
                 .collect();
-            let mut slots = slots;
             // The first op's result (its last operand) feeds the second op's first operand
             // of the same type, as in the pairs the pass finds.
             let ty = |k: usize| match both[k] {

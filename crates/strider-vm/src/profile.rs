@@ -82,16 +82,13 @@ pub fn profile_by_node(program: &Program, profile: &[InstrProfile]) -> Vec<NodeP
         // A fused instruction runs two nodes' ops: its time is split evenly between them,
         // and each counts its runs and one instruction per run.
         let second = program.second_origin_id(pc);
-        let nanos = if second.is_some() {
-            p.nanos / 2
-        } else {
-            p.nanos
-        };
+        let mut nanos = p.nanos;
         if let Some(second) = second {
             let b = &mut acc[second.0 as usize];
-            b.nanos += p.nanos - nanos;
+            b.nanos += nanos - nanos / 2;
             b.instructions += p.count;
             b.runs += p.count;
+            nanos /= 2;
         }
         let a = &mut acc[id.map_or(none, |id| id.0 as usize)];
         a.nanos += nanos;

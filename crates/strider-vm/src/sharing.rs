@@ -161,6 +161,25 @@ fn successors(
     [falls_through.then_some(pc + 1), target]
 }
 
+/// The first instruction of every basic block (and one past the last): the entries, the
+/// jump targets and whatever follows an instruction that does not simply fall through.
+/// `layouts` are the instructions' operand layouts.
+pub(crate) fn leaders(program: &Program, layouts: &[Vec<Operand>]) -> FixedBitSet {
+    let mut leader = FixedBitSet::with_capacity(program.code.len() + 1);
+    leader.insert(program.construction as usize);
+    leader.insert(program.forward as usize);
+    for (pc, (instr, layout)) in program.code.iter().zip(layouts).enumerate() {
+        let [next, target] = successors(program, instr, layout, pc);
+        if let Some(t) = target {
+            leader.insert(t);
+        }
+        if target.is_some() || next.is_none() {
+            leader.insert(pc + 1);
+        }
+    }
+    leader
+}
+
 /// A run of instructions entered only at its first and left only after its last.
 struct Block {
     start: usize,
@@ -198,20 +217,7 @@ pub(crate) fn share(program: &mut Program, layouts: &[Vec<Operand>]) {
     );
     acc.only_uses_of(&written);
 
-    // Basic blocks: they start at the entries, at jump targets and after any instruction
-    // that does not simply fall through.
-    let mut leader = FixedBitSet::with_capacity(n + 1);
-    leader.insert(program.construction as usize);
-    leader.insert(program.forward as usize);
-    for (pc, (instr, layout)) in program.code.iter().zip(layouts).enumerate() {
-        let [next, target] = successors(program, instr, layout, pc);
-        if let Some(t) = target {
-            leader.insert(t);
-        }
-        if target.is_some() || next.is_none() {
-            leader.insert(pc + 1);
-        }
-    }
+    let leader = leaders(program, layouts);
     let mut block_of = vec![0u32; n];
     let mut blocks: Vec<Block> = Vec::new();
     let mut start = 0;
