@@ -87,6 +87,12 @@ pub(crate) struct BenchArgs {
     #[arg(long)]
     pub no_native: bool,
 
+    /// Characters the interpreter runs together through each instruction
+    /// (`Instance::run_forward_batch`); 1 runs each alone (`Instance::run_forward`). The
+    /// native baseline always runs each character alone.
+    #[arg(long, value_name = "B", default_value_t = 16, value_parser = clap::value_parser!(u32).range(1..=16))]
+    pub batch: u32,
+
     /// Set a graph variable before the first frame; repeatable (as in `strider run`).
     #[arg(long, value_name = "NAME=VALUE")]
     pub set: Vec<String>,
@@ -142,6 +148,8 @@ struct Track {
 struct Crowd {
     instances: Vec<Instance>,
     offsets: Vec<usize>,
+    /// Characters the interpreter runs together (1: each alone).
+    batch: usize,
 }
 
 impl Crowd {
@@ -154,13 +162,34 @@ impl Crowd {
         native: Option<&NativeProgram>,
         threads: u32,
     ) {
-        let run = |(instance, offset): (&mut Instance, &usize)| {
+        let input = |offset: usize| {
             let (dt, to_world) = track.inputs[(frame + offset) % track.inputs.len()];
-            let input = FrameInput {
+            FrameInput {
                 dt,
                 component_to_world: to_world,
                 pose: InputPose::Rest,
+            }
+        };
+        if native.is_none() && self.batch > 1 {
+            let run = |(instances, offsets): (&mut [Instance], &[usize])| {
+                Instance::run_forward_batch(instances, |k| input(offsets[k]), world, false);
             };
+            let (instances, offsets) = (&mut self.instances, &self.offsets);
+            if threads == 1 {
+                instances
+                    .chunks_mut(self.batch)
+                    .zip(offsets.chunks(self.batch))
+                    .for_each(run);
+            } else {
+                instances
+                    .par_chunks_mut(self.batch)
+                    .zip(offsets.par_chunks(self.batch))
+                    .for_each(run);
+            }
+            return;
+        }
+        let run = |(instance, offset): (&mut Instance, &usize)| {
+            let input = input(*offset);
             match native {
                 // Checked once before timing: cannot fail here.
                 Some(native) => {
@@ -219,7 +248,11 @@ pub(crate) fn run(args: &BenchArgs) -> anyhow::Result<ExitCode> {
             instances.push(instance);
         }
         let offsets = (0..n).map(|i| i * track.inputs.len() / n).collect();
-        Ok(Crowd { instances, offsets })
+        Ok(Crowd {
+            instances,
+            offsets,
+            batch: args.batch as usize,
+        })
     };
     let mut crowd = make_crowd()?;
     let mut native_crowd = match native {
@@ -376,6 +409,7 @@ pub(crate) fn run(args: &BenchArgs) -> anyhow::Result<ExitCode> {
             "repetitions": args.repetitions,
             "warm_up_frames": warm_up,
             "threads": max_threads,
+            "batch": args.batch,
             "cores": cores,
             "ns_per_character_frame": headline.ns_per_character_frame,
             "characters_per_16ms": headline.characters_per_16ms,
@@ -394,6 +428,7 @@ pub(crate) fn run(args: &BenchArgs) -> anyhow::Result<ExitCode> {
             text,
             "graph       {} ({})\nscenario    {} ({}), 60 Hz input, characters offset in time\n\
              workload    {n} characters x {} frames x {} repetitions per thread count, after {} warm-up frames\n\
+             batch       {} characters through each instruction together (native: each alone)\n\
              machine     {cores} cores\n\
              compile     {compile_ms:.2} ms (load + validate + compile, median of {COMPILES})\n",
             program.name(),
@@ -403,6 +438,7 @@ pub(crate) fn run(args: &BenchArgs) -> anyhow::Result<ExitCode> {
             args.frames,
             args.repetitions,
             warm_up,
+            args.batch,
         );
         let _ = writeln!(
             text,
@@ -537,6 +573,7 @@ fn profile_top(
     let mut crowd = Crowd {
         instances: vec![instance],
         offsets: vec![0],
+        batch: 1,
     };
     for f in 0..warm_up {
         crowd.run_frame(track, world, f, None, 1);

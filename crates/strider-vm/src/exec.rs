@@ -90,6 +90,14 @@ fn copy_vec<T: Clone>(v: &mut [Vec<T>], from: usize, to: usize) {
     }
 }
 
+/// Runs a handler body once, on the one instance at hand (the `$each` of [`execute!`] for
+/// a single instance).
+macro_rules! once {
+    ($body:expr) => {
+        $body
+    };
+}
+
 /// The "next instruction" of an `End`: the event is over.
 pub(crate) const END: usize = usize::MAX;
 
@@ -107,6 +115,16 @@ struct Bases {
 }
 
 impl Bases {
+    /// No arrays (a batch's unused members).
+    const NONE: Self = Self {
+        bools: std::ptr::null_mut(),
+        ints: std::ptr::null_mut(),
+        floats: std::ptr::null_mut(),
+        vec3s: std::ptr::null_mut(),
+        quats: std::ptr::null_mut(),
+        transforms: std::ptr::null_mut(),
+    };
+
     fn of(s: &mut Slots) -> Self {
         Self {
             bools: s.bools.as_mut_ptr(),
@@ -123,14 +141,18 @@ impl Bases {
 /// borrowed apart so the interpreter can hold it across instructions), whose scalar arrays
 /// start at `$bases` ([`Bases`]), and context `$cx`.
 ///
-/// Expanded twice: in the interpreter loop ([`run_loop`]) and in [`step`], the entry point
-/// of code generated ahead of time. After a control op the expansion site decides what
-/// happens: `$jump!(target)` continues at instruction `target`, `$end!()` ends the event.
+/// Each arm's body is handed to `$each!`, which runs it for every instance the expansion
+/// site works on, binding `$s`, `$bases` and `$cx` to that instance's: [`once`] for a
+/// single instance, a loop over a batch's members in [`run_batch`]. The `match` itself runs
+/// once per instruction either way.
+///
+/// Expanded three times: in the interpreter loop ([`run_loop`]), in the batch loop
+/// ([`run_batch`]) and in [`step`], the entry point of code generated ahead of time. After
+/// a control op the expansion site decides what happens: `$jump!(target)` continues at
+/// instruction `target`, `$end!()` ends the event.
 macro_rules! execute {
-    ($op:expr, $o:expr, $s:expr, $bases:expr, $cx:ident, $jump:ident, $end:ident) => {{
+    ($op:expr, $o:expr, $s:ident, $bases:ident, $cx:ident, $jump:ident, $end:ident, $each:ident) => {{
         let (op, o): (Op, &[u32]) = ($op, $o);
-        let s: &mut Slots = $s;
-        let bases: Bases = $bases;
         macro_rules! at {
             ($k:expr) => {
                 o[$k] as usize
@@ -141,11 +163,11 @@ macro_rules! execute {
         macro_rules! slot {
             ($a:ident, $k:expr) => {{
                 let index = at!($k);
-                debug_assert!(index < s.$a.len(), "{op:?} operand {} out of bounds", $k);
+                debug_assert!(index < $s.$a.len(), "{op:?} operand {} out of bounds", $k);
                 // SAFETY: in bounds by the module's invariant (the program's layout check
                 // and the per-run length check), and the base pointer is current (see
                 // `Bases`); the reference lives for one read or write.
-                unsafe { &mut *bases.$a.add(index) }
+                unsafe { &mut *$bases.$a.add(index) }
             }};
         }
         macro_rules! f {
@@ -199,7 +221,7 @@ macro_rules! execute {
         }
         macro_rules! get_transform {
             ($b:expr) => {{
-                let result = match bone($cx.pose, s.bones[at!($b)]) {
+                let result = match bone($cx.pose, $s.bones[at!($b)]) {
                     None => Transform::IDENTITY,
                     Some(bi) => {
                         let global = i!($b + 1) == 0;
@@ -227,7 +249,7 @@ macro_rules! execute {
                         };
                     }};
                 }
-                by_elem!($e, s, get);
+                by_elem!($e, $s, get);
             }};
         }
         // Copies the slot of operand `$from` into the slot of operand `$to` (type `$ty`).
@@ -241,8 +263,8 @@ macro_rules! execute {
                     ValueType::Vec3 => v!(to_k) = v!(from_k),
                     ValueType::Quat => q!(to_k) = q!(from_k),
                     ValueType::Transform => t!(to_k) = t!(from_k),
-                    ValueType::Bone => s.bones[at!(to_k)] = s.bones[at!(from_k)],
-                    ValueType::Name => s.names[at!(to_k)] = s.names[at!(from_k)],
+                    ValueType::Bone => $s.bones[at!(to_k)] = $s.bones[at!(from_k)],
+                    ValueType::Name => $s.names[at!(to_k)] = $s.names[at!(from_k)],
                     ValueType::Array(e) => {
                         let (from, to) = (at!(from_k), at!(to_k));
                         macro_rules! copy {
@@ -250,20 +272,20 @@ macro_rules! execute {
                                 copy_vec(&mut $ar, from, to)
                             };
                         }
-                        by_elem!(e, s, copy);
+                        by_elem!(e, $s, copy);
                     }
                 }
             }};
         }
         match op {
-            Op::End => $end!(),
-            Op::Jump => $jump!(o[0] as usize),
-            Op::JumpIfFalse => {
+            Op::End => $each!($end!()),
+            Op::Jump => $each!($jump!(o[0] as usize)),
+            Op::JumpIfFalse => $each!({
                 if !b!(0) {
                     $jump!(o[1] as usize);
                 }
-            }
-            Op::ForEachNext(e) => {
+            }),
+            Op::ForEachNext(e) => $each!({
                 let counter = i!(1);
                 macro_rules! next {
                     ($sc:expr, $ar:expr, $zero:expr) => {{
@@ -278,9 +300,9 @@ macro_rules! execute {
                         }
                     }};
                 }
-                by_elem!(e, s, next);
-            }
-            Op::ForNext => {
+                by_elem!(e, $s, next);
+            }),
+            Op::ForNext => $each!({
                 let counter = i!(0);
                 if counter >= i!(1) {
                     $jump!(o[3] as usize);
@@ -288,129 +310,129 @@ macro_rules! execute {
                     i!(2) = counter;
                     i!(0) = counter + 1;
                 }
-            }
-            Op::Copy(ty) => copy_slot!(ty, 0, 1),
-            Op::IntToFloat | Op::ToFloat => f!(1) = i!(0) as f32,
+            }),
+            Op::Copy(ty) => $each!(copy_slot!(ty, 0, 1)),
+            Op::IntToFloat | Op::ToFloat => $each!(f!(1) = i!(0) as f32),
 
-            Op::AddF => arith!(AddF, 0),
-            Op::SubF => arith!(SubF, 0),
-            Op::MulF => arith!(MulF, 0),
-            Op::DivF => arith!(DivF, 0),
-            Op::MinF => f!(2) = f!(0).min(f!(1)),
-            Op::MaxF => f!(2) = f!(0).max(f!(1)),
-            Op::AbsF => f!(1) = f!(0).abs(),
-            Op::NegF => f!(1) = -f!(0),
-            Op::ClampF => f!(3) = k::clamp_f(f!(0), f!(1), f!(2)),
-            Op::SinF => f!(1) = k::sin_deg(f!(0)),
-            Op::CosF => f!(1) = k::cos_deg(f!(0)),
-            Op::TanF => f!(1) = k::tan_deg(f!(0)),
-            Op::Atan2F => f!(2) = k::atan2_deg(f!(0), f!(1)),
-            Op::SqrtF => f!(1) = k::sqrt(f!(0)),
-            Op::PowF => f!(2) = f!(0).powf(f!(1)),
-            Op::FmodF => f!(2) = k::mod_f(f!(0), f!(1)),
-            Op::FractF => f!(1) = k::fract(f!(0)),
-            Op::FloorF => f!(1) = f!(0).floor(),
-            Op::CeilF => f!(1) = f!(0).ceil(),
-            Op::RoundF => f!(1) = f!(0).round(),
-            Op::LerpF => f!(3) = f!(0) + (f!(1) - f!(0)) * f!(2),
-            Op::RemapF => f!(6) = k::remap(f!(0), f!(1), f!(2), f!(3), f!(4), b!(5)),
-            Op::SmoothStepF => f!(3) = k::smooth_step(f!(0), f!(1), f!(2)),
-            Op::ToInt => i!(1) = k::to_int(f!(0)),
+            Op::AddF => $each!(arith!(AddF, 0)),
+            Op::SubF => $each!(arith!(SubF, 0)),
+            Op::MulF => $each!(arith!(MulF, 0)),
+            Op::DivF => $each!(arith!(DivF, 0)),
+            Op::MinF => $each!(f!(2) = f!(0).min(f!(1))),
+            Op::MaxF => $each!(f!(2) = f!(0).max(f!(1))),
+            Op::AbsF => $each!(f!(1) = f!(0).abs()),
+            Op::NegF => $each!(f!(1) = -f!(0)),
+            Op::ClampF => $each!(f!(3) = k::clamp_f(f!(0), f!(1), f!(2))),
+            Op::SinF => $each!(f!(1) = k::sin_deg(f!(0))),
+            Op::CosF => $each!(f!(1) = k::cos_deg(f!(0))),
+            Op::TanF => $each!(f!(1) = k::tan_deg(f!(0))),
+            Op::Atan2F => $each!(f!(2) = k::atan2_deg(f!(0), f!(1))),
+            Op::SqrtF => $each!(f!(1) = k::sqrt(f!(0))),
+            Op::PowF => $each!(f!(2) = f!(0).powf(f!(1))),
+            Op::FmodF => $each!(f!(2) = k::mod_f(f!(0), f!(1))),
+            Op::FractF => $each!(f!(1) = k::fract(f!(0))),
+            Op::FloorF => $each!(f!(1) = f!(0).floor()),
+            Op::CeilF => $each!(f!(1) = f!(0).ceil()),
+            Op::RoundF => $each!(f!(1) = f!(0).round()),
+            Op::LerpF => $each!(f!(3) = f!(0) + (f!(1) - f!(0)) * f!(2)),
+            Op::RemapF => $each!(f!(6) = k::remap(f!(0), f!(1), f!(2), f!(3), f!(4), b!(5))),
+            Op::SmoothStepF => $each!(f!(3) = k::smooth_step(f!(0), f!(1), f!(2))),
+            Op::ToInt => $each!(i!(1) = k::to_int(f!(0))),
 
-            Op::AddI => i!(2) = i!(0).wrapping_add(i!(1)),
-            Op::SubI => i!(2) = i!(0).wrapping_sub(i!(1)),
-            Op::MulI => i!(2) = i!(0).wrapping_mul(i!(1)),
-            Op::DivI => i!(2) = k::div_i(i!(0), i!(1)),
-            Op::ModI => i!(2) = k::mod_i(i!(0), i!(1)),
-            Op::MinI => i!(2) = i!(0).min(i!(1)),
-            Op::MaxI => i!(2) = i!(0).max(i!(1)),
-            Op::AbsI => i!(1) = i!(0).wrapping_abs(),
-            Op::NegI => i!(1) = i!(0).wrapping_neg(),
-            Op::ClampI => i!(3) = i!(0).max(i!(1)).min(i!(2)),
+            Op::AddI => $each!(i!(2) = i!(0).wrapping_add(i!(1))),
+            Op::SubI => $each!(i!(2) = i!(0).wrapping_sub(i!(1))),
+            Op::MulI => $each!(i!(2) = i!(0).wrapping_mul(i!(1))),
+            Op::DivI => $each!(i!(2) = k::div_i(i!(0), i!(1))),
+            Op::ModI => $each!(i!(2) = k::mod_i(i!(0), i!(1))),
+            Op::MinI => $each!(i!(2) = i!(0).min(i!(1))),
+            Op::MaxI => $each!(i!(2) = i!(0).max(i!(1))),
+            Op::AbsI => $each!(i!(1) = i!(0).wrapping_abs()),
+            Op::NegI => $each!(i!(1) = i!(0).wrapping_neg()),
+            Op::ClampI => $each!(i!(3) = i!(0).max(i!(1)).min(i!(2))),
 
-            Op::And => b!(2) = b!(0) && b!(1),
-            Op::Or => b!(2) = b!(0) || b!(1),
-            Op::Xor => b!(2) = b!(0) != b!(1),
-            Op::Not => b!(1) = !b!(0),
-            Op::Equals(e) | Op::NotEquals(e) => {
+            Op::And => $each!(b!(2) = b!(0) && b!(1)),
+            Op::Or => $each!(b!(2) = b!(0) || b!(1)),
+            Op::Xor => $each!(b!(2) = b!(0) != b!(1)),
+            Op::Not => $each!(b!(1) = !b!(0)),
+            Op::Equals(e) | Op::NotEquals(e) => $each!({
                 let eq = match e {
                     Elem::Float => f!(0) == f!(1),
                     Elem::Int => i!(0) == i!(1),
                     Elem::Bool => b!(0) == b!(1),
-                    Elem::Bone => s.bones[at!(0)] == s.bones[at!(1)],
+                    Elem::Bone => $s.bones[at!(0)] == $s.bones[at!(1)],
                     Elem::Vec3 => v!(0) == v!(1),
                     Elem::Quat => q!(0) == q!(1),
                     Elem::Transform => t!(0) == t!(1),
                 };
                 b!(2) = eq == matches!(op, Op::Equals(_));
-            }
-            Op::LessF => b!(2) = f!(0) < f!(1),
-            Op::LessEqualF => b!(2) = f!(0) <= f!(1),
-            Op::GreaterF => b!(2) = f!(0) > f!(1),
-            Op::GreaterEqualF => b!(2) = f!(0) >= f!(1),
-            Op::LessI => b!(2) = i!(0) < i!(1),
-            Op::LessEqualI => b!(2) = i!(0) <= i!(1),
-            Op::GreaterI => b!(2) = i!(0) > i!(1),
-            Op::GreaterEqualI => b!(2) = i!(0) >= i!(1),
-            Op::Select(ty) => copy_slot!(ty, if b!(0) { 1 } else { 2 }, 3),
+            }),
+            Op::LessF => $each!(b!(2) = f!(0) < f!(1)),
+            Op::LessEqualF => $each!(b!(2) = f!(0) <= f!(1)),
+            Op::GreaterF => $each!(b!(2) = f!(0) > f!(1)),
+            Op::GreaterEqualF => $each!(b!(2) = f!(0) >= f!(1)),
+            Op::LessI => $each!(b!(2) = i!(0) < i!(1)),
+            Op::LessEqualI => $each!(b!(2) = i!(0) <= i!(1)),
+            Op::GreaterI => $each!(b!(2) = i!(0) > i!(1)),
+            Op::GreaterEqualI => $each!(b!(2) = i!(0) >= i!(1)),
+            Op::Select(ty) => $each!(copy_slot!(ty, if b!(0) { 1 } else { 2 }, 3)),
 
-            Op::AddV => arith!(AddV, 0),
-            Op::SubV => arith!(SubV, 0),
-            Op::MulV => v!(2) = v!(0) * v!(1),
-            Op::DivV => v!(2) = k::div_v(v!(0), v!(1)),
-            Op::ScaleV => arith!(ScaleV, 0),
-            Op::NegV => v!(1) = -v!(0),
-            Op::MinV => v!(2) = v!(0).min(v!(1)),
-            Op::MaxV => v!(2) = v!(0).max(v!(1)),
-            Op::AbsV => v!(1) = v!(0).abs(),
-            Op::ClampV => v!(3) = v!(0).max(v!(1)).min(v!(2)),
-            Op::LerpV => v!(3) = v!(0).lerp(v!(1), f!(2)),
-            Op::LengthV => f!(1) = v!(0).length(),
-            Op::DistanceV => f!(2) = v!(0).distance(v!(1)),
-            Op::UnitV => v!(1) = k::unit_v(v!(0)),
-            Op::DotV => f!(2) = v!(0).dot(v!(1)),
-            Op::CrossV => v!(2) = v!(0).cross(v!(1)),
-            Op::MakeVector => v!(3) = Vec3::new(f!(0), f!(1), f!(2)),
-            Op::BreakVector => {
+            Op::AddV => $each!(arith!(AddV, 0)),
+            Op::SubV => $each!(arith!(SubV, 0)),
+            Op::MulV => $each!(v!(2) = v!(0) * v!(1)),
+            Op::DivV => $each!(v!(2) = k::div_v(v!(0), v!(1))),
+            Op::ScaleV => $each!(arith!(ScaleV, 0)),
+            Op::NegV => $each!(v!(1) = -v!(0)),
+            Op::MinV => $each!(v!(2) = v!(0).min(v!(1))),
+            Op::MaxV => $each!(v!(2) = v!(0).max(v!(1))),
+            Op::AbsV => $each!(v!(1) = v!(0).abs()),
+            Op::ClampV => $each!(v!(3) = v!(0).max(v!(1)).min(v!(2))),
+            Op::LerpV => $each!(v!(3) = v!(0).lerp(v!(1), f!(2))),
+            Op::LengthV => $each!(f!(1) = v!(0).length()),
+            Op::DistanceV => $each!(f!(2) = v!(0).distance(v!(1))),
+            Op::UnitV => $each!(v!(1) = k::unit_v(v!(0))),
+            Op::DotV => $each!(f!(2) = v!(0).dot(v!(1))),
+            Op::CrossV => $each!(v!(2) = v!(0).cross(v!(1))),
+            Op::MakeVector => $each!(v!(3) = Vec3::new(f!(0), f!(1), f!(2))),
+            Op::BreakVector => $each!({
                 let x = v!(0);
                 f!(1) = x.x;
                 f!(2) = x.y;
                 f!(3) = x.z;
-            }
+            }),
 
-            Op::QuatFromAxisAngle => q!(2) = k::quat_from_axis_angle(v!(0), f!(1)),
-            Op::QuatFromEuler => {
+            Op::QuatFromAxisAngle => $each!(q!(2) = k::quat_from_axis_angle(v!(0), f!(1))),
+            Op::QuatFromEuler => $each!({
                 q!(2) = strider_core::euler::quat_from_euler(v!(0), k::euler_order(i!(1)));
-            }
-            Op::EulerFromQuat => {
+            }),
+            Op::EulerFromQuat => $each!({
                 v!(2) = strider_core::euler::euler_from_quat(q!(0), k::euler_order(i!(1)));
-            }
-            Op::MulQ => q!(2) = k::unit_q(q!(0) * q!(1)),
-            Op::InverseQ => q!(1) = k::unit_q(q!(0)).inverse(),
-            Op::UnitQ => q!(1) = k::unit_q(q!(0)),
-            Op::SlerpQ => q!(3) = k::slerp(q!(0), q!(1), f!(2)),
-            Op::RotateVector => v!(2) = q!(0) * v!(1),
-            Op::QuatScale => q!(2) = k::quat_scale(q!(0), f!(1)),
-            Op::FindQuatBetween => q!(2) = k::find_quat_between(v!(0), v!(1)),
+            }),
+            Op::MulQ => $each!(q!(2) = k::unit_q(q!(0) * q!(1))),
+            Op::InverseQ => $each!(q!(1) = k::unit_q(q!(0)).inverse()),
+            Op::UnitQ => $each!(q!(1) = k::unit_q(q!(0))),
+            Op::SlerpQ => $each!(q!(3) = k::slerp(q!(0), q!(1), f!(2))),
+            Op::RotateVector => $each!(v!(2) = q!(0) * v!(1)),
+            Op::QuatScale => $each!(q!(2) = k::quat_scale(q!(0), f!(1))),
+            Op::FindQuatBetween => $each!(q!(2) = k::find_quat_between(v!(0), v!(1))),
 
-            Op::MakeTransform => t!(3) = Transform::new(v!(0), k::unit_q(q!(1)), v!(2)),
-            Op::BreakTransform => break_transform!(0),
-            Op::MulT => t!(2) = t!(0) * t!(1),
-            Op::InverseT => t!(1) = t!(0).inverse(),
-            Op::MakeRelative => t!(2) = t!(0).relative_to(&t!(1)),
-            Op::MakeAbsolute => t!(2) = t!(1) * t!(0),
-            Op::TransformPoint => v!(2) = t!(0).transform_point(v!(1)),
-            Op::TransformVector => v!(2) = t!(0).transform_vector(v!(1)),
-            Op::RotateAroundPoint => t!(3) = k::rotate_around_point(t!(0), v!(1), q!(2)),
-            Op::InterpolateTransform => {
+            Op::MakeTransform => $each!(t!(3) = Transform::new(v!(0), k::unit_q(q!(1)), v!(2))),
+            Op::BreakTransform => $each!(break_transform!(0)),
+            Op::MulT => $each!(t!(2) = t!(0) * t!(1)),
+            Op::InverseT => $each!(t!(1) = t!(0).inverse()),
+            Op::MakeRelative => $each!(t!(2) = t!(0).relative_to(&t!(1))),
+            Op::MakeAbsolute => $each!(t!(2) = t!(1) * t!(0)),
+            Op::TransformPoint => $each!(v!(2) = t!(0).transform_point(v!(1))),
+            Op::TransformVector => $each!(v!(2) = t!(0).transform_vector(v!(1))),
+            Op::RotateAroundPoint => $each!(t!(3) = k::rotate_around_point(t!(0), v!(1), q!(2))),
+            Op::InterpolateTransform => $each!({
                 let w = f!(2);
                 t!(3) = if w.is_nan() {
                     t!(0)
                 } else {
                     t!(0).interpolate(&t!(1), w)
                 };
-            }
-            Op::AimMath => {
+            }),
+            Op::AimMath => $each!({
                 let tr = t!(0);
                 let target = v!(2);
                 let direction = if i!(3) == 0 {
@@ -419,24 +441,24 @@ macro_rules! execute {
                     target - tr.translation
                 };
                 t!(5) = k::aim(tr, v!(1), direction, f!(4));
-            }
-            Op::AlignToNormal => t!(4) = k::aim(t!(0), v!(1), v!(2), f!(3)),
-            Op::Spline => {
+            }),
+            Op::AlignToNormal => $each!(t!(4) = k::aim(t!(0), v!(1), v!(2), f!(3))),
+            Op::Spline => $each!({
                 let mode = if i!(2) == 1 {
                     SplineMode::CatmullRom
                 } else {
                     SplineMode::BSpline
                 };
-                let (p, t) = spline::evaluate(&s.vec3_arrays[at!(0)], f!(1), mode);
+                let (p, t) = spline::evaluate(&$s.vec3_arrays[at!(0)], f!(1), mode);
                 v!(3) = p;
                 v!(4) = t;
-            }
-            Op::ClampLength => v!(3) = k::clamp_length(v!(0), f!(1), f!(2)),
-            Op::ClampSpatially => v!(4) = k::clamp_spatially(v!(0), v!(1), f!(2), f!(3)),
+            }),
+            Op::ClampLength => $each!(v!(3) = k::clamp_length(v!(0), f!(1), f!(2))),
+            Op::ClampSpatially => $each!(v!(4) = k::clamp_spatially(v!(0), v!(1), f!(2), f!(3))),
 
-            Op::GetTransform => get_transform!(0),
-            Op::SetTransform => {
-                if let Some(bi) = bone($cx.pose, s.bones[at!(0)]) {
+            Op::GetTransform => $each!(get_transform!(0)),
+            Op::SetTransform => $each!({
+                if let Some(bi) = bone($cx.pose, $s.bones[at!(0)]) {
                     let weight = f!(4);
                     if i!(2) == 0 {
                         let value = k::blend_transform($cx.pose.global(bi), t!(1), weight);
@@ -446,29 +468,29 @@ macro_rules! execute {
                         $cx.pose.set_local(bi, value);
                     }
                 }
-            }
-            Op::GetParent => {
-                s.bones[at!(1)] = match bone($cx.pose, s.bones[at!(0)]) {
+            }),
+            Op::GetParent => $each!({
+                $s.bones[at!(1)] = match bone($cx.pose, $s.bones[at!(0)]) {
                     Some(bi) => $cx.pose.skeleton().parent(bi).map_or(-1, |p| p.0 as i32),
                     None => -1,
                 };
-            }
-            Op::FindBones => {
-                let out = &mut s.bone_arrays[at!(3)];
-                match bone($cx.pose, s.bones[at!(0)]) {
+            }),
+            Op::FindBones => $each!({
+                let out = &mut $s.bone_arrays[at!(3)];
+                match bone($cx.pose, $s.bones[at!(0)]) {
                     Some(root) => {
-                        let contains = &$cx.texts[s.names[at!(1)] as usize];
-                        let excludes = &$cx.texts[s.names[at!(2)] as usize];
+                        let contains = &$cx.texts[$s.names[at!(1)] as usize];
+                        let excludes = &$cx.texts[$s.names[at!(2)] as usize];
                         k::find_bones($cx.pose.skeleton(), root, contains, excludes, out);
                     }
                     None => out.clear(),
                 }
-            }
-            Op::TwoBoneIK => {
+            }),
+            Op::TwoBoneIK => $each!({
                 let chain = (
-                    bone($cx.pose, s.bones[at!(0)]),
-                    bone($cx.pose, s.bones[at!(1)]),
-                    bone($cx.pose, s.bones[at!(2)]),
+                    bone($cx.pose, $s.bones[at!(0)]),
+                    bone($cx.pose, $s.bones[at!(1)]),
+                    bone($cx.pose, $s.bones[at!(2)]),
                 );
                 let (reached, distance) = match chain {
                     (Some(a), Some(b), Some(c)) => {
@@ -492,10 +514,10 @@ macro_rules! execute {
                 };
                 b!(13) = reached;
                 f!(14) = distance;
-            }
-            Op::DeltaTime => f!(0) = $cx.dt,
-            Op::WorldTransform => t!(0) = $cx.to_world,
-            Op::LineTrace | Op::SphereTrace => {
+            }),
+            Op::DeltaTime => $each!(f!(0) = $cx.dt),
+            Op::WorldTransform => $each!(t!(0) = $cx.to_world),
+            Op::LineTrace | Op::SphereTrace => $each!({
                 let (start, end) = (v!(0), v!(1));
                 let (ws, we) = (
                     $cx.to_world.transform_point(start),
@@ -524,22 +546,22 @@ macro_rules! execute {
                         f!(outs + 3) = start.distance(end);
                     }
                 }
-            }
+            }),
 
-            Op::FloatLerp => f!(3) = loco::lerp_exponential(f!(0), f!(1), $cx.dt, f!(2)),
-            Op::VectorLerp => {
+            Op::FloatLerp => $each!(f!(3) = loco::lerp_exponential(f!(0), f!(1), $cx.dt, f!(2))),
+            Op::VectorLerp => $each!({
                 let max = f!(3);
                 v!(4) = if max > 0.0 {
                     loco::lerp_max_step(v!(0), v!(1), $cx.dt, f!(2), max)
                 } else {
                     loco::lerp_exponential_v(v!(0), v!(1), $cx.dt, f!(2))
                 };
-            }
-            Op::QuatLerp => q!(3) = loco::lerp_exponential_q(q!(0), q!(1), $cx.dt, f!(2)),
-            Op::FInterpToF => f!(3) = loco::finterp_to(f!(0), f!(1), $cx.dt, f!(2)),
-            Op::FInterpToV => v!(3) = loco::vinterp_to(v!(0), v!(1), $cx.dt, f!(2)),
-            Op::FInterpToQ => q!(3) = loco::qinterp_to(q!(0), q!(1), $cx.dt, f!(2)),
-            Op::SpringF => {
+            }),
+            Op::QuatLerp => $each!(q!(3) = loco::lerp_exponential_q(q!(0), q!(1), $cx.dt, f!(2))),
+            Op::FInterpToF => $each!(f!(3) = loco::finterp_to(f!(0), f!(1), $cx.dt, f!(2))),
+            Op::FInterpToV => $each!(v!(3) = loco::vinterp_to(v!(0), v!(1), $cx.dt, f!(2))),
+            Op::FInterpToQ => $each!(q!(3) = loco::qinterp_to(q!(0), q!(1), $cx.dt, f!(2))),
+            Op::SpringF => $each!({
                 // State: [last run, value, velocity]. Advances once per run, however many
                 // steps read it; starts at rest on the first target it sees.
                 if i!(3) != $cx.run {
@@ -554,8 +576,8 @@ macro_rules! execute {
                     f!(5) = vel;
                 }
                 f!(2) = f!(4);
-            }
-            Op::SpringV => {
+            }),
+            Op::SpringV => $each!({
                 if i!(3) != $cx.run {
                     let target = v!(0);
                     if i!(3) == 0 {
@@ -568,8 +590,8 @@ macro_rules! execute {
                     v!(5) = vel;
                 }
                 v!(2) = v!(4);
-            }
-            Op::MovementAngleOffset => {
+            }),
+            Op::MovementAngleOffset => $each!({
                 f!(8) = loco::get_movement_angle_offset(
                     v!(0),
                     f!(1),
@@ -581,14 +603,14 @@ macro_rules! execute {
                     f!(6),
                     f!(7),
                 );
-            }
-            Op::PerFootRotationFactor => {
+            }),
+            Op::PerFootRotationFactor => $each!({
                 f!(3) = loco::per_foot_rotation_factor(f!(0), f!(1), f!(2))
-            }
-            Op::LimitRotationAroundZ => q!(3) = loco::limit_rotation_around_z(q!(0), f!(1), f!(2)),
-            Op::FootAvoidance => v!(5) = loco::foot_avoidance(v!(0), v!(1), f!(2), b!(3), f!(4)),
-            Op::KneeVector => v!(5) = loco::knee_vector(q!(0), q!(1), v!(2), f!(3), f!(4)),
-            Op::ArmSwingRotation => {
+            }),
+            Op::LimitRotationAroundZ => $each!(q!(3) = loco::limit_rotation_around_z(q!(0), f!(1), f!(2))),
+            Op::FootAvoidance => $each!(v!(5) = loco::foot_avoidance(v!(0), v!(1), f!(2), b!(3), f!(4))),
+            Op::KneeVector => $each!(v!(5) = loco::knee_vector(q!(0), q!(1), v!(2), f!(3), f!(4))),
+            Op::ArmSwingRotation => $each!({
                 f!(13) = loco::arm_swing_pitch(
                     f!(0),
                     v!(1),
@@ -604,100 +626,100 @@ macro_rules! execute {
                     f!(11),
                     f!(12),
                 );
-            }
-            Op::ClavicleOffset => f!(4) = loco::clavicle_offset(f!(0), f!(1), f!(2), f!(3)),
-            Op::PelvisLean => {
+            }),
+            Op::ClavicleOffset => $each!(f!(4) = loco::clavicle_offset(f!(0), f!(1), f!(2), f!(3))),
+            Op::PelvisLean => $each!({
                 let (pitch, shift) = loco::pelvis_lean(v!(0), f!(1), f!(2), f!(3));
                 f!(4) = pitch;
                 f!(5) = shift;
-            }
-            Op::PelvisSideLean => f!(3) = loco::pelvis_side_lean(f!(0), f!(1), f!(2)),
-            Op::FootPivots => {
+            }),
+            Op::PelvisSideLean => $each!(f!(3) = loco::pelvis_side_lean(f!(0), f!(1), f!(2))),
+            Op::FootPivots => $each!({
                 let (ball, tip, heel) = loco::foot_pivots(v!(0), v!(1), f!(2), f!(3), f!(4), f!(5));
                 v!(6) = ball;
                 v!(7) = tip;
                 v!(8) = heel;
-            }
-            Op::CycleStep => {
+            }),
+            Op::CycleStep => $each!({
                 let (master, per_foot) = loco::cycle_step(f!(0), $cx.dt, f!(1), f!(2), b!(3));
                 f!(4) = master;
                 f!(5) = per_foot;
-            }
-            Op::FootOffsetFromTrace => f!(3) = loco::foot_offset_from_trace(b!(0), f!(1), f!(2)),
-            Op::RotationFromNormal => {
+            }),
+            Op::FootOffsetFromTrace => $each!(f!(3) = loco::foot_offset_from_trace(b!(0), f!(1), f!(2))),
+            Op::RotationFromNormal => $each!({
                 let n = v!(0);
                 let (pitch, roll) = loco::rotation_from_normal(n);
                 f!(1) = pitch;
                 f!(2) = roll;
                 q!(3) = loco::rotation_from_normal_quat(n);
-            }
+            }),
 
-            Op::ArrayAt(e) => array_at!(e, 0),
-            Op::MulFMulF => {
+            Op::ArrayAt(e) => $each!(array_at!(e, 0)),
+            Op::MulFMulF => $each!({
                 arith!(MulF, 0);
                 arith!(MulF, 3);
-            }
-            Op::SubFMulF => {
+            }),
+            Op::SubFMulF => $each!({
                 arith!(SubF, 0);
                 arith!(MulF, 3);
-            }
-            Op::MulFAddF => {
+            }),
+            Op::MulFAddF => $each!({
                 arith!(MulF, 0);
                 arith!(AddF, 3);
-            }
-            Op::SubFAddF => {
+            }),
+            Op::SubFAddF => $each!({
                 arith!(SubF, 0);
                 arith!(AddF, 3);
-            }
-            Op::AddFMulF => {
+            }),
+            Op::AddFMulF => $each!({
                 arith!(AddF, 0);
                 arith!(MulF, 3);
-            }
-            Op::MulFSubF => {
+            }),
+            Op::MulFSubF => $each!({
                 arith!(MulF, 0);
                 arith!(SubF, 3);
-            }
-            Op::AddFAddF => {
+            }),
+            Op::AddFAddF => $each!({
                 arith!(AddF, 0);
                 arith!(AddF, 3);
-            }
-            Op::DivFSubF => {
+            }),
+            Op::DivFSubF => $each!({
                 arith!(DivF, 0);
                 arith!(SubF, 3);
-            }
-            Op::AddVAddV => {
+            }),
+            Op::AddVAddV => $each!({
                 arith!(AddV, 0);
                 arith!(AddV, 3);
-            }
-            Op::AddVSubV => {
+            }),
+            Op::AddVSubV => $each!({
                 arith!(AddV, 0);
                 arith!(SubV, 3);
-            }
-            Op::MulFScaleV => {
+            }),
+            Op::MulFScaleV => $each!({
                 arith!(MulF, 0);
                 arith!(ScaleV, 3);
-            }
-            Op::DivFScaleV => {
+            }),
+            Op::DivFScaleV => $each!({
                 arith!(DivF, 0);
                 arith!(ScaleV, 3);
-            }
-            Op::GetTransformBreakTransform => {
+            }),
+            Op::GetTransformBreakTransform => $each!({
                 get_transform!(0);
                 break_transform!(4);
-            }
-            Op::ArrayAtBreakTransform => {
+            }),
+            Op::ArrayAtBreakTransform => $each!({
                 array_at!(Elem::Transform, 0);
                 break_transform!(3);
-            }
-            Op::ArrayCount(e) => {
+            }),
+            Op::ArrayCount(e) => $each!({
                 macro_rules! count {
                     ($sc:expr, $ar:expr, $zero:expr) => {
-                        s.ints[at!(1)] = $ar[at!(0)].len() as i32
+                        $s.ints[at!(1)] = $ar[at!(0)].len() as i32
                     };
                 }
-                by_elem!(e, s, count);
-            }
-            Op::ArraySetAt(e) => {
+                by_elem!(e, $s, count);
+            }),
+            Op::ArraySetAt(e) => $each!({
                 let index = i!(1);
                 macro_rules! set {
                     ($sc:expr, $ar:expr, $zero:expr) => {{
@@ -709,65 +731,65 @@ macro_rules! execute {
                         }
                     }};
                 }
-                by_elem!(e, s, set);
-            }
-            Op::ArrayAdd(e) => {
+                by_elem!(e, $s, set);
+            }),
+            Op::ArrayAdd(e) => $each!({
                 macro_rules! add {
                     ($sc:expr, $ar:expr, $zero:expr) => {{
                         let value = $sc[at!(1)];
                         $ar[at!(0)].push(value);
                     }};
                 }
-                by_elem!(e, s, add);
-            }
-            Op::ArrayReset(e) => {
+                by_elem!(e, $s, add);
+            }),
+            Op::ArrayReset(e) => $each!({
                 macro_rules! reset {
                     ($sc:expr, $ar:expr, $zero:expr) => {
                         $ar[at!(0)].clear()
                     };
                 }
-                by_elem!(e, s, reset);
-            }
+                by_elem!(e, $s, reset);
+            }),
 
             // Draw ops: DebugDraw::push records nothing when drawing is off.
-            Op::DrawPoint => {
+            Op::DrawPoint => $each!({
                 $cx.debug.push(DebugPrimitive::Point {
                     position: v!(0),
                     size: f!(1),
                     color: color(v!(2)),
                 });
-            }
-            Op::DrawLine => {
+            }),
+            Op::DrawLine => $each!({
                 $cx.debug.push(DebugPrimitive::Line {
                     start: v!(0),
                     end: v!(1),
                     thickness: f!(2),
                     color: color(v!(3)),
                 });
-            }
-            Op::DrawArrow => {
+            }),
+            Op::DrawArrow => $each!({
                 $cx.debug.push(DebugPrimitive::Arrow {
                     start: v!(0),
                     end: v!(1),
                     thickness: f!(2),
                     color: color(v!(3)),
                 });
-            }
-            Op::DrawSphere => {
+            }),
+            Op::DrawSphere => $each!({
                 $cx.debug.push(DebugPrimitive::Sphere {
                     center: v!(0),
                     radius: f!(1),
                     color: color(v!(2)),
                 });
-            }
-            Op::DrawBox => {
+            }),
+            Op::DrawBox => $each!({
                 $cx.debug.push(DebugPrimitive::Box {
                     transform: t!(0),
                     half_extents: v!(1),
                     color: color(v!(2)),
                 });
-            }
-            Op::DrawSpline => {
+            }),
+            Op::DrawSpline => $each!({
                 if $cx.debug.is_enabled() {
                     let mode = if i!(1) == 1 {
                         SplineMode::CatmullRom
@@ -775,7 +797,7 @@ macro_rules! execute {
                         SplineMode::BSpline
                     };
                     let pieces = i!(2).clamp(1, 256);
-                    let points = &s.vec3_arrays[at!(0)];
+                    let points = &$s.vec3_arrays[at!(0)];
                     let (thickness, c) = (f!(3), color(v!(4)));
                     let mut start = spline::evaluate(points, 0.0, mode).0;
                     for k in 1..=pieces {
@@ -789,14 +811,14 @@ macro_rules! execute {
                         start = end;
                     }
                 }
-            }
-            Op::DrawTransform => {
+            }),
+            Op::DrawTransform => $each!({
                 $cx.debug.push(DebugPrimitive::Axes {
                     transform: t!(0),
                     size: f!(1),
                     thickness: f!(2),
                 });
-            }
+            }),
         }
     }};
 }
@@ -864,11 +886,12 @@ fn run_loop<const PROFILE: bool>(
             op,
             // SAFETY: in bounds by the padding (above).
             unsafe { operands.get_unchecked(args..args + MAX_OPERANDS) },
-            &mut *s,
+            s,
             bases,
             cx,
             jump,
-            end
+            end,
+            once
         );
         #[cfg(feature = "profile")]
         if PROFILE && let Some(started) = last {
@@ -877,6 +900,138 @@ fn run_loop<const PROFILE: bool>(
             entry.nanos += now.duration_since(started).as_nanos() as u64;
             entry.count += 1;
             last = Some(now);
+        }
+    }
+}
+
+/// The most instances [`run_batch`] runs together.
+pub(crate) const BATCH: usize = 16;
+
+/// Runs from `entry` until an `End` instruction on every member of a batch, dispatching each
+/// instruction once for all the members that are at it: their handlers run one after the
+/// other, in member order, on each member's own slots, pose and context.
+///
+/// Members that branch apart continue separately: the members at the lowest instruction run
+/// next (`group`), the others wait at theirs until the group reaches them (forward jumps over
+/// an `if`'s other side, and past a loop a member left early, meet again). Every member runs
+/// exactly the instructions it would run alone, in the same order, so its results are
+/// bit-identical to [`run`]'s; only the interleaving between members differs, and members
+/// share nothing they write.
+///
+/// `code` and `operands` are the program's, passed apart so that the compiler knows that the
+/// handlers' writes do not touch them (operand fetches can stay out of the member loop).
+/// Returns the number of instructions dispatched (each once for all the members at it).
+// Each handler body is expanded once per op with `each!`; bodies that read no slots (or
+// no scalar slots) leave that iteration's `s` or `b` unread.
+#[allow(unused_assignments)]
+pub(crate) fn run_batch(
+    code: &[Instr],
+    operands: &[u32],
+    entry: u32,
+    members: &mut [Ctx<'_>],
+) -> usize {
+    let n = members.len();
+    assert!(n <= BATCH, "a batch has at most {BATCH} members");
+    if n == 0 {
+        return 0;
+    }
+    let mut dispatches = 0;
+    let mut bases = [None; BATCH];
+    for (b, cx) in bases.iter_mut().zip(members.iter_mut()) {
+        *b = Some(Bases::of(cx.slots));
+    }
+    let bases = bases.map(|b| b.unwrap_or(Bases::NONE));
+    // Where each member outside the group is (`END` once it has ended); the group's members
+    // are all at `pc`.
+    let mut pcs = [END; BATCH];
+    let mut pc = entry as usize;
+    let mut group: u32 = (1u32 << n) - 1;
+    // The lowest instruction a member outside the group waits at (`END`: none waits).
+    let mut waiting = END;
+    // The member a handler runs for, its context, slots and slot bases (set by `each!`
+    // below: a macro's own `let`s are invisible to the handler bodies it is given), and the
+    // members whose instruction jumped or ended.
+    let mut m: usize;
+    let mut cx: &mut Ctx<'_>;
+    let mut s: &mut Slots;
+    let mut b: Bases;
+    let mut moved: u32;
+    loop {
+        // SAFETY: as in `run_loop`.
+        let Instr { op, args } = unsafe { *code.get_unchecked(pc) };
+        let args = args as usize;
+        debug_assert!(args + MAX_OPERANDS <= operands.len());
+        // SAFETY: in bounds by the operand list's padding (see `run_loop`).
+        let o = unsafe { operands.get_unchecked(args..args + MAX_OPERANDS) };
+        moved = 0;
+        dispatches += 1;
+        macro_rules! each {
+            ($body:expr) => {{
+                let mut rest = group;
+                while rest != 0 {
+                    m = rest.trailing_zeros() as usize;
+                    rest &= rest - 1;
+                    // SAFETY: `group` has bits for members `0..n` only.
+                    cx = unsafe { members.get_unchecked_mut(m) };
+                    s = &mut *cx.slots;
+                    // SAFETY: `m < n <= BATCH`.
+                    b = unsafe { *bases.get_unchecked(m) };
+                    $body;
+                }
+            }};
+        }
+        macro_rules! jump {
+            ($target:expr) => {{
+                pcs[m] = $target;
+                moved |= 1 << m;
+            }};
+        }
+        macro_rules! end {
+            () => {{
+                pcs[m] = END;
+                moved |= 1 << m;
+            }};
+        }
+        execute!(op, o, s, b, cx, jump, end, each);
+        if moved == 0 {
+            // The whole group goes on to the next instruction, where waiting members may
+            // join it.
+            pc += 1;
+            if pc == waiting {
+                waiting = END;
+                for (k, &at) in pcs.iter().enumerate().take(n) {
+                    if group & (1 << k) != 0 {
+                        continue;
+                    }
+                    if at == pc {
+                        group |= 1 << k;
+                    } else {
+                        waiting = waiting.min(at);
+                    }
+                }
+            }
+        } else {
+            // Members that did not jump go on to the next instruction; then the lowest
+            // instruction any member is at runs next, for every member there.
+            let mut rest = group & !moved;
+            while rest != 0 {
+                pcs[rest.trailing_zeros() as usize] = pc + 1;
+                rest &= rest - 1;
+            }
+            let least = pcs[..n].iter().copied().min().unwrap_or(END);
+            if least == END {
+                return dispatches;
+            }
+            pc = least;
+            group = 0;
+            waiting = END;
+            for (k, &at) in pcs.iter().enumerate().take(n) {
+                if at == least {
+                    group |= 1 << k;
+                } else {
+                    waiting = waiting.min(at);
+                }
+            }
         }
     }
 }
@@ -907,6 +1062,174 @@ pub(crate) unsafe fn step(op: Op, o: &[u32], cx: &mut Ctx<'_>, next: usize) -> u
         };
     }
     let bases = Bases::of(cx.slots);
-    execute!(op, o, &mut *cx.slots, bases, cx, jump, end);
+    let s = &mut *cx.slots;
+    execute!(op, o, s, bases, cx, jump, end, once);
     next
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::{FrameInput, Instance, ProgramBuilder};
+    use std::sync::Arc;
+    use strider_core::{Bone, EmptyWorld, Skeleton};
+    use strider_nodes::Value;
+
+    /// A program whose path depends on the frame's dt `d`: an `if` (`y = 2d` when
+    /// `d > 0.5`, else `y = d - 1`), a loop adding `d` to `acc` `trunc(d)` times, and two
+    /// `End`s (`z = acc + y` when `d < 4`, else `z = 2 acc`). Returns the program and the
+    /// slots of `y`, `acc` and `z`.
+    fn branchy() -> (crate::Program, [usize; 3]) {
+        let mut pb = ProgramBuilder::new("branchy");
+        let c = |pb: &mut ProgramBuilder, v: f32| pb.constant(&Value::Float(v), "");
+        let (half, one, two, four) = (
+            c(&mut pb, 0.5),
+            c(&mut pb, 1.0),
+            c(&mut pb, 2.0),
+            c(&mut pb, 4.0),
+        );
+        let zero_f = c(&mut pb, 0.0);
+        let zero_i = pb.constant(&Value::Int(0), "");
+        let [d, y, acc, z] = [(); 4].map(|()| pb.alloc(ValueType::Float));
+        let [counter, count, index] = [(); 3].map(|()| pb.alloc(ValueType::Int));
+        let [big, small] = [(); 2].map(|()| pb.alloc(ValueType::Bool));
+        pb.set_construction_entry(pb.here());
+        pb.emit(Op::End, &[]);
+        pb.set_forward_entry(pb.here());
+        pb.emit(Op::DeltaTime, &[d]);
+        pb.emit(Op::GreaterF, &[d, half, big]);
+        let to_else = pb.emit(Op::JumpIfFalse, &[big, 0]);
+        pb.emit(Op::MulF, &[d, two, y]);
+        let to_join = pb.emit(Op::Jump, &[0]);
+        let else_ = pb.emit(Op::SubF, &[d, one, y]);
+        pb.patch(to_else, 1, else_);
+        let join = pb.emit(Op::Copy(ValueType::Int), &[zero_i, counter]);
+        pb.patch(to_join, 0, join);
+        pb.emit(Op::Copy(ValueType::Float), &[zero_f, acc]);
+        pb.emit(Op::ToInt, &[d, count]);
+        let head = pb.emit(Op::ForNext, &[counter, count, index, 0]);
+        pb.emit(Op::AddF, &[acc, d, acc]);
+        pb.emit(Op::Jump, &[head]);
+        let after = pb.emit(Op::LessF, &[d, four, small]);
+        pb.patch(head, 3, after);
+        let to_big = pb.emit(Op::JumpIfFalse, &[small, 0]);
+        pb.emit(Op::AddF, &[acc, y, z]);
+        pb.emit(Op::End, &[]);
+        let big_end = pb.emit(Op::MulF, &[acc, two, z]);
+        pb.patch(to_big, 1, big_end);
+        pb.emit(Op::End, &[]);
+        (pb.finish(), [y, acc, z].map(|s| s as usize))
+    }
+
+    fn skeleton() -> Arc<Skeleton> {
+        Arc::new(
+            Skeleton::new(vec![Bone {
+                name: "root".to_string(),
+                parent: None,
+                rest_local: Transform::IDENTITY,
+            }])
+            .expect("valid skeleton"),
+        )
+    }
+
+    #[test]
+    fn a_batch_gives_every_member_its_own_path() {
+        let (program, [y, acc, z]) = branchy();
+        let program = Arc::new(program);
+        let dts = [0.25, 0.75, 2.5, 4.0, 5.5, f32::NAN, 3.0];
+        // (y, acc, z) by hand; NaN dt counts as 0.
+        let expected = [
+            (-0.75, 0.0, -0.75),
+            (1.5, 0.0, 1.5),
+            (5.0, 5.0, 10.0),
+            (8.0, 16.0, 32.0),
+            (11.0, 27.5, 55.0),
+            (-1.0, 0.0, -1.0),
+            (6.0, 9.0, 15.0),
+        ];
+        let mut crowd: Vec<Instance> = dts
+            .iter()
+            .map(|_| Instance::new(Arc::clone(&program), skeleton()).expect("instantiates"))
+            .collect();
+        let input = |k: usize| FrameInput {
+            dt: dts[k],
+            ..FrameInput::default()
+        };
+        // Twice: the second frame starts from the first one's state.
+        for _ in 0..2 {
+            Instance::run_forward_batch(&mut crowd, input, &EmptyWorld, false);
+            for (k, instance) in crowd.iter().enumerate() {
+                let f = &instance.slots().floats;
+                assert_eq!(
+                    (f[y], f[acc], f[z]),
+                    expected[k],
+                    "member {k}, dt {}",
+                    dts[k]
+                );
+            }
+        }
+        // The same as each run alone for the same two frames, slot for slot (a loop that
+        // runs no rounds leaves its index as it was, so each needs its own instance).
+        for (k, instance) in crowd.iter().enumerate() {
+            let mut alone = Instance::new(Arc::clone(&program), skeleton()).expect("instantiates");
+            for _ in 0..2 {
+                alone.run_forward(&input(k), &EmptyWorld, false);
+            }
+            assert!(alone.slots().bit_eq(instance.slots()), "member {k}");
+        }
+    }
+
+    /// Dispatches of one batch run of `branchy` with these dts.
+    fn dispatches(dts: &[f32]) -> usize {
+        let (program, _) = branchy();
+        let skeleton = skeleton();
+        let mut slots: Vec<Slots> = dts.iter().map(|_| program.initial.clone()).collect();
+        let mut poses: Vec<Pose> = dts
+            .iter()
+            .map(|_| Pose::new(Arc::clone(&skeleton)))
+            .collect();
+        let mut draws: Vec<DebugDraw> = dts.iter().map(|_| DebugDraw::new(false)).collect();
+        let mut members: Vec<Ctx<'_>> = slots
+            .iter_mut()
+            .zip(&mut poses)
+            .zip(&mut draws)
+            .zip(dts)
+            .map(|(((slots, pose), debug), &dt)| Ctx {
+                slots,
+                texts: &program.texts,
+                pose,
+                debug,
+                world: &EmptyWorld,
+                dt,
+                to_world: Transform::IDENTITY,
+                from_world: Transform::IDENTITY,
+                run: 1,
+                #[cfg(feature = "profile")]
+                profile: None,
+            })
+            .collect();
+        run_batch(
+            &program.code,
+            &program.operands,
+            program.forward,
+            &mut members,
+        )
+    }
+
+    #[test]
+    fn members_on_one_path_share_every_dispatch_and_split_paths_meet_again() {
+        // Alone, dt 2.5 runs 19 instructions: 5 to the `if`'s join, 3 before the loop, 7
+        // in it (two rounds of 3 and the exit), 4 after.
+        assert_eq!(dispatches(&[2.5]), 19);
+        assert_eq!(dispatches(&[2.5; 5]), 19, "one group throughout");
+        // 0.75 takes the `then` side (13 alone), 0.25 the `else` side (12 alone): 3
+        // together up to the branch, 2 for `then`, 1 for `else`, then 8 together again.
+        assert_eq!(dispatches(&[0.75, 0.25]), 14);
+        // 2.5 leaves the loop after two rounds, 4.0 after four: 8 together before the loop,
+        // two rounds (6) and the third `ForNext` together, 4.0's two more rounds and exit
+        // alone (6), the test after the loop together (2), then each member's own end (2
+        // and 2).
+        assert_eq!(dispatches(&[2.5, 4.0]), 27);
+        assert_eq!(dispatches(&[]), 0);
+    }
 }
