@@ -1,5 +1,7 @@
 //! One forward frame of the shipped graphs on the mannequin, in an empty world, at 60 Hz:
-//! `Instance::run_forward` only (the instance is created and warmed up beforehand).
+//! `Instance::run_forward` only (the instance is created and warmed up beforehand), and
+//! `.../batch16`: 16 instances through `Instance::run_forward_batch` together (criterion's
+//! throughput is per character, so its time per element compares with the single frame).
 //!
 //! `graphs/locomotion.ron` is benchmarked too when it exists and compiles (otherwise a note
 //! is printed and it is skipped).
@@ -16,7 +18,7 @@
 //!
 //! See docs/performance.md.
 
-use criterion::{Criterion, criterion_group, criterion_main};
+use criterion::{Criterion, Throughput, criterion_group, criterion_main};
 use std::hint::black_box;
 use std::path::Path;
 use std::sync::Arc;
@@ -98,9 +100,20 @@ fn frames(c: &mut Criterion) {
             .map(|s| s.to_string_lossy().into_owned())
             .unwrap_or_default();
         let frame = input();
+        g.throughput(Throughput::Elements(1));
         g.bench_function(name.as_str(), |b| {
             b.iter(|| inst.run_forward(black_box(&frame), &EmptyWorld, false));
         });
+        let mut crowd: Vec<Instance> = (0..16)
+            .filter_map(|_| warm_instance(&program, &skeleton))
+            .collect();
+        g.throughput(Throughput::Elements(crowd.len() as u64));
+        g.bench_function(format!("{name}/batch16"), |b| {
+            b.iter(|| {
+                Instance::run_forward_batch(&mut crowd, |_| black_box(input()), &EmptyWorld, false);
+            });
+        });
+        g.throughput(Throughput::Elements(1));
         #[cfg(feature = "profile")]
         {
             inst.set_profiling(true);

@@ -184,6 +184,37 @@ fn feet_finder_and_other_input_poses_do_not_allocate() {
     assert_eq!(n, 0, "{n} allocations in 100 frames");
 }
 
+#[test]
+fn batched_crowd_frames_do_not_allocate() {
+    // `Instance::run_forward_batch` gathers each batch's members on the stack: 40
+    // characters of two programs (batches of 16, 4, 16 and 4), debug drawing on.
+    let _guard = SERIAL.lock().unwrap_or_else(|e| e.into_inner());
+    let locomotion = compile_file("graphs/locomotion.ron");
+    let bob = compile_file("graphs/pelvis_bob.ron");
+    let skeleton = strider_graph::load_skeleton(Path::new("graphs/skeletons/mannequin.ron"))
+        .unwrap_or_else(|_| panic!("mannequin loads"))
+        .skeleton;
+    let mut crowd: Vec<Instance> = (0..40)
+        .map(|k| {
+            let program = if k % 20 < 16 { &locomotion } else { &bob };
+            Instance::new(Arc::clone(program), Arc::clone(&skeleton)).expect("instantiates")
+        })
+        .collect();
+    let input = |k: usize| FrameInput {
+        dt: [1.0 / 60.0, 1.0 / 30.0, 0.0][k % 3],
+        ..Default::default()
+    };
+    for _ in 0..10 {
+        Instance::run_forward_batch(&mut crowd, input, &EmptyWorld, true);
+    }
+    let n = allocations_in(|| {
+        for _ in 0..50 {
+            Instance::run_forward_batch(&mut crowd, input, &EmptyWorld, true);
+        }
+    });
+    assert_eq!(n, 0, "{n} allocations in 50 frames of 40 characters");
+}
+
 /// With the `profile` feature and profiling on, frames still allocate nothing: the
 /// per-instruction table is allocated with the instance.
 #[cfg(feature = "profile")]

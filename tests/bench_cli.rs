@@ -42,6 +42,9 @@ fn a_crowd_on_two_threads_reports_every_figure() {
     assert!(ok, "{err}");
     assert_eq!(j["characters"], 6);
     assert_eq!(j["threads"], 2);
+    // By default the interpreter runs characters 16 at a time (here all 6 together, 3 on
+    // each thread), and still gives the native baseline's outputs (below).
+    assert_eq!(j["batch"], 16);
     assert!(j["cores"].as_u64().is_some_and(|c| c >= 1));
     let ns = &j["ns_per_character_frame"];
     let (median, min, max) = (f(&ns["median"]), f(&ns["min"]), f(&ns["max"]));
@@ -87,9 +90,12 @@ fn a_graph_without_native_code_has_no_ratio() {
         "1",
         "--warm-up",
         "5",
+        "--batch",
+        "1",
         "--json",
     ]);
     assert!(ok, "{err}");
+    assert_eq!(j["batch"], 1);
     assert!(j["native_ratio"].is_null(), "{j}");
     assert!(j["native_identical"].is_null());
 }
@@ -116,4 +122,17 @@ fn bad_input_is_an_error_naming_the_file() {
     ]);
     assert!(!ok);
     assert!(err.contains("characters"), "{err}");
+    for batch in ["0", "17"] {
+        let (ok, _, err) = bench(&[
+            "graphs/foot_ik.ron",
+            "--skeleton",
+            "graphs/skeletons/mannequin.ron",
+            "--scenario",
+            "graphs/scenarios/walk_flat.ron",
+            "--batch",
+            batch,
+        ]);
+        assert!(!ok);
+        assert!(err.contains("--batch") && err.contains("1..=16"), "{err}");
+    }
 }

@@ -265,4 +265,36 @@ mod profiling {
         assert_eq!(inst.profile()[end[1]].count, 10);
         assert!(by_node.iter().all(|p| p.origin.is_some()));
     }
+
+    #[test]
+    fn a_profiling_instance_in_a_batch_runs_alone_and_is_profiled() {
+        // Batched runs record no profile; `run_forward_batch` runs an instance that
+        // profiles by itself, and its neighbours together, all as they would alone.
+        let program = compile();
+        let make = || -> Vec<Instance> {
+            (0..5)
+                .map(|_| Instance::new(Arc::clone(&program), mannequin()).unwrap())
+                .collect()
+        };
+        let (mut batched, mut alone) = (make(), make());
+        batched[2].set_profiling(true);
+        alone[2].set_profiling(true);
+        let input = |_: usize| FrameInput {
+            dt: 1.0 / 60.0,
+            ..Default::default()
+        };
+        for _ in 0..3 {
+            Instance::run_forward_batch(&mut batched, input, &EmptyWorld, false);
+            for instance in &mut alone {
+                instance.run_forward(&input(0), &EmptyWorld, false);
+            }
+        }
+        let add = pcs(&program, Op::AddF)[0];
+        // N = 5 rounds a frame, three frames.
+        assert_eq!(batched[2].profile()[add].count, 15);
+        assert_eq!(batched[1].profile()[add].count, 0, "not profiling");
+        for (a, b) in batched.iter().zip(&alone) {
+            assert!(a.slots().bit_eq(b.slots()));
+        }
+    }
 }

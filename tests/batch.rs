@@ -1,0 +1,163 @@
+//! `Instance::run_forward_batch` (docs/performance.md, "Batched execution") gives every
+//! character exactly what `Instance::run_forward` gives it alone: poses every frame, debug
+//! drawing and every slot bit-identical, through scenarios where characters at different
+//! points of their walk take different branches.
+
+use std::path::Path;
+use std::sync::Arc;
+use strider::host::scenario::{Scenario, Simulation};
+use strider::{EmptyWorld, FrameInput, InputPose, Instance, Program, Skeleton, Transform};
+
+fn compile(graph: &str) -> Arc<Program> {
+    Arc::new(strider::compile_file(Path::new(graph)).unwrap_or_else(|d| panic!("{graph}: {d:?}")))
+}
+
+fn mannequin() -> Arc<Skeleton> {
+    strider::load_skeleton(Path::new("graphs/skeletons/mannequin.ron"))
+        .expect("skeleton")
+        .skeleton
+}
+
+/// Asserts that two instances' output poses are bit-identical.
+fn same_pose(a: &Instance, b: &Instance) -> bool {
+    let (a, b) = (a.pose().locals(), b.pose().locals());
+    a.len() == b.len() && a.iter().zip(b).all(|(x, y)| x.bit_eq(y))
+}
+
+/// Runs `characters` instances of `graph` through `scenario` at `hz`, character `k` offset
+/// by `7 k` frames into it (so they are at different points of their cycles), `frames`
+/// frames, once batched and once each alone, and compares them after every frame.
+fn batched_equals_alone(graph: &str, scenario: &str, hz: u32, characters: usize, frames: usize) {
+    let program = compile(graph);
+    let skeleton = mannequin();
+    let scenario = Scenario::load(scenario).expect("scenario");
+    let mut sim = Simulation::new(&scenario, hz);
+    let mut track: Vec<(f32, Transform)> = Vec::new();
+    while let Some(frame) = sim.next_frame() {
+        track.push((frame.dt, frame.component_to_world));
+    }
+    assert!(track.len() > 60, "{} frames", track.len());
+    let make = || -> Vec<Instance> {
+        (0..characters)
+            .map(|_| Instance::new(Arc::clone(&program), Arc::clone(&skeleton)).unwrap())
+            .collect()
+    };
+    let (mut batched, mut alone) = (make(), make());
+    for f in 0..frames {
+        let input = |k: usize| {
+            let (dt, component_to_world) = track[(f + 7 * k) % track.len()];
+            FrameInput {
+                dt,
+                component_to_world,
+                pose: InputPose::Rest,
+            }
+        };
+        // Debug drawing on every other frame.
+        let debug = f % 2 == 0;
+        Instance::run_forward_batch(&mut batched, input, sim.world(), debug);
+        for (k, instance) in alone.iter_mut().enumerate() {
+            instance.run_forward(&input(k), sim.world(), debug);
+        }
+        for (k, (a, b)) in batched.iter().zip(&alone).enumerate() {
+            assert!(
+                same_pose(a, b),
+                "{graph} in {}: character {k}'s pose differs at frame {f}",
+                scenario.name
+            );
+            assert_eq!(
+                a.debug_draw().primitives(),
+                b.debug_draw().primitives(),
+                "{graph} in {}: character {k}'s drawing differs at frame {f}",
+                scenario.name
+            );
+        }
+    }
+    for (k, (a, b)) in batched.iter().zip(&alone).enumerate() {
+        assert!(
+            a.slots().bit_eq(b.slots()),
+            "{graph} in {}: character {k}'s slots differ",
+            scenario.name
+        );
+    }
+}
+
+#[test]
+fn a_batched_locomotion_crowd_walks_like_each_character_alone() {
+    // 19 characters: one full batch of 16 and one of 3.
+    batched_equals_alone(
+        "graphs/locomotion.ron",
+        "graphs/scenarios/start_stop.ron",
+        60,
+        19,
+        150,
+    );
+    batched_equals_alone(
+        "graphs/locomotion.ron",
+        "graphs/scenarios/stairs_up_down.ron",
+        30,
+        19,
+        90,
+    );
+    batched_equals_alone(
+        "graphs/locomotion.ron",
+        "graphs/scenarios/strafe_8dir.ron",
+        144,
+        17,
+        150,
+    );
+}
+
+#[test]
+fn a_batched_foot_ik_crowd_stands_like_each_character_alone() {
+    batched_equals_alone(
+        "graphs/foot_ik.ron",
+        "graphs/scenarios/uneven_ground.ron",
+        60,
+        18,
+        120,
+    );
+}
+
+#[test]
+fn a_mixed_crowd_batches_each_program_and_refuses_none() {
+    // Two programs interleaved (each instance's neighbours run the other), two instances
+    // of one graph compiled twice (equal programs, different `Arc`s), and hazardous dts:
+    // each must still run as it would alone.
+    let bob = compile("graphs/pelvis_bob.ron");
+    let bob_again = compile("graphs/pelvis_bob.ron");
+    let ik = compile("graphs/foot_ik.ron");
+    let skeleton = mannequin();
+    let programs = [&bob, &bob, &ik, &bob, &ik, &ik, &bob_again, &bob, &bob];
+    let make = || -> Vec<Instance> {
+        programs
+            .iter()
+            .map(|p| Instance::new(Arc::clone(p), Arc::clone(&skeleton)).unwrap())
+            .collect()
+    };
+    let (mut batched, mut alone) = (make(), make());
+    let dts = [
+        1.0 / 60.0,
+        0.0,
+        f32::NAN,
+        1.0e9,
+        -0.5,
+        f32::INFINITY,
+        1.0 / 30.0,
+    ];
+    for f in 0..40 {
+        let input = |k: usize| FrameInput {
+            dt: dts[(f + k) % dts.len()],
+            ..FrameInput::default()
+        };
+        Instance::run_forward_batch(&mut batched, input, &EmptyWorld, true);
+        for (k, instance) in alone.iter_mut().enumerate() {
+            instance.run_forward(&input(k), &EmptyWorld, true);
+        }
+        for (k, (a, b)) in batched.iter().zip(&alone).enumerate() {
+            assert!(same_pose(a, b), "character {k} differs at frame {f}");
+            assert!(a.slots().bit_eq(b.slots()), "character {k} at frame {f}");
+        }
+    }
+    // An empty crowd is a no-op.
+    Instance::run_forward_batch(&mut [], |_| FrameInput::default(), &EmptyWorld, false);
+}
