@@ -936,11 +936,10 @@ pub(crate) fn run_batch(
         return 0;
     }
     let mut dispatches = 0;
-    let mut bases = [None; BATCH];
+    let mut bases = [Bases::NONE; BATCH];
     for (b, cx) in bases.iter_mut().zip(members.iter_mut()) {
-        *b = Some(Bases::of(cx.slots));
+        *b = Bases::of(cx.slots);
     }
-    let bases = bases.map(|b| b.unwrap_or(Bases::NONE));
     // Where each member outside the group is (`END` once it has ended); the group's members
     // are all at `pc`.
     let mut pcs = [END; BATCH];
