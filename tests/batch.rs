@@ -18,7 +18,7 @@ fn mannequin() -> Arc<Skeleton> {
         .skeleton
 }
 
-/// Asserts that two instances' output poses are bit-identical.
+/// Whether two instances' output poses are bit-identical.
 fn same_pose(a: &Instance, b: &Instance) -> bool {
     let (a, b) = (a.pose().locals(), b.pose().locals());
     a.len() == b.len() && a.iter().zip(b).all(|(x, y)| x.bit_eq(y))

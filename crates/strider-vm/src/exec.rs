@@ -1,4 +1,5 @@
-//! The executor: a `match` loop over a program's instructions.
+//! The executor: a `match` loop over a program's instructions, for one instance ([`run`])
+//! or for a batch of instances of one program together ([`run_batch`]).
 //!
 //! Handlers trust the program: operand counts and slot types match each op's layout
 //! ([`Op::operands`]). Scalar slots (bools, ints, floats, vectors, rotations, transforms)
@@ -8,8 +9,8 @@
 //!   types as a slot of that type, so an instruction's slot operands are in bounds of the
 //!   initial image;
 //! - every run of an event first checks that the instance's arrays are still at least that
-//!   long (growing them if not: `Instance::run_event`), and nothing shrinks them during a
-//!   run;
+//!   long (growing them if not: `Instance::event_context`, for each member of a batch
+//!   too), and nothing shrinks them during a run;
 //! - each handler reads operand `k` only through the accessor of the type the op's layout
 //!   gives position `k` (every access asserts its bound in debug builds, where the test
 //!   suite runs every op).
