@@ -1070,9 +1070,10 @@ pub(crate) unsafe fn step(op: Op, o: &[u32], cx: &mut Ctx<'_>, next: usize) -> u
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::tests::one_bone;
     use crate::{FrameInput, Instance, ProgramBuilder};
     use std::sync::Arc;
-    use strider_core::{Bone, EmptyWorld, Skeleton};
+    use strider_core::EmptyWorld;
     use strider_nodes::Value;
 
     /// A program whose path depends on the frame's dt `d`: an `if` (`y = 2d` when
@@ -1121,17 +1122,6 @@ mod tests {
         (pb.finish(), [y, acc, z].map(|s| s as usize))
     }
 
-    fn skeleton() -> Arc<Skeleton> {
-        Arc::new(
-            Skeleton::new(vec![Bone {
-                name: "root".to_string(),
-                parent: None,
-                rest_local: Transform::IDENTITY,
-            }])
-            .expect("valid skeleton"),
-        )
-    }
-
     #[test]
     fn a_batch_gives_every_member_its_own_path() {
         let (program, [y, acc, z]) = branchy();
@@ -1149,7 +1139,7 @@ mod tests {
         ];
         let mut crowd: Vec<Instance> = dts
             .iter()
-            .map(|_| Instance::new(Arc::clone(&program), skeleton()).expect("instantiates"))
+            .map(|_| Instance::new(Arc::clone(&program), one_bone()).expect("instantiates"))
             .collect();
         let input = |k: usize| FrameInput {
             dt: dts[k],
@@ -1171,7 +1161,7 @@ mod tests {
         // The same as each run alone for the same two frames, slot for slot (a loop that
         // runs no rounds leaves its index as it was, so each needs its own instance).
         for (k, instance) in crowd.iter().enumerate() {
-            let mut alone = Instance::new(Arc::clone(&program), skeleton()).expect("instantiates");
+            let mut alone = Instance::new(Arc::clone(&program), one_bone()).expect("instantiates");
             for _ in 0..2 {
                 alone.run_forward(&input(k), &EmptyWorld, false);
             }
@@ -1182,7 +1172,7 @@ mod tests {
     /// Dispatches of one batch run of `branchy` with these dts.
     fn dispatches(dts: &[f32]) -> usize {
         let (program, _) = branchy();
-        let skeleton = skeleton();
+        let skeleton = one_bone();
         let mut slots: Vec<Slots> = dts.iter().map(|_| program.initial.clone()).collect();
         let mut poses: Vec<Pose> = dts
             .iter()

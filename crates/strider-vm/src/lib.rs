@@ -77,7 +77,8 @@ mod tests {
         assert_eq!(instance.slots().vec3s[9], glam::Vec3::new(2.0, 3.0, 5.0));
     }
 
-    fn one_bone() -> std::sync::Arc<strider_core::Skeleton> {
+    /// A skeleton of one bone at the origin (the executor's tests use it too).
+    pub(crate) fn one_bone() -> std::sync::Arc<strider_core::Skeleton> {
         use strider_core::{Bone, Skeleton, Transform};
         std::sync::Arc::new(
             Skeleton::new(vec![Bone {
