@@ -11,7 +11,14 @@ use glam::{Quat, Vec3};
 /// `parent_global * local`. With non-uniform scale this composition is the usual
 /// approximation used by animation runtimes: scales multiply component-wise and never
 /// shear.
+///
+/// Laid out in declaration order (`repr(C)`): translation in bytes 0–11, rotation in 16–31,
+/// scale in 32–43, so each part lies within one of the three 16-byte words a transform is
+/// copied in. Left to reorder, the compiler puts the scale across two of those words, and
+/// reading a scale just after its transform was stored (a node reading what the node before
+/// it wrote) then waits for the store to reach the cache instead of being forwarded from it.
 #[derive(Clone, Copy, Debug, PartialEq)]
+#[repr(C)]
 pub struct Transform {
     /// Translation in centimetres.
     pub translation: Vec3,

@@ -26,8 +26,9 @@
 // code.
 #![allow(unsafe_code)]
 
+use crate::lanes::{LANES, Lanes};
 use crate::program::{Instr, Program};
-use crate::slots::Slots;
+use crate::slots::{ScalarLens, Slots};
 use glam::{Quat, Vec3};
 use strider_core::{BoneIndex, DebugColor, DebugDraw, DebugPrimitive, Pose, Transform, WorldQuery};
 use strider_nodes::kernels as k;
@@ -67,17 +68,19 @@ fn color(v: Vec3) -> DebugColor {
     DebugColor([v.x, v.y, v.z, 1.0])
 }
 
-/// Dispatches a per-element-type handler: `$m!(scalars, arrays, zero)`.
+/// Dispatches a per-element-type handler: `$m!(scalars, arrays, zero)`, where
+/// `$sc` names the scalar slots of the element type (read and written with `scalar!`
+/// inside [`execute!`]), `$ar` is its array slots.
 macro_rules! by_elem {
     ($e:expr, $s:expr, $m:ident) => {
         match $e {
-            Elem::Bool => $m!($s.bools, $s.bool_arrays, false),
-            Elem::Int => $m!($s.ints, $s.int_arrays, 0),
-            Elem::Float => $m!($s.floats, $s.float_arrays, 0.0),
-            Elem::Vec3 => $m!($s.vec3s, $s.vec3_arrays, Vec3::ZERO),
-            Elem::Quat => $m!($s.quats, $s.quat_arrays, Quat::IDENTITY),
-            Elem::Transform => $m!($s.transforms, $s.transform_arrays, Transform::IDENTITY),
-            Elem::Bone => $m!($s.bones, $s.bone_arrays, -1),
+            Elem::Bool => $m!(bools, $s.bool_arrays, false),
+            Elem::Int => $m!(ints, $s.int_arrays, 0),
+            Elem::Float => $m!(floats, $s.float_arrays, 0.0),
+            Elem::Vec3 => $m!(vec3s, $s.vec3_arrays, Vec3::ZERO),
+            Elem::Quat => $m!(quats, $s.quat_arrays, Quat::IDENTITY),
+            Elem::Transform => $m!(transforms, $s.transform_arrays, Transform::IDENTITY),
+            Elem::Bone => $m!(bones, $s.bone_arrays, -1),
         }
     };
 }
@@ -106,25 +109,27 @@ pub(crate) const END: usize = usize::MAX;
 /// nothing resizes the scalar arrays during a run (arrays of arrays may grow; they are
 /// separate allocations).
 #[derive(Clone, Copy)]
-struct Bases {
-    bools: *mut bool,
-    ints: *mut i32,
-    floats: *mut f32,
-    vec3s: *mut Vec3,
-    quats: *mut Quat,
-    transforms: *mut Transform,
+pub(crate) struct Bases {
+    pub(crate) bools: *mut bool,
+    pub(crate) ints: *mut i32,
+    pub(crate) floats: *mut f32,
+    pub(crate) vec3s: *mut Vec3,
+    pub(crate) quats: *mut Quat,
+    pub(crate) transforms: *mut Transform,
 }
 
 impl Bases {
-    /// No arrays (a batch's unused members).
-    const NONE: Self = Self {
-        bools: std::ptr::null_mut(),
-        ints: std::ptr::null_mut(),
-        floats: std::ptr::null_mut(),
-        vec3s: std::ptr::null_mut(),
-        quats: std::ptr::null_mut(),
-        transforms: std::ptr::null_mut(),
-    };
+    /// Member `m`'s lane, from member 0's bases of [`Lanes`]: each pointer `m` items on.
+    fn lane(self, m: usize) -> Self {
+        Self {
+            bools: self.bools.wrapping_add(m),
+            ints: self.ints.wrapping_add(m),
+            floats: self.floats.wrapping_add(m),
+            vec3s: self.vec3s.wrapping_add(m),
+            quats: self.quats.wrapping_add(m),
+            transforms: self.transforms.wrapping_add(m),
+        }
+    }
 
     fn of(s: &mut Slots) -> Self {
         Self {
@@ -139,8 +144,9 @@ impl Bases {
 }
 
 /// Every op's handler, as one `match` over `$op` with operands `$o` on slots `$s` (`$cx.slots`,
-/// borrowed apart so the interpreter can hold it across instructions), whose scalar arrays
-/// start at `$bases` ([`Bases`]), and context `$cx`.
+/// borrowed apart so the interpreter can hold it across instructions), whose scalar slot `k`
+/// of each type is at `$bases` ([`Bases`]) + `k * $stride` (1 for an instance's own arrays,
+/// [`BATCH`] for a batch member's lane of [`Lanes`]), and context `$cx`.
 ///
 /// Each arm's body is handed to `$each!`, which runs it for every instance the expansion
 /// site works on, binding `$s`, `$bases` and `$cx` to that instance's: [`once`] for a
@@ -152,7 +158,7 @@ impl Bases {
 /// a control op the expansion site decides what happens: `$jump!(target)` continues at
 /// instruction `target`, `$end!()` ends the event.
 macro_rules! execute {
-    ($op:expr, $o:expr, $s:ident, $bases:ident, $cx:ident, $jump:ident, $end:ident, $each:ident) => {{
+    ($op:expr, $o:expr, $s:ident, $bases:ident, $stride:expr, $cx:ident, $jump:ident, $end:ident, $each:ident) => {{
         let (op, o): (Op, &[u32]) = ($op, $o);
         macro_rules! at {
             ($k:expr) => {
@@ -168,8 +174,18 @@ macro_rules! execute {
                 // SAFETY: in bounds by the module's invariant (the program's layout check
                 // and the per-run length check), and the base pointer is current (see
                 // `Bases`); the reference lives for one read or write.
-                unsafe { &mut *$bases.$a.add(index) }
+                unsafe { &mut *$bases.$a.add(index * $stride) }
             }};
+        }
+        // A scalar slot of an element type named by `by_elem!` (bones are not behind base
+        // pointers: they are indexed with a check).
+        macro_rules! scalar {
+            (bones, $k:expr) => {
+                $s.bones[at!($k)]
+            };
+            ($a:ident, $k:expr) => {
+                *slot!($a, $k)
+            };
         }
         macro_rules! f {
             ($k:expr) => {
@@ -241,9 +257,9 @@ macro_rules! execute {
             ($e:expr, $b:expr) => {{
                 let index = i!($b + 1);
                 macro_rules! get {
-                    ($sc:expr, $ar:expr, $zero:expr) => {{
+                    ($sc:ident, $ar:expr, $zero:expr) => {{
                         let a = &$ar[at!($b)];
-                        $sc[at!($b + 2)] = if index >= 0 {
+                        scalar!($sc, $b + 2) = if index >= 0 {
                             a.get(index as usize).copied().unwrap_or($zero)
                         } else {
                             $zero
@@ -269,7 +285,7 @@ macro_rules! execute {
                     ValueType::Array(e) => {
                         let (from, to) = (at!(from_k), at!(to_k));
                         macro_rules! copy {
-                            ($sc:expr, $ar:expr, $zero:expr) => {
+                            ($sc:ident, $ar:expr, $zero:expr) => {
                                 copy_vec(&mut $ar, from, to)
                             };
                         }
@@ -289,12 +305,12 @@ macro_rules! execute {
             Op::ForEachNext(e) => $each!({
                 let counter = i!(1);
                 macro_rules! next {
-                    ($sc:expr, $ar:expr, $zero:expr) => {{
+                    ($sc:ident, $ar:expr, $zero:expr) => {{
                         let len = $ar[at!(0)].len();
                         if counter < 0 || counter as usize >= len {
                             $jump!(o[5] as usize);
                         } else {
-                            $sc[at!(2)] = $ar[at!(0)][counter as usize];
+                            scalar!($sc, 2) = $ar[at!(0)][counter as usize];
                             i!(3) = counter;
                             i!(4) = len as i32;
                             i!(1) = counter + 1;
@@ -714,8 +730,8 @@ macro_rules! execute {
             }),
             Op::ArrayCount(e) => $each!({
                 macro_rules! count {
-                    ($sc:expr, $ar:expr, $zero:expr) => {
-                        $s.ints[at!(1)] = $ar[at!(0)].len() as i32
+                    ($sc:ident, $ar:expr, $zero:expr) => {
+                        i!(1) = $ar[at!(0)].len() as i32
                     };
                 }
                 by_elem!(e, $s, count);
@@ -723,8 +739,8 @@ macro_rules! execute {
             Op::ArraySetAt(e) => $each!({
                 let index = i!(1);
                 macro_rules! set {
-                    ($sc:expr, $ar:expr, $zero:expr) => {{
-                        let value = $sc[at!(2)];
+                    ($sc:ident, $ar:expr, $zero:expr) => {{
+                        let value = scalar!($sc, 2);
                         if index >= 0 {
                             if let Some(x) = $ar[at!(0)].get_mut(index as usize) {
                                 *x = value;
@@ -736,8 +752,8 @@ macro_rules! execute {
             }),
             Op::ArrayAdd(e) => $each!({
                 macro_rules! add {
-                    ($sc:expr, $ar:expr, $zero:expr) => {{
-                        let value = $sc[at!(1)];
+                    ($sc:ident, $ar:expr, $zero:expr) => {{
+                        let value = scalar!($sc, 1);
                         $ar[at!(0)].push(value);
                     }};
                 }
@@ -745,7 +761,7 @@ macro_rules! execute {
             }),
             Op::ArrayReset(e) => $each!({
                 macro_rules! reset {
-                    ($sc:expr, $ar:expr, $zero:expr) => {
+                    ($sc:ident, $ar:expr, $zero:expr) => {
                         $ar[at!(0)].clear()
                     };
                 }
@@ -889,6 +905,7 @@ fn run_loop<const PROFILE: bool>(
             unsafe { operands.get_unchecked(args..args + MAX_OPERANDS) },
             s,
             bases,
+            1,
             cx,
             jump,
             end,
@@ -929,6 +946,7 @@ pub(crate) fn run_batch(
     code: &[Instr],
     operands: &[u32],
     entry: u32,
+    lens: &ScalarLens,
     members: &mut [Ctx<'_>],
 ) -> usize {
     let n = members.len();
@@ -936,16 +954,36 @@ pub(crate) fn run_batch(
     if n == 0 {
         return 0;
     }
+    LANES.with(|cell| match cell.try_borrow_mut() {
+        Ok(mut lanes) => run_lanes(code, operands, entry, lens, members, &mut lanes),
+        // A batch run from inside another one on this thread (a world query that runs a
+        // rig of its own): lanes of its own.
+        Err(_) => run_lanes(code, operands, entry, lens, members, &mut Lanes::default()),
+    })
+}
+
+/// [`run_batch`] on `lanes`: the members' scalar slots are copied into them, run there and
+/// copied back.
+#[allow(unused_assignments)]
+fn run_lanes(
+    code: &[Instr],
+    operands: &[u32],
+    entry: u32,
+    lens: &ScalarLens,
+    members: &mut [Ctx<'_>],
+    lanes: &mut Lanes,
+) -> usize {
+    let n = members.len();
     let mut dispatches = 0;
-    let mut bases = [Bases::NONE; BATCH];
-    for (b, cx) in bases.iter_mut().zip(members.iter_mut()) {
-        *b = Bases::of(cx.slots);
-    }
+    lanes.load(lens, members);
+    // Member 0's lane; member `m`'s is `m` items on in every array.
+    let lane0 = lanes.bases();
     // Where each member outside the group is (`END` once it has ended); the group's members
     // are all at `pc`.
     let mut pcs = [END; BATCH];
     let mut pc = entry as usize;
-    let mut group: u32 = (1u32 << n) - 1;
+    let everyone: u32 = (1u32 << n) - 1;
+    let mut group = everyone;
     // The lowest instruction a member outside the group waits at (`END`: none waits).
     let mut waiting = END;
     // The member a handler runs for, its context, slots and slot bases (set by `each!`
@@ -967,32 +1005,56 @@ pub(crate) fn run_batch(
         dispatches += 1;
         macro_rules! each {
             ($body:expr) => {{
-                let mut rest = group;
-                while rest != 0 {
-                    m = rest.trailing_zeros() as usize;
-                    rest &= rest - 1;
-                    // SAFETY: `group` has bits for members `0..n` only.
-                    cx = unsafe { members.get_unchecked_mut(m) };
-                    s = &mut *cx.slots;
-                    // SAFETY: `m < n <= BATCH`.
-                    b = unsafe { *bases.get_unchecked(m) };
-                    $body;
+                if group == everyone {
+                    // The common case, as a counted loop: its trip count and addresses are
+                    // known before it starts.
+                    for k in 0..n {
+                        m = k;
+                        // SAFETY: `m < n`.
+                        cx = unsafe { members.get_unchecked_mut(m) };
+                        s = &mut *cx.slots;
+                        b = lane0.lane(m);
+                        $body;
+                    }
+                } else {
+                    let mut rest = group;
+                    while rest != 0 {
+                        m = rest.trailing_zeros() as usize;
+                        rest &= rest - 1;
+                        // SAFETY: `group` has bits for members `0..n` only.
+                        cx = unsafe { members.get_unchecked_mut(m) };
+                        s = &mut *cx.slots;
+                        b = lane0.lane(m);
+                        $body;
+                    }
                 }
             }};
         }
+        // Where the first member that jumped went, and whether another went elsewhere.
+        let mut common = END;
+        let mut split = false;
         macro_rules! jump {
             ($target:expr) => {{
-                pcs[m] = $target;
+                let target = $target;
+                if moved == 0 {
+                    common = target;
+                } else if target != common {
+                    split = true;
+                }
+                pcs[m] = target;
                 moved |= 1 << m;
             }};
         }
         macro_rules! end {
-            () => {{
-                pcs[m] = END;
-                moved |= 1 << m;
-            }};
+            () => {
+                jump!(END)
+            };
         }
-        execute!(op, o, s, b, cx, jump, end, each);
+        // SAFETY: an instruction of the program whose slots the lanes hold.
+        let wide = group == everyone && unsafe { crate::lanes::run_wide(op, o, lane0) };
+        if !wide {
+            execute!(op, o, s, b, BATCH, cx, jump, end, each);
+        }
         if moved == 0 {
             // The whole group goes on to the next instruction, where waiting members may
             // join it.
@@ -1010,6 +1072,10 @@ pub(crate) fn run_batch(
                     }
                 }
             }
+        } else if moved == group && !split && common < waiting {
+            // The whole group jumped to one instruction before any waiting member's: it
+            // goes on there together (what the general case below would find).
+            pc = common;
         } else {
             // Members that did not jump go on to the next instruction; then the lowest
             // instruction any member is at runs next, for every member there.
@@ -1020,6 +1086,7 @@ pub(crate) fn run_batch(
             }
             let least = pcs[..n].iter().copied().min().unwrap_or(END);
             if least == END {
+                lanes.store(lens, members);
                 return dispatches;
             }
             pc = least;
@@ -1063,7 +1130,7 @@ pub(crate) unsafe fn step(op: Op, o: &[u32], cx: &mut Ctx<'_>, next: usize) -> u
     }
     let bases = Bases::of(cx.slots);
     let s = &mut *cx.slots;
-    execute!(op, o, s, bases, cx, jump, end, once);
+    execute!(op, o, s, bases, 1, cx, jump, end, once);
     next
 }
 
@@ -1202,6 +1269,7 @@ mod tests {
             &program.code,
             &program.operands,
             program.forward,
+            &program.scalar_lens,
             &mut members,
         )
     }

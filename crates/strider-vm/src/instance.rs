@@ -401,7 +401,13 @@ impl Instance {
                 }
                 if let Some(p) = program {
                     // The dispatch count it returns is for the executor's tests.
-                    exec::run_batch(&p.code, &p.operands, p.forward, &mut members);
+                    exec::run_batch(
+                        &p.code,
+                        &p.operands,
+                        p.forward,
+                        &p.scalar_lens,
+                        &mut members,
+                    );
                 }
             }
             start = end;

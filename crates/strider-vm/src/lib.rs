@@ -25,6 +25,7 @@
 mod exec;
 mod fusion;
 pub mod instance;
+mod lanes;
 pub mod native;
 pub mod profile;
 pub mod program;

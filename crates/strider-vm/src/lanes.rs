@@ -1,0 +1,772 @@
+//! A batch's scalar slots, interleaved by member ([`Lanes`]), and the plain scalar ops run
+//! on all of a batch's members at once ([`run_wide`]).
+//!
+//! While a batch runs ([`crate::exec`]'s batch loop), slot `k` of member `m` of each scalar
+//! type lives at item `k * BATCH + m` of that type's array here: the same slot of every
+//! member side by side. Every handler reaches a member's slots through its lane (base
+//! pointers `m` items on, stride [`BATCH`]), so the handlers that work member by member run
+//! unchanged; and an op whose handler only computes scalar slots from scalar slots runs as
+//! one loop over [`BATCH`] lanes, which the compiler turns into vector instructions, instead
+//! of one handler run per member.
+
+// Slot blocks are read and written through the batch's base pointers, like the executor's
+// unchecked slot access (see `exec`): this module's only unsafe code.
+#![allow(unsafe_code)]
+
+use crate::exec::{BATCH, Bases, Ctx};
+use crate::slots::ScalarLens;
+use glam::{Quat, Vec3};
+use smallvec::SmallVec;
+use std::cell::RefCell;
+use strider_core::Transform;
+use strider_nodes::kernels as k;
+use strider_nodes::{Elem, Op, ValueType};
+
+/// A batch's scalar slots, interleaved by member: slot `k` of member `m` is item
+/// `k * BATCH + m` of its type's array.
+#[derive(Default)]
+pub(crate) struct Lanes {
+    bools: Vec<bool>,
+    ints: Vec<i32>,
+    floats: Vec<f32>,
+    vec3s: Vec<Vec3>,
+    quats: Vec<Quat>,
+    transforms: Vec<Transform>,
+}
+
+thread_local! {
+    /// Each thread's lanes, reused by every batch it runs: they grow to the largest
+    /// program's slots once and are not reallocated after that.
+    pub(crate) static LANES: RefCell<Lanes> = RefCell::new(Lanes::default());
+}
+
+/// Runs `$m!(array, index in ScalarLens)` for each scalar slot type.
+macro_rules! each_scalar_type {
+    ($m:ident) => {
+        $m!(bools, 0);
+        $m!(ints, 1);
+        $m!(floats, 2);
+        $m!(vec3s, 3);
+        $m!(quats, 4);
+        $m!(transforms, 5);
+    };
+}
+
+impl Lanes {
+    /// Copies slots `0..lens` of each scalar type of every member in (growing the lanes to
+    /// `lens` slots of [`BATCH`] members where they are shorter). `members` has at most
+    /// [`BATCH`] members, each covering `lens`. Slot by slot, so that the lanes are written
+    /// in order and each member's array is read in order.
+    pub(crate) fn load(&mut self, lens: &ScalarLens, members: &[Ctx<'_>]) {
+        macro_rules! load {
+            ($a:ident, $t:expr) => {{
+                let len = lens.0[$t];
+                if self.$a.len() < len * BATCH {
+                    self.$a.resize(len * BATCH, Default::default());
+                }
+                let own: SmallVec<[*const _; BATCH]> = members
+                    .iter()
+                    .map(|cx| cx.slots.$a[..len].as_ptr())
+                    .collect();
+                for (k, lane) in self.$a.chunks_exact_mut(BATCH).take(len).enumerate() {
+                    for (x, from) in lane.iter_mut().zip(&own) {
+                        // SAFETY: `k < len`, and every member's array has `len` slots (the
+                        // slice above checked it).
+                        *x = unsafe { *from.add(k) };
+                    }
+                }
+            }};
+        }
+        each_scalar_type!(load);
+    }
+
+    /// Copies slots `0..lens` of each scalar type back to every member, slot by slot.
+    pub(crate) fn store(&self, lens: &ScalarLens, members: &mut [Ctx<'_>]) {
+        macro_rules! store {
+            ($a:ident, $t:expr) => {{
+                let len = lens.0[$t];
+                let own: SmallVec<[*mut _; BATCH]> = members
+                    .iter_mut()
+                    .map(|cx| cx.slots.$a[..len].as_mut_ptr())
+                    .collect();
+                for (k, lane) in self.$a.chunks_exact(BATCH).take(len).enumerate() {
+                    for (&x, to) in lane.iter().zip(&own) {
+                        // SAFETY: `k < len`, every member's array has `len` slots (checked
+                        // above), and the members' arrays are distinct.
+                        unsafe { *to.add(k) = x };
+                    }
+                }
+            }};
+        }
+        each_scalar_type!(store);
+    }
+
+    /// Base pointers of member 0's lane (member `m`'s: [`Bases::lane`]). Valid while the
+    /// lanes are not resized: for a whole batch run.
+    pub(crate) fn bases(&mut self) -> Bases {
+        Bases {
+            bools: self.bools.as_mut_ptr(),
+            ints: self.ints.as_mut_ptr(),
+            floats: self.floats.as_mut_ptr(),
+            vec3s: self.vec3s.as_mut_ptr(),
+            quats: self.quats.as_mut_ptr(),
+            transforms: self.transforms.as_mut_ptr(),
+        }
+    }
+}
+
+/// The block of [`BATCH`] lanes of slot `slot` of the array at `base`.
+#[inline(always)]
+fn block<T>(base: *mut T, slot: u32) -> *mut [T; BATCH] {
+    base.wrapping_add(slot as usize * BATCH).cast()
+}
+
+/// Runs `op` (operands `o`) on every lane of the batch whose member 0's lane is `lane0`,
+/// when it is one of the ops whose handler computes scalar slots from scalar slots only,
+/// and returns true; returns false, doing nothing, for every other op.
+///
+/// Each lane gets exactly what the op's handler in [`crate::exec`] computes for one
+/// member (the same expression, applied lane by lane), so results are bit-identical to
+/// running the handler member by member — but for the bits of a NaN: when both operands of
+/// an operation are NaN, which one's sign and payload the result carries is left open (by
+/// Rust, and by the processor's vector and scalar instructions alike), and the vectorised
+/// loop may pick the other one. A NaN stays a NaN. Lanes past the batch's members hold
+/// stale values of earlier batches, which are computed on and never read.
+///
+/// # Safety
+/// `op` and `o` must be an instruction of a program built by
+/// [`ProgramBuilder::finish`](crate::ProgramBuilder::finish) (with its operand window), and
+/// `lane0` the bases of [`Lanes`] loaded for that program's slots.
+#[inline(always)]
+pub(crate) unsafe fn run_wide(op: Op, o: &[u32], lane0: Bases) -> bool {
+    // `out[k] = expression of inputs` on every lane: each input is slot operand `k` of
+    // array `a`, read as a block before anything is written (an output may be an input).
+    macro_rules! lanes {
+        ($out:ident[$ko:expr] = |$($x:ident: $a:ident[$k:expr]),+| $e:expr) => {{
+            // SAFETY: the operand is a slot of this type (the op's layout), so its block
+            // lies in the lanes (loaded for the program's slots).
+            $(let $x = unsafe { *block(lane0.$a, o[$k]) };)+
+            let result: [_; BATCH] = std::array::from_fn(|m| {
+                $(let $x = $x[m];)+
+                $e
+            });
+            // SAFETY: as above.
+            unsafe { *block(lane0.$out, o[$ko]) = result };
+        }};
+    }
+    macro_rules! arith {
+        (AddF, $b:expr) => { lanes!(floats[$b + 2] = |a: floats[$b], b: floats[$b + 1]| a + b) };
+        (SubF, $b:expr) => { lanes!(floats[$b + 2] = |a: floats[$b], b: floats[$b + 1]| a - b) };
+        (MulF, $b:expr) => { lanes!(floats[$b + 2] = |a: floats[$b], b: floats[$b + 1]| a * b) };
+        (DivF, $b:expr) => { lanes!(floats[$b + 2] = |a: floats[$b], b: floats[$b + 1]| k::div_f(a, b)) };
+        (AddV, $b:expr) => { lanes!(vec3s[$b + 2] = |a: vec3s[$b], b: vec3s[$b + 1]| a + b) };
+        (SubV, $b:expr) => { lanes!(vec3s[$b + 2] = |a: vec3s[$b], b: vec3s[$b + 1]| a - b) };
+        (ScaleV, $b:expr) => { lanes!(vec3s[$b + 2] = |a: vec3s[$b], b: floats[$b + 1]| a * b) };
+    }
+    // The Select of a type: operand 0 the condition, 1 and 2 the choices, 3 the result.
+    macro_rules! select {
+        ($a:ident) => {
+            lanes!($a[3] = |c: bools[0], x: $a[1], y: $a[2]| if c { x } else { y })
+        };
+    }
+    macro_rules! copy {
+        ($a:ident) => {
+            lanes!($a[1] = |x: $a[0]| x)
+        };
+    }
+    match op {
+        Op::AddF => arith!(AddF, 0),
+        Op::SubF => arith!(SubF, 0),
+        Op::MulF => arith!(MulF, 0),
+        Op::DivF => arith!(DivF, 0),
+        Op::MinF => lanes!(floats[2] = |a: floats[0], b: floats[1]| a.min(b)),
+        Op::MaxF => lanes!(floats[2] = |a: floats[0], b: floats[1]| a.max(b)),
+        Op::AbsF => lanes!(floats[1] = |a: floats[0]| a.abs()),
+        Op::NegF => lanes!(floats[1] = |a: floats[0]| -a),
+        Op::ClampF => {
+            lanes!(floats[3] = |a: floats[0], lo: floats[1], hi: floats[2]| k::clamp_f(a, lo, hi))
+        }
+        Op::SqrtF => lanes!(floats[1] = |a: floats[0]| k::sqrt(a)),
+        Op::LerpF => {
+            lanes!(floats[3] = |a: floats[0], b: floats[1], t: floats[2]| a + (b - a) * t)
+        }
+        Op::RemapF => lanes!(floats[6] = |x: floats[0], i0: floats[1], i1: floats[2],
+            o0: floats[3], o1: floats[4], c: bools[5]| k::remap(x, i0, i1, o0, o1, c)),
+        Op::SmoothStepF => lanes!(floats[3] = |x: floats[0], lo: floats[1], hi: floats[2]|
+            k::smooth_step(x, lo, hi)),
+        Op::IntToFloat | Op::ToFloat => lanes!(floats[1] = |a: ints[0]| a as f32),
+        Op::AddI => lanes!(ints[2] = |a: ints[0], b: ints[1]| a.wrapping_add(b)),
+        Op::SubI => lanes!(ints[2] = |a: ints[0], b: ints[1]| a.wrapping_sub(b)),
+        Op::MinI => lanes!(ints[2] = |a: ints[0], b: ints[1]| a.min(b)),
+        Op::MaxI => lanes!(ints[2] = |a: ints[0], b: ints[1]| a.max(b)),
+
+        Op::And => lanes!(bools[2] = |a: bools[0], b: bools[1]| a && b),
+        Op::Or => lanes!(bools[2] = |a: bools[0], b: bools[1]| a || b),
+        Op::Xor => lanes!(bools[2] = |a: bools[0], b: bools[1]| a != b),
+        Op::Not => lanes!(bools[1] = |a: bools[0]| !a),
+        Op::LessF => lanes!(bools[2] = |a: floats[0], b: floats[1]| a < b),
+        Op::LessEqualF => lanes!(bools[2] = |a: floats[0], b: floats[1]| a <= b),
+        Op::GreaterF => lanes!(bools[2] = |a: floats[0], b: floats[1]| a > b),
+        Op::GreaterEqualF => lanes!(bools[2] = |a: floats[0], b: floats[1]| a >= b),
+        Op::LessI => lanes!(bools[2] = |a: ints[0], b: ints[1]| a < b),
+        Op::LessEqualI => lanes!(bools[2] = |a: ints[0], b: ints[1]| a <= b),
+        Op::GreaterI => lanes!(bools[2] = |a: ints[0], b: ints[1]| a > b),
+        Op::GreaterEqualI => lanes!(bools[2] = |a: ints[0], b: ints[1]| a >= b),
+        Op::Equals(Elem::Float) => lanes!(bools[2] = |a: floats[0], b: floats[1]| a == b),
+        Op::NotEquals(Elem::Float) => lanes!(bools[2] = |a: floats[0], b: floats[1]| a != b),
+        Op::Equals(Elem::Int) => lanes!(bools[2] = |a: ints[0], b: ints[1]| a == b),
+        Op::NotEquals(Elem::Int) => lanes!(bools[2] = |a: ints[0], b: ints[1]| a != b),
+        Op::Equals(Elem::Bool) => lanes!(bools[2] = |a: bools[0], b: bools[1]| a == b),
+        Op::NotEquals(Elem::Bool) => lanes!(bools[2] = |a: bools[0], b: bools[1]| a != b),
+
+        Op::Select(ValueType::Bool) => select!(bools),
+        Op::Select(ValueType::Int) => select!(ints),
+        Op::Select(ValueType::Float) => select!(floats),
+        Op::Select(ValueType::Vec3) => select!(vec3s),
+        Op::Select(ValueType::Quat) => select!(quats),
+        Op::Select(ValueType::Transform) => select!(transforms),
+        Op::Copy(ValueType::Bool) => copy!(bools),
+        Op::Copy(ValueType::Int) => copy!(ints),
+        Op::Copy(ValueType::Float) => copy!(floats),
+        Op::Copy(ValueType::Vec3) => copy!(vec3s),
+        Op::Copy(ValueType::Quat) => copy!(quats),
+        Op::Copy(ValueType::Transform) => copy!(transforms),
+
+        Op::AddV => arith!(AddV, 0),
+        Op::SubV => arith!(SubV, 0),
+        Op::ScaleV => arith!(ScaleV, 0),
+        Op::MulV => lanes!(vec3s[2] = |a: vec3s[0], b: vec3s[1]| a * b),
+        Op::NegV => lanes!(vec3s[1] = |a: vec3s[0]| -a),
+        Op::MinV => lanes!(vec3s[2] = |a: vec3s[0], b: vec3s[1]| a.min(b)),
+        Op::MaxV => lanes!(vec3s[2] = |a: vec3s[0], b: vec3s[1]| a.max(b)),
+        Op::AbsV => lanes!(vec3s[1] = |a: vec3s[0]| a.abs()),
+        Op::LerpV => lanes!(vec3s[3] = |a: vec3s[0], b: vec3s[1], t: floats[2]| a.lerp(b, t)),
+        Op::LengthV => lanes!(floats[1] = |a: vec3s[0]| a.length()),
+        Op::DistanceV => lanes!(floats[2] = |a: vec3s[0], b: vec3s[1]| a.distance(b)),
+        Op::DotV => lanes!(floats[2] = |a: vec3s[0], b: vec3s[1]| a.dot(b)),
+        Op::CrossV => lanes!(vec3s[2] = |a: vec3s[0], b: vec3s[1]| a.cross(b)),
+        Op::UnitV => lanes!(vec3s[1] = |a: vec3s[0]| k::unit_v(a)),
+        Op::MakeVector => {
+            lanes!(vec3s[3] = |x: floats[0], y: floats[1], z: floats[2]| Vec3::new(x, y, z))
+        }
+        Op::BreakVector => {
+            lanes!(floats[1] = |v: vec3s[0]| v.x);
+            lanes!(floats[2] = |v: vec3s[0]| v.y);
+            lanes!(floats[3] = |v: vec3s[0]| v.z);
+        }
+        Op::RotateVector => lanes!(vec3s[2] = |q: quats[0], v: vec3s[1]| q * v),
+        Op::MakeTransform => lanes!(transforms[3] = |t: vec3s[0], r: quats[1], s: vec3s[2]|
+            Transform::new(t, k::unit_q(r), s)),
+        Op::BreakTransform => {
+            lanes!(vec3s[1] = |x: transforms[0]| x.translation);
+            lanes!(quats[2] = |x: transforms[0]| x.rotation);
+            lanes!(vec3s[3] = |x: transforms[0]| x.scale);
+        }
+        Op::TransformPoint => {
+            lanes!(vec3s[2] = |t: transforms[0], p: vec3s[1]| t.transform_point(p))
+        }
+        Op::TransformVector => {
+            lanes!(vec3s[2] = |t: transforms[0], v: vec3s[1]| t.transform_vector(v))
+        }
+
+        Op::MulFMulF => {
+            arith!(MulF, 0);
+            arith!(MulF, 3);
+        }
+        Op::SubFMulF => {
+            arith!(SubF, 0);
+            arith!(MulF, 3);
+        }
+        Op::MulFAddF => {
+            arith!(MulF, 0);
+            arith!(AddF, 3);
+        }
+        Op::SubFAddF => {
+            arith!(SubF, 0);
+            arith!(AddF, 3);
+        }
+        Op::AddFMulF => {
+            arith!(AddF, 0);
+            arith!(MulF, 3);
+        }
+        Op::MulFSubF => {
+            arith!(MulF, 0);
+            arith!(SubF, 3);
+        }
+        Op::AddFAddF => {
+            arith!(AddF, 0);
+            arith!(AddF, 3);
+        }
+        Op::DivFSubF => {
+            arith!(DivF, 0);
+            arith!(SubF, 3);
+        }
+        Op::AddVAddV => {
+            arith!(AddV, 0);
+            arith!(AddV, 3);
+        }
+        Op::AddVSubV => {
+            arith!(AddV, 0);
+            arith!(SubV, 3);
+        }
+        Op::MulFScaleV => {
+            arith!(MulF, 0);
+            arith!(ScaleV, 3);
+        }
+        Op::DivFScaleV => {
+            arith!(DivF, 0);
+            arith!(ScaleV, 3);
+        }
+        _ => return false,
+    }
+    true
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::exec::step;
+    use crate::slots::Slots;
+    use crate::tests::one_bone;
+    use strider_core::{DebugDraw, EmptyWorld, Pose};
+    use strider_nodes::{MAX_OPERANDS, Operand};
+
+    /// Slots per scalar type in the tests' memory: every operand index stays below it.
+    const SLOTS: usize = 16;
+
+    const ELEMS: [Elem; 7] = [
+        Elem::Bool,
+        Elem::Int,
+        Elem::Float,
+        Elem::Vec3,
+        Elem::Quat,
+        Elem::Transform,
+        Elem::Bone,
+    ];
+
+    /// Every op there is.
+    fn every_op() -> Vec<Op> {
+        use Op::*;
+        let mut ops = vec![
+            End,
+            Jump,
+            JumpIfFalse,
+            ForNext,
+            IntToFloat,
+            MulFMulF,
+            SubFMulF,
+            MulFAddF,
+            SubFAddF,
+            AddFMulF,
+            MulFSubF,
+            AddFAddF,
+            DivFSubF,
+            AddVAddV,
+            AddVSubV,
+            MulFScaleV,
+            DivFScaleV,
+            GetTransformBreakTransform,
+            ArrayAtBreakTransform,
+            AddF,
+            SubF,
+            MulF,
+            DivF,
+            MinF,
+            MaxF,
+            AbsF,
+            NegF,
+            ClampF,
+            SinF,
+            CosF,
+            TanF,
+            SqrtF,
+            PowF,
+            FmodF,
+            FractF,
+            FloorF,
+            CeilF,
+            RoundF,
+            LerpF,
+            RemapF,
+            SmoothStepF,
+            ToInt,
+            ToFloat,
+            AddI,
+            SubI,
+            MulI,
+            DivI,
+            ModI,
+            MinI,
+            MaxI,
+            AbsI,
+            NegI,
+            ClampI,
+            And,
+            Or,
+            Not,
+            Xor,
+            LessF,
+            LessEqualF,
+            GreaterF,
+            GreaterEqualF,
+            LessI,
+            LessEqualI,
+            GreaterI,
+            GreaterEqualI,
+            AddV,
+            SubV,
+            MulV,
+            DivV,
+            ScaleV,
+            NegV,
+            MinV,
+            MaxV,
+            AbsV,
+            ClampV,
+            LerpV,
+            LengthV,
+            DistanceV,
+            UnitV,
+            DotV,
+            CrossV,
+            MakeVector,
+            BreakVector,
+            QuatFromAxisAngle,
+            QuatFromEuler,
+            EulerFromQuat,
+            MulQ,
+            InverseQ,
+            UnitQ,
+            SlerpQ,
+            RotateVector,
+            QuatScale,
+            FindQuatBetween,
+            MakeTransform,
+            BreakTransform,
+            MulT,
+            InverseT,
+            MakeRelative,
+            MakeAbsolute,
+            TransformPoint,
+            TransformVector,
+            RotateAroundPoint,
+            InterpolateTransform,
+            AimMath,
+            AlignToNormal,
+            Spline,
+            ClampLength,
+            ClampSpatially,
+            GetTransform,
+            SetTransform,
+            GetParent,
+            FindBones,
+            TwoBoneIK,
+            DeltaTime,
+            WorldTransform,
+            LineTrace,
+            SphereTrace,
+            FloatLerp,
+            VectorLerp,
+            QuatLerp,
+            FInterpToF,
+            FInterpToV,
+            FInterpToQ,
+            SpringF,
+            SpringV,
+            MovementAngleOffset,
+            PerFootRotationFactor,
+            LimitRotationAroundZ,
+            FootAvoidance,
+            KneeVector,
+            ArmSwingRotation,
+            ClavicleOffset,
+            PelvisLean,
+            PelvisSideLean,
+            FootPivots,
+            CycleStep,
+            FootOffsetFromTrace,
+            RotationFromNormal,
+            DrawPoint,
+            DrawLine,
+            DrawTransform,
+            DrawArrow,
+            DrawSphere,
+            DrawBox,
+            DrawSpline,
+        ];
+        for e in ELEMS {
+            ops.extend([
+                ForEachNext(e),
+                Equals(e),
+                NotEquals(e),
+                ArrayAt(e),
+                ArrayCount(e),
+                ArraySetAt(e),
+                ArrayAdd(e),
+                ArrayReset(e),
+            ]);
+        }
+        let types = [
+            ValueType::Bool,
+            ValueType::Int,
+            ValueType::Float,
+            ValueType::Vec3,
+            ValueType::Quat,
+            ValueType::Transform,
+            ValueType::Bone,
+            ValueType::Name,
+        ]
+        .into_iter()
+        .chain(ELEMS.map(ValueType::Array));
+        for t in types {
+            ops.extend([Copy(t), Select(t)]);
+        }
+        ops
+    }
+
+    /// A float for item `i` of member `m`: ordinary values mixed with the hazards a
+    /// handler must treat the same lane by lane (signed zeros, NaN, infinities, huge and
+    /// tiny values, negatives under a square root, zero divisors).
+    fn float(m: usize, i: usize) -> f32 {
+        const VALUES: [f32; 13] = [
+            1.5,
+            -2.25,
+            0.0,
+            -0.0,
+            f32::NAN,
+            f32::INFINITY,
+            f32::NEG_INFINITY,
+            1e30,
+            -3.0e-39,
+            7.0,
+            0.125,
+            -40.0,
+            3.0,
+        ];
+        VALUES[(m * 7 + i * 5 + (m * i) % 3) % VALUES.len()]
+    }
+
+    /// Slots of member `m`: [`SLOTS`] of each scalar type, filled from [`float`].
+    fn member_slots(m: usize) -> Slots {
+        let f = |i: usize| float(m, i);
+        let v = |i: usize| Vec3::new(f(3 * i), f(3 * i + 1), f(3 * i + 2));
+        let q = |i: usize| Quat::from_xyzw(f(4 * i), f(4 * i + 1), f(4 * i + 2), f(4 * i + 3));
+        const INTS: [i32; 6] = [0, -1, 5, i32::MIN, i32::MAX, 7];
+        Slots {
+            bools: (0..SLOTS).map(|i| (m + i).is_multiple_of(3)).collect(),
+            ints: (0..SLOTS).map(|i| INTS[(m + 2 * i) % INTS.len()]).collect(),
+            floats: (0..SLOTS).map(f).collect(),
+            vec3s: (0..SLOTS).map(v).collect(),
+            quats: (0..SLOTS).map(q).collect(),
+            transforms: (0..SLOTS)
+                .map(|i| Transform::new(v(i + 20), q(i + 20), v(i + 40)))
+                .collect(),
+            ..Slots::default()
+        }
+    }
+
+    fn context<'a>(slots: &'a mut Slots, pose: &'a mut Pose, debug: &'a mut DebugDraw) -> Ctx<'a> {
+        Ctx {
+            slots,
+            texts: &[],
+            pose,
+            debug,
+            world: &EmptyWorld,
+            dt: 0.5,
+            to_world: Transform::IDENTITY,
+            from_world: Transform::IDENTITY,
+            run: 1,
+            #[cfg(feature = "profile")]
+            profile: None,
+        }
+    }
+
+    /// Operands for `op`'s layout: distinct slots per type, or with `in_place` each output
+    /// in the slot of the first input of its type (as slot sharing may lay them out).
+    fn operands(op: Op, in_place: bool) -> Option<Vec<u32>> {
+        let layout = op.operands()?;
+        let mut next = [1u32; 16];
+        let mut first_input: Vec<(ValueType, u32)> = Vec::new();
+        let mut o: Vec<u32> = layout
+            .iter()
+            .map(|operand| match *operand {
+                Operand::Slot(ty, access) => {
+                    let kind = match ty {
+                        ValueType::Bool => 0,
+                        ValueType::Int => 1,
+                        ValueType::Float => 2,
+                        ValueType::Vec3 => 3,
+                        ValueType::Quat => 4,
+                        ValueType::Transform => 5,
+                        ValueType::Bone => 6,
+                        ValueType::Name => 7,
+                        ValueType::Array(e) => 8 + e as usize,
+                    };
+                    let reuse = first_input.iter().find(|(t, _)| *t == ty).map(|&(_, s)| s);
+                    match (access, reuse) {
+                        (strider_nodes::Access::Write, Some(slot)) if in_place => slot,
+                        _ => {
+                            let slot = next[kind];
+                            next[kind] += 1;
+                            if access != strider_nodes::Access::Write {
+                                first_input.push((ty, slot));
+                            }
+                            slot
+                        }
+                    }
+                }
+                Operand::Target => 0,
+            })
+            .collect();
+        assert!(o.iter().all(|&s| (s as usize) < SLOTS));
+        o.resize(o.len() + MAX_OPERANDS, 0);
+        Some(o)
+    }
+
+    /// Runs `f` on contexts over `slots` (each with a pose and a debug buffer of its own).
+    fn with_contexts(slots: &mut [Slots], f: impl FnOnce(&mut [Ctx<'_>])) {
+        let mut poses = vec![Pose::new(one_bone()); slots.len()];
+        let mut draws: Vec<DebugDraw> = slots.iter().map(|_| DebugDraw::new(false)).collect();
+        let mut cxs: Vec<Ctx<'_>> = slots
+            .iter_mut()
+            .zip(&mut poses)
+            .zip(&mut draws)
+            .map(|((s, p), d)| context(s, p, d))
+            .collect();
+        f(&mut cxs);
+    }
+
+    /// Runs `op` on `n` members lane-wide; `None` when it is not a wide op. The lanes hold
+    /// other values beyond the members (as after a larger batch).
+    fn wide(op: Op, o: &[u32], n: usize) -> Option<Vec<Slots>> {
+        let lens = ScalarLens([SLOTS; 6]);
+        let mut lanes = Lanes::default();
+        let mut stale: Vec<Slots> = (0..BATCH).map(|m| member_slots(m + 100)).collect();
+        with_contexts(&mut stale, |cxs| lanes.load(&lens, cxs));
+        let mut members: Vec<Slots> = (0..n).map(member_slots).collect();
+        let mut ran = false;
+        with_contexts(&mut members, |cxs| {
+            lanes.load(&lens, cxs);
+            // SAFETY: the operands are slots below `SLOTS` of the lanes loaded above.
+            ran = unsafe { run_wide(op, o, lanes.bases()) };
+            lanes.store(&lens, cxs);
+        });
+        ran.then_some(members)
+    }
+
+    /// Runs `op` on each of `n` members alone, with the executor's handler.
+    fn alone(op: Op, o: &[u32], n: usize) -> Vec<Slots> {
+        (0..n)
+            .map(|m| {
+                let mut slots = member_slots(m);
+                let mut pose = Pose::new(one_bone());
+                let mut debug = DebugDraw::new(false);
+                let mut cx = context(&mut slots, &mut pose, &mut debug);
+                // SAFETY: the operands are slots below `SLOTS`, which the slots have.
+                unsafe { step(op, o, &mut cx, 1) };
+                slots
+            })
+            .collect()
+    }
+
+    /// Every scalar slot bit for bit, except that any NaN equals any NaN: which operand's
+    /// NaN an operation passes on (its sign and payload) is left open by Rust, and
+    /// vectorised code may pick the other one.
+    fn same_values(a: &Slots, b: &Slots) -> bool {
+        fn bits(x: f32) -> u32 {
+            if x.is_nan() {
+                f32::NAN.to_bits()
+            } else {
+                x.to_bits()
+            }
+        }
+        fn same<T>(a: &[T], b: &[T], floats: impl Fn(&T) -> Vec<f32>) -> bool {
+            a.len() == b.len()
+                && a.iter().zip(b).all(|(x, y)| {
+                    floats(x)
+                        .into_iter()
+                        .map(bits)
+                        .eq(floats(y).into_iter().map(bits))
+                })
+        }
+        a.bools == b.bools
+            && a.ints == b.ints
+            && same(&a.floats, &b.floats, |x| vec![*x])
+            && same(&a.vec3s, &b.vec3s, |x| x.to_array().to_vec())
+            && same(&a.quats, &b.quats, |x| x.to_array().to_vec())
+            && same(&a.transforms, &b.transforms, |x| {
+                x.to_bits().map(f32::from_bits).to_vec()
+            })
+    }
+
+    #[test]
+    fn every_wide_op_gives_each_lane_what_its_handler_gives_one_member() {
+        let mut count = 0;
+        for op in every_op() {
+            for in_place in [false, true] {
+                // Ops without a layout are ones no program holds.
+                let Some(o) = operands(op, in_place) else {
+                    continue;
+                };
+                for n in [BATCH, 5] {
+                    let Some(lanes) = wide(op, &o, n) else {
+                        continue;
+                    };
+                    // Only ops that compute scalar slots from scalar slots may run wide.
+                    for operand in op.operands().expect("a layout") {
+                        assert!(
+                            matches!(
+                                operand,
+                                Operand::Slot(
+                                    ValueType::Bool
+                                        | ValueType::Int
+                                        | ValueType::Float
+                                        | ValueType::Vec3
+                                        | ValueType::Quat
+                                        | ValueType::Transform,
+                                    _
+                                )
+                            ),
+                            "{op:?} runs wide with operand {operand:?}"
+                        );
+                    }
+                    let reference = alone(op, &o, n);
+                    for (m, (a, b)) in lanes.iter().zip(&reference).enumerate() {
+                        assert!(
+                            same_values(a, b),
+                            "{op:?} (in place: {in_place}): member {m} of {n} differs from \
+                             the handler run alone"
+                        );
+                    }
+                    if !in_place && n == BATCH {
+                        count += 1;
+                    }
+                }
+            }
+        }
+        // The 82 ops `run_wide` has arms for (a miss here means `every_op` lacks one).
+        assert_eq!(count, 82);
+    }
+
+    #[test]
+    fn lanes_load_and_store_every_scalar_slot_of_every_member() {
+        let lens = ScalarLens([3, 4, 5, 6, 7, 8]);
+        let mut members: Vec<Slots> = (0..BATCH).map(member_slots).collect();
+        let before = members.clone();
+        with_contexts(&mut members, |cxs| {
+            let mut lanes = Lanes::default();
+            lanes.load(&lens, cxs);
+            // Slot 2 of member 9 is item 2 * BATCH + 9 of its type's lane array.
+            assert_eq!(lanes.floats[2 * BATCH + 9].to_bits(), float(9, 2).to_bits());
+            assert_eq!(lanes.ints.len(), 4 * BATCH);
+            assert_eq!(lanes.transforms.len(), 8 * BATCH);
+            lanes.floats[2 * BATCH + 9] = 42.0;
+            lanes.store(&lens, cxs);
+        });
+        assert_eq!(members[9].floats[2], 42.0);
+        members[9].floats[2] = before[9].floats[2];
+        for (a, b) in members.iter().zip(&before) {
+            assert!(a.bit_eq(b), "everything else comes back as it was");
+        }
+    }
+}
