@@ -978,6 +978,7 @@ fn run_lanes(
     lanes.load(lens, members);
     // Member 0's lane; member `m`'s is `m` items on in every array.
     let lane0 = lanes.bases();
+    let dts: [f32; BATCH] = std::array::from_fn(|m| members.get(m).map_or(0.0, |cx| cx.dt));
     // Where each member outside the group is (`END` once it has ended); the group's members
     // are all at `pc`.
     let mut pcs = [END; BATCH];
@@ -1050,11 +1051,36 @@ fn run_lanes(
                 jump!(END)
             };
         }
-        // SAFETY: an instruction of the program whose slots the lanes hold.
-        let wide = group == everyone && unsafe { crate::lanes::run_wide(op, o, lane0) };
-        if !wide {
-            execute!(op, o, s, b, BATCH, cx, jump, end, each);
+        if group == everyone {
+            // The whole batch is here (so no member waits elsewhere): a jump that every
+            // member takes, or none, moves the batch at once, and a plain scalar op runs
+            // on all lanes together.
+            match op {
+                Op::Jump => {
+                    pc = o[0] as usize;
+                    continue;
+                }
+                Op::JumpIfFalse => {
+                    // SAFETY: operand 0 is a bool slot (the op's layout).
+                    let held = unsafe { crate::lanes::bools(lane0, o[0]) };
+                    if held[..n].iter().all(|&h| h) {
+                        pc += 1;
+                        continue;
+                    }
+                    if held[..n].iter().all(|&h| !h) {
+                        pc = o[1] as usize;
+                        continue;
+                    }
+                }
+                // SAFETY: an instruction of the program whose slots the lanes hold.
+                _ if unsafe { crate::lanes::run_wide(op, o, lane0, n, &dts) } => {
+                    pc += 1;
+                    continue;
+                }
+                _ => {}
+            }
         }
+        execute!(op, o, s, b, BATCH, cx, jump, end, each);
         if moved == 0 {
             // The whole group goes on to the next instruction, where waiting members may
             // join it.

@@ -20,6 +20,7 @@ use smallvec::SmallVec;
 use std::cell::RefCell;
 use strider_core::Transform;
 use strider_nodes::kernels as k;
+use strider_nodes::kernels::locomotion as loco;
 use strider_nodes::{Elem, Op, ValueType};
 
 /// A batch's scalar slots, interleaved by member: slot `k` of member `m` is item
@@ -121,6 +122,16 @@ fn block<T>(base: *mut T, slot: u32) -> *mut [T; BATCH] {
     base.wrapping_add(slot as usize * BATCH).cast()
 }
 
+/// The block of [`BATCH`] lanes of bool slot `slot`.
+///
+/// # Safety
+/// `slot` must be a bool slot of the program the lanes at `lane0` are loaded for.
+#[inline(always)]
+pub(crate) unsafe fn bools(lane0: Bases, slot: u32) -> [bool; BATCH] {
+    // SAFETY: in the lanes by the caller's contract.
+    unsafe { *block(lane0.bools, slot) }
+}
+
 /// Runs `op` (operands `o`) on every lane of the batch whose member 0's lane is `lane0`,
 /// when it is one of the ops whose handler computes scalar slots from scalar slots only,
 /// and returns true; returns false, doing nothing, for every other op.
@@ -133,14 +144,25 @@ fn block<T>(base: *mut T, slot: u32) -> *mut [T; BATCH] {
 /// loop may pick the other one. A NaN stays a NaN. Lanes past the batch's members hold
 /// stale values of earlier batches, which are computed on and never read.
 ///
+/// `n` is the number of the batch's members, `dts` their time steps (s), member `m`'s at
+/// `dts[m]`.
+///
 /// # Safety
 /// `op` and `o` must be an instruction of a program built by
 /// [`ProgramBuilder::finish`](crate::ProgramBuilder::finish) (with its operand window), and
 /// `lane0` the bases of [`Lanes`] loaded for that program's slots.
 #[inline(always)]
-pub(crate) unsafe fn run_wide(op: Op, o: &[u32], lane0: Bases) -> bool {
+pub(crate) unsafe fn run_wide(
+    op: Op,
+    o: &[u32],
+    lane0: Bases,
+    n: usize,
+    dts: &[f32; BATCH],
+) -> bool {
     // `out[k] = expression of inputs` on every lane: each input is slot operand `k` of
     // array `a`, read as a block before anything is written (an output may be an input).
+    // Ops that call a kernel per lane (`n; ...`) compute the batch's `n` members' lanes
+    // only; with `; dt` the expression also reads each member's time step.
     macro_rules! lanes {
         ($out:ident[$ko:expr] = |$($x:ident: $a:ident[$k:expr]),+| $e:expr) => {{
             // SAFETY: the operand is a slot of this type (the op's layout), so its block
@@ -150,6 +172,19 @@ pub(crate) unsafe fn run_wide(op: Op, o: &[u32], lane0: Bases) -> bool {
                 $(let $x = $x[m];)+
                 $e
             });
+            // SAFETY: as above.
+            unsafe { *block(lane0.$out, o[$ko]) = result };
+        }};
+        (n; $out:ident[$ko:expr] = |$($x:ident: $a:ident[$k:expr]),+ $(; $dt:ident)?| $e:expr) => {{
+            // SAFETY: as above.
+            $(let $x = unsafe { *block(lane0.$a, o[$k]) };)+
+            // SAFETY: as above.
+            let mut result = unsafe { *block(lane0.$out, o[$ko]) };
+            for (m, r) in result.iter_mut().enumerate().take(n) {
+                $(let $x = $x[m];)+
+                $(let $dt = dts[m];)?
+                *r = $e;
+            }
             // SAFETY: as above.
             unsafe { *block(lane0.$out, o[$ko]) = result };
         }};
@@ -317,6 +352,66 @@ pub(crate) unsafe fn run_wide(op: Op, o: &[u32], lane0: Bases) -> bool {
             arith!(DivF, 0);
             arith!(ScaleV, 3);
         }
+
+        Op::SinF => lanes!(n; floats[1] = |a: floats[0]| k::sin_deg(a)),
+        Op::CosF => lanes!(n; floats[1] = |a: floats[0]| k::cos_deg(a)),
+        Op::TanF => lanes!(n; floats[1] = |a: floats[0]| k::tan_deg(a)),
+        Op::Atan2F => lanes!(n; floats[2] = |a: floats[0], b: floats[1]| k::atan2_deg(a, b)),
+        Op::PowF => lanes!(n; floats[2] = |a: floats[0], b: floats[1]| a.powf(b)),
+        Op::FmodF => lanes!(n; floats[2] = |a: floats[0], b: floats[1]| k::mod_f(a, b)),
+        Op::FractF => lanes!(n; floats[1] = |a: floats[0]| k::fract(a)),
+        Op::FloorF => lanes!(n; floats[1] = |a: floats[0]| a.floor()),
+        Op::CeilF => lanes!(n; floats[1] = |a: floats[0]| a.ceil()),
+        Op::RoundF => lanes!(n; floats[1] = |a: floats[0]| a.round()),
+        Op::ToInt => lanes!(ints[1] = |a: floats[0]| k::to_int(a)),
+        Op::MulI => lanes!(ints[2] = |a: ints[0], b: ints[1]| a.wrapping_mul(b)),
+        Op::DivI => lanes!(n; ints[2] = |a: ints[0], b: ints[1]| k::div_i(a, b)),
+        Op::ModI => lanes!(n; ints[2] = |a: ints[0], b: ints[1]| k::mod_i(a, b)),
+        Op::AbsI => lanes!(ints[1] = |a: ints[0]| a.wrapping_abs()),
+        Op::NegI => lanes!(ints[1] = |a: ints[0]| a.wrapping_neg()),
+        Op::ClampI => lanes!(ints[3] = |a: ints[0], lo: ints[1], hi: ints[2]| a.max(lo).min(hi)),
+        Op::DivV => lanes!(vec3s[2] = |a: vec3s[0], b: vec3s[1]| k::div_v(a, b)),
+        Op::ClampV => {
+            lanes!(vec3s[3] = |a: vec3s[0], lo: vec3s[1], hi: vec3s[2]| a.max(lo).min(hi))
+        }
+        Op::ClampLength => lanes!(n; vec3s[3] = |v: vec3s[0], lo: floats[1], hi: floats[2]|
+            k::clamp_length(v, lo, hi)),
+        Op::ClampSpatially => lanes!(n; vec3s[4] = |v: vec3s[0], c: vec3s[1], lo: floats[2],
+            hi: floats[3]| k::clamp_spatially(v, c, lo, hi)),
+
+        Op::QuatFromAxisAngle => lanes!(n; quats[2] = |axis: vec3s[0], angle: floats[1]|
+            k::quat_from_axis_angle(axis, angle)),
+        Op::MulQ => lanes!(n; quats[2] = |a: quats[0], b: quats[1]| k::unit_q(a * b)),
+        Op::InverseQ => lanes!(n; quats[1] = |a: quats[0]| k::unit_q(a).inverse()),
+        Op::UnitQ => lanes!(n; quats[1] = |a: quats[0]| k::unit_q(a)),
+        Op::SlerpQ => {
+            lanes!(n; quats[3] = |a: quats[0], b: quats[1], t: floats[2]| k::slerp(a, b, t))
+        }
+        Op::QuatScale => lanes!(n; quats[2] = |a: quats[0], f: floats[1]| k::quat_scale(a, f)),
+        Op::FindQuatBetween => lanes!(n; quats[2] = |a: vec3s[0], b: vec3s[1]|
+            k::find_quat_between(a, b)),
+        Op::MulT => lanes!(n; transforms[2] = |a: transforms[0], b: transforms[1]| a * b),
+        Op::InverseT => lanes!(n; transforms[1] = |a: transforms[0]| a.inverse()),
+        Op::MakeRelative => lanes!(n; transforms[2] = |a: transforms[0], b: transforms[1]|
+            a.relative_to(&b)),
+        Op::MakeAbsolute => lanes!(n; transforms[2] = |a: transforms[0], b: transforms[1]| b * a),
+        Op::RotateAroundPoint => lanes!(n; transforms[3] = |t: transforms[0], p: vec3s[1],
+            r: quats[2]| k::rotate_around_point(t, p, r)),
+
+        Op::DeltaTime => {
+            // SAFETY: as in `lanes!`.
+            unsafe { *block(lane0.floats, o[0]) = *dts };
+        }
+        Op::FloatLerp => lanes!(n; floats[3] = |a: floats[0], b: floats[1], speed: floats[2]; dt|
+            loco::lerp_exponential(a, b, dt, speed)),
+        Op::QuatLerp => lanes!(n; quats[3] = |a: quats[0], b: quats[1], speed: floats[2]; dt|
+            loco::lerp_exponential_q(a, b, dt, speed)),
+        Op::FInterpToF => lanes!(n; floats[3] = |a: floats[0], b: floats[1], speed: floats[2]; dt|
+            loco::finterp_to(a, b, dt, speed)),
+        Op::FInterpToV => lanes!(n; vec3s[3] = |a: vec3s[0], b: vec3s[1], speed: floats[2]; dt|
+            loco::vinterp_to(a, b, dt, speed)),
+        Op::FInterpToQ => lanes!(n; quats[3] = |a: quats[0], b: quats[1], speed: floats[2]; dt|
+            loco::qinterp_to(a, b, dt, speed)),
         _ => return false,
     }
     true
@@ -351,6 +446,7 @@ mod tests {
             End,
             Jump,
             JumpIfFalse,
+            Atan2F,
             ForNext,
             IntToFloat,
             MulFMulF,
@@ -565,14 +661,24 @@ mod tests {
         }
     }
 
-    fn context<'a>(slots: &'a mut Slots, pose: &'a mut Pose, debug: &'a mut DebugDraw) -> Ctx<'a> {
+    /// Member `m`'s time step (s): each member's its own, and one of them 0.
+    fn dt(m: usize) -> f32 {
+        [1.0 / 60.0, 0.5, 0.0, 1.0 / 30.0, 0.25][m % 5] * (1.0 + m as f32 / 16.0)
+    }
+
+    fn context<'a>(
+        slots: &'a mut Slots,
+        pose: &'a mut Pose,
+        debug: &'a mut DebugDraw,
+        dt: f32,
+    ) -> Ctx<'a> {
         Ctx {
             slots,
             texts: &[],
             pose,
             debug,
             world: &EmptyWorld,
-            dt: 0.5,
+            dt,
             to_world: Transform::IDENTITY,
             from_world: Transform::IDENTITY,
             run: 1,
@@ -631,7 +737,8 @@ mod tests {
             .iter_mut()
             .zip(&mut poses)
             .zip(&mut draws)
-            .map(|((s, p), d)| context(s, p, d))
+            .enumerate()
+            .map(|(m, ((s, p), d))| context(s, p, d, dt(m)))
             .collect();
         f(&mut cxs);
     }
@@ -648,7 +755,8 @@ mod tests {
         with_contexts(&mut members, |cxs| {
             lanes.load(&lens, cxs);
             // SAFETY: the operands are slots below `SLOTS` of the lanes loaded above.
-            ran = unsafe { run_wide(op, o, lanes.bases()) };
+            let dts = std::array::from_fn(|m| if m < n { dt(m) } else { 7.0 });
+            ran = unsafe { run_wide(op, o, lanes.bases(), n, &dts) };
             lanes.store(&lens, cxs);
         });
         ran.then_some(members)
@@ -661,7 +769,7 @@ mod tests {
                 let mut slots = member_slots(m);
                 let mut pose = Pose::new(one_bone());
                 let mut debug = DebugDraw::new(false);
-                let mut cx = context(&mut slots, &mut pose, &mut debug);
+                let mut cx = context(&mut slots, &mut pose, &mut debug, dt(m));
                 // SAFETY: the operands are slots below `SLOTS`, which the slots have.
                 unsafe { step(op, o, &mut cx, 1) };
                 slots
@@ -744,8 +852,8 @@ mod tests {
                 }
             }
         }
-        // The 82 ops `run_wide` has arms for (a miss here means `every_op` lacks one).
-        assert_eq!(count, 82);
+        // The 121 ops `run_wide` has arms for (a miss here means `every_op` lacks one).
+        assert_eq!(count, 121);
     }
 
     #[test]
