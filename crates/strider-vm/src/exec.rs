@@ -10,7 +10,8 @@
 //!   initial image;
 //! - every run of an event first checks that the instance's arrays are still at least that
 //!   long (growing them if not: `Instance::event_context`, for each member of a batch
-//!   too), and nothing shrinks them during a run;
+//!   too), and nothing shrinks them during a run; a batch runs on lanes
+//!   ([`crate::lanes`]) of [`BATCH`] times the program's lengths, loaded from those arrays;
 //! - each handler reads operand `k` only through the accessor of the type the op's layout
 //!   gives position `k` (every access asserts its bound in debug builds, where the test
 //!   suite runs every op).
@@ -935,6 +936,12 @@ pub(crate) const BATCH: usize = 16;
 /// exactly the instructions it would run alone, in the same order, so its results are
 /// bit-identical to [`run`]'s; only the interleaving between members differs, and members
 /// share nothing they write.
+///
+/// The members' scalar slots are worked on in this thread's lanes ([`crate::lanes`]): copied
+/// in first (slots `0..lens` of each type, the program's lengths), back when every member
+/// has ended. While the whole batch is at one instruction, a plain scalar op runs on all
+/// lanes at once ([`crate::lanes::run_wide`]) and a jump that every member takes, or none,
+/// moves the batch without visiting its members.
 ///
 /// `code` and `operands` are the program's, passed apart so that the compiler knows that the
 /// handlers' writes do not touch them (operand fetches can stay out of the member loop).

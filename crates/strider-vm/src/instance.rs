@@ -363,11 +363,15 @@ impl Instance {
     /// bit-identical results — but faster: instances that run the same program (the same
     /// `Arc`) go through the interpreter up to 16 at a time, each instruction dispatched
     /// once for all of them (instances that branch apart continue separately and meet again
-    /// where their paths do). Consecutive instances are batched together, so keep a crowd's
-    /// instances of one program next to each other. Instances with profiling on run alone.
+    /// where their paths do), and while all of them are at one instruction its plain
+    /// scalar math runs for all of them as one vectorised loop. Consecutive instances are
+    /// batched together, so keep a crowd's instances of one program next to each other.
+    /// Instances with profiling on run alone. The one latitude in "bit-identical" is a NaN
+    /// result's sign and payload bits, which Rust leaves open (a NaN stays a NaN).
     ///
     /// For threads, split the crowd into chunks (e.g. rayon's `par_chunks_mut(64)`) and call
-    /// this on each. Allocates nothing after warm-up.
+    /// this on each. Allocates nothing after warm-up: each thread keeps one scratch copy of
+    /// 16 instances' scalar slots, made by its first batch.
     pub fn run_forward_batch<'i>(
         crowd: &mut [Instance],
         mut input: impl FnMut(usize) -> FrameInput<'i>,
