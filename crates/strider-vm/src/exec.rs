@@ -59,6 +59,32 @@ pub(crate) struct Ctx<'a> {
     pub profile: Option<&'a mut [crate::profile::InstrProfile]>,
 }
 
+#[cfg(test)]
+impl<'a> Ctx<'a> {
+    /// A run's context for tests: no world, the character at the origin, run 1.
+    pub(crate) fn for_test(
+        slots: &'a mut Slots,
+        texts: &'a [String],
+        pose: &'a mut Pose,
+        debug: &'a mut DebugDraw,
+        dt: f32,
+    ) -> Self {
+        Self {
+            slots,
+            texts,
+            pose,
+            debug,
+            world: &strider_core::EmptyWorld,
+            dt,
+            to_world: Transform::IDENTITY,
+            from_world: Transform::IDENTITY,
+            run: 1,
+            #[cfg(feature = "profile")]
+            profile: None,
+        }
+    }
+}
+
 /// A bone slot's value as an index into the pose, if it names a bone.
 #[inline]
 fn bone(pose: &Pose, value: i32) -> Option<BoneIndex> {
@@ -1284,18 +1310,8 @@ mod tests {
             .zip(&mut poses)
             .zip(&mut draws)
             .zip(dts)
-            .map(|(((slots, pose), debug), &dt)| Ctx {
-                slots,
-                texts: &program.texts,
-                pose,
-                debug,
-                world: &EmptyWorld,
-                dt,
-                to_world: Transform::IDENTITY,
-                from_world: Transform::IDENTITY,
-                run: 1,
-                #[cfg(feature = "profile")]
-                profile: None,
+            .map(|(((slots, pose), debug), &dt)| {
+                Ctx::for_test(slots, &program.texts, pose, debug, dt)
             })
             .collect();
         run_batch(

@@ -254,18 +254,26 @@ pub(crate) unsafe fn run_wide(
         Op::Equals(Elem::Bool) => lanes!(bools[2] = |a: bools[0], b: bools[1]| a == b),
         Op::NotEquals(Elem::Bool) => lanes!(bools[2] = |a: bools[0], b: bools[1]| a != b),
 
-        Op::Select(ValueType::Bool) => select!(bools),
-        Op::Select(ValueType::Int) => select!(ints),
-        Op::Select(ValueType::Float) => select!(floats),
-        Op::Select(ValueType::Vec3) => select!(vec3s),
-        Op::Select(ValueType::Quat) => select!(quats),
-        Op::Select(ValueType::Transform) => select!(transforms),
-        Op::Copy(ValueType::Bool) => copy!(bools),
-        Op::Copy(ValueType::Int) => copy!(ints),
-        Op::Copy(ValueType::Float) => copy!(floats),
-        Op::Copy(ValueType::Vec3) => copy!(vec3s),
-        Op::Copy(ValueType::Quat) => copy!(quats),
-        Op::Copy(ValueType::Transform) => copy!(transforms),
+        Op::Select(ty) | Op::Copy(ty) => {
+            macro_rules! pick {
+                ($a:ident) => {
+                    if matches!(op, Op::Select(_)) {
+                        select!($a)
+                    } else {
+                        copy!($a)
+                    }
+                };
+            }
+            match ty {
+                ValueType::Bool => pick!(bools),
+                ValueType::Int => pick!(ints),
+                ValueType::Float => pick!(floats),
+                ValueType::Vec3 => pick!(vec3s),
+                ValueType::Quat => pick!(quats),
+                ValueType::Transform => pick!(transforms),
+                ValueType::Bone | ValueType::Name | ValueType::Array(_) => return false,
+            }
+        }
 
         Op::AddV => arith!(AddV, 0),
         Op::SubV => arith!(SubV, 0),
@@ -421,23 +429,13 @@ pub(crate) unsafe fn run_wide(
 mod tests {
     use super::*;
     use crate::exec::step;
-    use crate::slots::Slots;
+    use crate::slots::{SCALAR_TYPES, Slots};
     use crate::tests::one_bone;
-    use strider_core::{DebugDraw, EmptyWorld, Pose};
+    use strider_core::{DebugDraw, Pose};
     use strider_nodes::{MAX_OPERANDS, Operand};
 
     /// Slots per scalar type in the tests' memory: every operand index stays below it.
     const SLOTS: usize = 16;
-
-    const ELEMS: [Elem; 7] = [
-        Elem::Bool,
-        Elem::Int,
-        Elem::Float,
-        Elem::Vec3,
-        Elem::Quat,
-        Elem::Transform,
-        Elem::Bone,
-    ];
 
     /// Every op there is.
     fn every_op() -> Vec<Op> {
@@ -590,7 +588,7 @@ mod tests {
             DrawBox,
             DrawSpline,
         ];
-        for e in ELEMS {
+        for e in Elem::ALL {
             ops.extend([
                 ForEachNext(e),
                 Equals(e),
@@ -602,19 +600,7 @@ mod tests {
                 ArrayReset(e),
             ]);
         }
-        let types = [
-            ValueType::Bool,
-            ValueType::Int,
-            ValueType::Float,
-            ValueType::Vec3,
-            ValueType::Quat,
-            ValueType::Transform,
-            ValueType::Bone,
-            ValueType::Name,
-        ]
-        .into_iter()
-        .chain(ELEMS.map(ValueType::Array));
-        for t in types {
+        for t in ValueType::ALL {
             ops.extend([Copy(t), Select(t)]);
         }
         ops
@@ -666,27 +652,6 @@ mod tests {
         [1.0 / 60.0, 0.5, 0.0, 1.0 / 30.0, 0.25][m % 5] * (1.0 + m as f32 / 16.0)
     }
 
-    fn context<'a>(
-        slots: &'a mut Slots,
-        pose: &'a mut Pose,
-        debug: &'a mut DebugDraw,
-        dt: f32,
-    ) -> Ctx<'a> {
-        Ctx {
-            slots,
-            texts: &[],
-            pose,
-            debug,
-            world: &EmptyWorld,
-            dt,
-            to_world: Transform::IDENTITY,
-            from_world: Transform::IDENTITY,
-            run: 1,
-            #[cfg(feature = "profile")]
-            profile: None,
-        }
-    }
-
     /// Operands for `op`'s layout: distinct slots per type, or with `in_place` each output
     /// in the slot of the first input of its type (as slot sharing may lay them out).
     fn operands(op: Op, in_place: bool) -> Option<Vec<u32>> {
@@ -697,17 +662,10 @@ mod tests {
             .iter()
             .map(|operand| match *operand {
                 Operand::Slot(ty, access) => {
-                    let kind = match ty {
-                        ValueType::Bool => 0,
-                        ValueType::Int => 1,
-                        ValueType::Float => 2,
-                        ValueType::Vec3 => 3,
-                        ValueType::Quat => 4,
-                        ValueType::Transform => 5,
-                        ValueType::Bone => 6,
-                        ValueType::Name => 7,
-                        ValueType::Array(e) => 8 + e as usize,
-                    };
+                    let kind = ValueType::ALL
+                        .iter()
+                        .position(|t| *t == ty)
+                        .expect("every type is in ALL");
                     let reuse = first_input.iter().find(|(t, _)| *t == ty).map(|&(_, s)| s);
                     match (access, reuse) {
                         (strider_nodes::Access::Write, Some(slot)) if in_place => slot,
@@ -738,7 +696,7 @@ mod tests {
             .zip(&mut poses)
             .zip(&mut draws)
             .enumerate()
-            .map(|(m, ((s, p), d))| context(s, p, d, dt(m)))
+            .map(|(m, ((s, p), d))| Ctx::for_test(s, &[], p, d, dt(m)))
             .collect();
         f(&mut cxs);
     }
@@ -769,7 +727,7 @@ mod tests {
                 let mut slots = member_slots(m);
                 let mut pose = Pose::new(one_bone());
                 let mut debug = DebugDraw::new(false);
-                let mut cx = context(&mut slots, &mut pose, &mut debug, dt(m));
+                let mut cx = Ctx::for_test(&mut slots, &[], &mut pose, &mut debug, dt(m));
                 // SAFETY: the operands are slots below `SLOTS`, which the slots have.
                 unsafe { step(op, o, &mut cx, 1) };
                 slots
@@ -823,18 +781,7 @@ mod tests {
                     // Only ops that compute scalar slots from scalar slots may run wide.
                     for operand in op.operands().expect("a layout") {
                         assert!(
-                            matches!(
-                                operand,
-                                Operand::Slot(
-                                    ValueType::Bool
-                                        | ValueType::Int
-                                        | ValueType::Float
-                                        | ValueType::Vec3
-                                        | ValueType::Quat
-                                        | ValueType::Transform,
-                                    _
-                                )
-                            ),
+                            matches!(operand, Operand::Slot(ty, _) if SCALAR_TYPES.contains(&ty)),
                             "{op:?} runs wide with operand {operand:?}"
                         );
                     }
