@@ -1295,6 +1295,106 @@ mod tests {
         }
     }
 
+    /// A world whose line trace runs a batch of a crowd of its own (as a host might, asking
+    /// another rig something while it answers): the batch inside starts while the one
+    /// outside holds this thread's lanes.
+    struct NestedWorld {
+        inner: std::sync::Mutex<Vec<Instance>>,
+    }
+
+    /// The dts of [`NestedWorld`]'s crowd.
+    const INNER_DTS: [f32; 4] = [0.25, 2.5, 4.0, 5.5];
+
+    impl strider_core::WorldQuery for NestedWorld {
+        fn line_trace(&self, start: Vec3, end: Vec3) -> Option<strider_core::TraceHit> {
+            let mut inner = self.inner.lock().expect("not poisoned");
+            let input = |k: usize| FrameInput {
+                dt: INNER_DTS[k],
+                ..FrameInput::default()
+            };
+            Instance::run_forward_batch(&mut inner, input, &EmptyWorld, false);
+            Some(strider_core::TraceHit {
+                point: start.lerp(end, 0.5),
+                normal: Vec3::Z,
+                distance: start.distance(end) * 0.5,
+            })
+        }
+
+        fn sphere_trace(&self, _: Vec3, _: Vec3, _: f32) -> Option<strider_core::TraceHit> {
+            None
+        }
+    }
+
+    #[test]
+    fn a_batch_run_inside_another_on_one_thread_gets_lanes_of_its_own() {
+        // Outside: each member traces from (0, 0, 10) down to (0, 0, −dt·10) and scales the
+        // hit distance by its dt.
+        let mut pb = ProgramBuilder::new("tracer");
+        let start = pb.constant(&Value::Vec3(Vec3::new(0.0, 0.0, 10.0)), "");
+        let ten = pb.constant(&Value::Float(-10.0), "");
+        let [d, depth, scaled] = [(); 3].map(|()| pb.alloc(ValueType::Float));
+        let [end, point, normal] = [(); 3].map(|()| pb.alloc(ValueType::Vec3));
+        let hit = pb.alloc(ValueType::Bool);
+        let x = pb.alloc(ValueType::Float);
+        pb.set_construction_entry(pb.here());
+        pb.emit(Op::End, &[]);
+        pb.set_forward_entry(pb.here());
+        pb.emit(Op::DeltaTime, &[d]);
+        pb.emit(Op::MulF, &[d, ten, depth]);
+        pb.emit(Op::MakeVector, &[x, x, depth, end]);
+        pb.emit(Op::LineTrace, &[start, end, hit, point, normal, scaled]);
+        pb.emit(Op::MulF, &[scaled, d, scaled]);
+        pb.emit(Op::End, &[]);
+        let outer_program = Arc::new(pb.finish());
+        let outer_dts = [1.0, 2.0, 0.5];
+        let mut outer: Vec<Instance> = outer_dts
+            .iter()
+            .map(|_| Instance::new(Arc::clone(&outer_program), one_bone()).expect("instantiates"))
+            .collect();
+
+        let (inner_program, _) = branchy();
+        let inner_program = Arc::new(inner_program);
+        let crowd = |n: usize| -> Vec<Instance> {
+            (0..n)
+                .map(|_| {
+                    Instance::new(Arc::clone(&inner_program), one_bone()).expect("instantiates")
+                })
+                .collect()
+        };
+        let world = NestedWorld {
+            inner: std::sync::Mutex::new(crowd(INNER_DTS.len())),
+        };
+        let input = |k: usize| FrameInput {
+            dt: outer_dts[k],
+            ..FrameInput::default()
+        };
+        Instance::run_forward_batch(&mut outer, input, &world, false);
+
+        // Outside: half the trace's length (10 + 10·dt), times dt.
+        for (k, instance) in outer.iter().enumerate() {
+            let dt = outer_dts[k];
+            let f = &instance.slots().floats;
+            assert_eq!(
+                f[scaled as usize],
+                (10.0 + 10.0 * dt) * 0.5 * dt,
+                "member {k}"
+            );
+        }
+        // Inside: one frame per trace (three), the same as each instance run alone.
+        let inner = world.inner.lock().expect("not poisoned");
+        for (k, instance) in inner.iter().enumerate() {
+            let mut alone = crowd(1).pop().expect("one");
+            for _ in 0..outer_dts.len() {
+                let input = FrameInput {
+                    dt: INNER_DTS[k],
+                    ..FrameInput::default()
+                };
+                alone.run_forward(&input, &EmptyWorld, false);
+            }
+            assert!(alone.slots().bit_eq(instance.slots()), "inner member {k}");
+        }
+    }
+
     /// Dispatches of one batch run of `branchy` with these dts.
     fn dispatches(dts: &[f32]) -> usize {
         let (program, _) = branchy();
