@@ -990,7 +990,7 @@ pub(crate) fn run_batch(
     LANES.with(|cell| match cell.try_borrow_mut() {
         Ok(mut lanes) => run_lanes(code, operands, entry, lens, members, &mut lanes),
         // A batch run from inside another one on this thread (a world query that runs a
-        // rig of its own): lanes of its own.
+        // rig of its own): lanes of its own, allocated for this run.
         Err(_) => run_lanes(code, operands, entry, lens, members, &mut Lanes::default()),
     })
 }
