@@ -146,6 +146,16 @@ pub(crate) struct Bases {
 }
 
 impl Bases {
+    /// No arrays (a batch's unused members).
+    const NONE: Self = Self {
+        bools: std::ptr::null_mut(),
+        ints: std::ptr::null_mut(),
+        floats: std::ptr::null_mut(),
+        vec3s: std::ptr::null_mut(),
+        quats: std::ptr::null_mut(),
+        transforms: std::ptr::null_mut(),
+    };
+
     /// Member `m`'s lane, from member 0's bases of [`Lanes`]: each pointer `m` items on.
     fn lane(self, m: usize) -> Self {
         Self {
@@ -963,9 +973,10 @@ pub(crate) const BATCH: usize = 16;
 /// bit-identical to [`run`]'s; only the interleaving between members differs, and members
 /// share nothing they write.
 ///
-/// The members' scalar slots are worked on in this thread's lanes ([`crate::lanes`]): copied
+/// For a program with at least two instructions per scalar slot ([`lanes_pay_off`]), the
+/// members' scalar slots are worked on in this thread's lanes ([`crate::lanes`]): copied
 /// in first (slots `0..lens` of each type, the program's lengths), back when every member
-/// has ended. While the whole batch is at one instruction, a plain scalar op runs on all
+/// has ended; smaller programs run on each member's own slots. While the whole batch is at one instruction, a plain scalar op runs on all
 /// lanes at once ([`crate::lanes::run_wide`]) and a jump that every member takes, or none,
 /// moves the batch without visiting its members.
 ///
@@ -987,18 +998,31 @@ pub(crate) fn run_batch(
     if n == 0 {
         return 0;
     }
+    if !lanes_pay_off(code.len(), lens) {
+        // No lanes: the empty scratch is never loaded.
+        return run_group::<false>(code, operands, entry, lens, members, &mut Lanes::default());
+    }
     LANES.with(|cell| match cell.try_borrow_mut() {
-        Ok(mut lanes) => run_lanes(code, operands, entry, lens, members, &mut lanes),
+        Ok(mut lanes) => run_group::<true>(code, operands, entry, lens, members, &mut lanes),
         // A batch run from inside another one on this thread (a world query that runs a
         // rig of its own): lanes of its own, allocated for this run.
-        Err(_) => run_lanes(code, operands, entry, lens, members, &mut Lanes::default()),
+        Err(_) => run_group::<true>(code, operands, entry, lens, members, &mut Lanes::default()),
     })
 }
 
-/// [`run_batch`] on `lanes`: the members' scalar slots are copied into them, run there and
-/// copied back.
+/// Whether a program of `code_len` instructions over scalar slots `lens` runs its batches
+/// on lanes: when it has at least two instructions per scalar slot. Copying a member's
+/// slots into the lanes and back costs a few machine instructions per slot, which a
+/// program of a few dozen instructions (`graphs/pelvis_bob.ron`: 17 over 20 slots) does
+/// not win back; `graphs/locomotion.ron` has 1 712 over 350.
+fn lanes_pay_off(code_len: usize, lens: &ScalarLens) -> bool {
+    code_len >= 2 * lens.0.iter().sum::<usize>()
+}
+
+/// [`run_batch`], on `lanes` (`LANES`: the members' scalar slots are copied into them, run
+/// there and copied back) or on each member's own slots.
 #[allow(unused_assignments)]
-fn run_lanes(
+fn run_group<const LANES: bool>(
     code: &[Instr],
     operands: &[u32],
     entry: u32,
@@ -1008,7 +1032,15 @@ fn run_lanes(
 ) -> usize {
     let n = members.len();
     let mut dispatches = 0;
-    lanes.load(lens, members);
+    // Without lanes, each member's own base pointers (stride 1).
+    let mut own = [Bases::NONE; BATCH];
+    if LANES {
+        lanes.load(lens, members);
+    } else {
+        for (b, cx) in own.iter_mut().zip(members.iter_mut()) {
+            *b = Bases::of(cx.slots);
+        }
+    }
     // Member 0's lane; member `m`'s is `m` items on in every array.
     let lane0 = lanes.bases();
     let dts: [f32; BATCH] = std::array::from_fn(|m| members.get(m).map_or(0.0, |cx| cx.dt));
@@ -1037,6 +1069,16 @@ fn run_lanes(
         let o = unsafe { operands.get_unchecked(args..args + MAX_OPERANDS) };
         moved = 0;
         dispatches += 1;
+        macro_rules! member_bases {
+            ($m:expr) => {
+                if LANES {
+                    lane0.lane($m)
+                } else {
+                    // SAFETY: `$m < n <= BATCH`.
+                    unsafe { *own.get_unchecked($m) }
+                }
+            };
+        }
         macro_rules! each {
             ($body:expr) => {{
                 if group == everyone {
@@ -1047,7 +1089,7 @@ fn run_lanes(
                         // SAFETY: `m < n`.
                         cx = unsafe { members.get_unchecked_mut(m) };
                         s = &mut *cx.slots;
-                        b = lane0.lane(m);
+                        b = member_bases!(m);
                         $body;
                     }
                 } else {
@@ -1058,7 +1100,7 @@ fn run_lanes(
                         // SAFETY: `group` has bits for members `0..n` only.
                         cx = unsafe { members.get_unchecked_mut(m) };
                         s = &mut *cx.slots;
-                        b = lane0.lane(m);
+                        b = member_bases!(m);
                         $body;
                     }
                 }
@@ -1084,7 +1126,7 @@ fn run_lanes(
                 jump!(END)
             };
         }
-        if group == everyone {
+        if LANES && group == everyone {
             // The whole batch is here (so no member waits elsewhere): a jump that every
             // member takes, or none, moves the batch at once, and a plain scalar op runs
             // on all lanes together.
@@ -1113,7 +1155,17 @@ fn run_lanes(
                 _ => {}
             }
         }
-        execute!(op, o, s, b, BATCH, cx, jump, end, each);
+        execute!(
+            op,
+            o,
+            s,
+            b,
+            if LANES { BATCH } else { 1 },
+            cx,
+            jump,
+            end,
+            each
+        );
         if moved == 0 {
             // The whole group goes on to the next instruction, where waiting members may
             // join it.
@@ -1145,7 +1197,9 @@ fn run_lanes(
             }
             let least = pcs[..n].iter().copied().min().unwrap_or(END);
             if least == END {
-                lanes.store(lens, members);
+                if LANES {
+                    lanes.store(lens, members);
+                }
                 return dispatches;
             }
             pc = least;
@@ -1395,8 +1449,21 @@ mod tests {
         }
     }
 
-    /// Dispatches of one batch run of `branchy` with these dts.
+    /// Dispatches of one batch run of `branchy` with these dts, the same on lanes and on the
+    /// members' own slots (which also leave every member's slots the same).
     fn dispatches(dts: &[f32]) -> usize {
+        let (on_lanes, lanes_slots) = dispatches_on::<true>(dts);
+        let (own, own_slots) = dispatches_on::<false>(dts);
+        assert_eq!(on_lanes, own, "dts {dts:?}");
+        for (a, b) in lanes_slots.iter().zip(&own_slots) {
+            assert!(a.bit_eq(b), "dts {dts:?}");
+        }
+        own
+    }
+
+    /// Dispatches of one batch run of `branchy` with these dts on lanes or not, and the
+    /// members' slots after it.
+    fn dispatches_on<const LANES: bool>(dts: &[f32]) -> (usize, Vec<Slots>) {
         let (program, _) = branchy();
         let skeleton = one_bone();
         let mut slots: Vec<Slots> = dts.iter().map(|_| program.initial.clone()).collect();
@@ -1414,13 +1481,37 @@ mod tests {
                 Ctx::for_test(slots, &program.texts, pose, debug, dt)
             })
             .collect();
-        run_batch(
+        if dts.is_empty() {
+            let n = run_batch(
+                &program.code,
+                &program.operands,
+                program.forward,
+                &program.scalar_lens,
+                &mut members,
+            );
+            return (n, Vec::new());
+        }
+        let n = run_group::<LANES>(
             &program.code,
             &program.operands,
             program.forward,
             &program.scalar_lens,
             &mut members,
-        )
+            &mut Lanes::default(),
+        );
+        drop(members);
+        (n, slots)
+    }
+
+    #[test]
+    fn only_programs_with_two_instructions_per_slot_run_on_lanes() {
+        // pelvis_bob's 17 instructions over 20 slots, foot_ik's 104 over 57, locomotion's
+        // 1 712 over 350.
+        assert!(!lanes_pay_off(17, &ScalarLens([1, 1, 10, 5, 1, 2])));
+        assert!(!lanes_pay_off(104, &ScalarLens([6, 2, 24, 17, 5, 3])));
+        assert!(lanes_pay_off(1712, &ScalarLens([21, 13, 223, 61, 12, 20])));
+        assert!(lanes_pay_off(4, &ScalarLens([1, 0, 1, 0, 0, 0])));
+        assert!(!lanes_pay_off(3, &ScalarLens([1, 0, 1, 0, 0, 0])));
     }
 
     #[test]

@@ -367,9 +367,9 @@ impl Instance {
     /// scalar math runs for all of them as one vectorised loop. Consecutive instances are
     /// batched together, so keep a crowd's instances of one program next to each other.
     /// Instances with profiling on run alone. The one latitude in "bit-identical" is a NaN
-    /// result's sign and payload bits, which Rust leaves open (a NaN stays a NaN). A graph
-    /// of a few dozen instructions gains nothing: copying its slots in and out of the batch
-    /// costs more than it saves (docs/performance.md).
+    /// result's sign and payload bits, which Rust leaves open (a NaN stays a NaN). A program
+    /// with fewer than two instructions per scalar slot runs its batches on each instance's
+    /// own slots, without the vectorised loops, whose copies it would not win back.
     ///
     /// For threads, split the crowd into chunks (e.g. rayon's `par_chunks_mut(64)`) and call
     /// this on each. Allocates nothing after warm-up: each thread keeps one scratch copy of
