@@ -1381,8 +1381,8 @@ mod tests {
 
     #[test]
     fn a_batch_run_inside_another_on_one_thread_gets_lanes_of_its_own() {
-        // Outside: each member traces from (0, 0, 10) down to (0, 0, −dt·10) and scales the
-        // hit distance by its dt.
+        // Outside: each member traces from (0, 0, 10) down to (0, 0, −dt·10), scales the
+        // hit distance by its dt and adds its dt 16 times (a program long enough for lanes).
         let mut pb = ProgramBuilder::new("tracer");
         let start = pb.constant(&Value::Vec3(Vec3::new(0.0, 0.0, 10.0)), "");
         let ten = pb.constant(&Value::Float(-10.0), "");
@@ -1398,6 +1398,9 @@ mod tests {
         pb.emit(Op::MakeVector, &[x, x, depth, end]);
         pb.emit(Op::LineTrace, &[start, end, hit, point, normal, scaled]);
         pb.emit(Op::MulF, &[scaled, d, scaled]);
+        for _ in 0..16 {
+            pb.emit(Op::AddF, &[scaled, d, scaled]);
+        }
         pb.emit(Op::End, &[]);
         let outer_program = Arc::new(pb.finish());
         let outer_dts = [1.0, 2.0, 0.5];
@@ -1406,8 +1409,26 @@ mod tests {
             .map(|_| Instance::new(Arc::clone(&outer_program), one_bone()).expect("instantiates"))
             .collect();
 
-        let (inner_program, _) = branchy();
-        let inner_program = Arc::new(inner_program);
+        // Inside: each member adds its dt to a sum 16 times a frame.
+        let mut pb = ProgramBuilder::new("summing");
+        let [d, sum] = [(); 2].map(|()| pb.alloc(ValueType::Float));
+        pb.set_construction_entry(pb.here());
+        pb.emit(Op::End, &[]);
+        pb.set_forward_entry(pb.here());
+        pb.emit(Op::DeltaTime, &[d]);
+        for _ in 0..16 {
+            pb.emit(Op::AddF, &[sum, d, sum]);
+        }
+        pb.emit(Op::End, &[]);
+        let inner_program = Arc::new(pb.finish());
+        // Both run their batches on lanes, the inner one while the outer one holds them.
+        for p in [&outer_program, &inner_program] {
+            assert!(
+                lanes_pay_off(p.code.len(), &p.scalar_lens),
+                "{}",
+                p.code.len()
+            );
+        }
         let crowd = |n: usize| -> Vec<Instance> {
             (0..n)
                 .map(|_| {
@@ -1428,11 +1449,11 @@ mod tests {
         for (k, instance) in outer.iter().enumerate() {
             let dt = outer_dts[k];
             let f = &instance.slots().floats;
-            assert_eq!(
-                f[scaled as usize],
-                (10.0 + 10.0 * dt) * 0.5 * dt,
-                "member {k}"
-            );
+            let mut expected = (10.0 + 10.0 * dt) * 0.5 * dt;
+            for _ in 0..16 {
+                expected += dt;
+            }
+            assert_eq!(f[scaled as usize], expected, "member {k}");
         }
         // Inside: one frame per trace (three), the same as each instance run alone.
         let inner = world.inner.lock().expect("not poisoned");
@@ -1446,6 +1467,8 @@ mod tests {
                 alone.run_forward(&input, &EmptyWorld, false);
             }
             assert!(alone.slots().bit_eq(instance.slots()), "inner member {k}");
+            // Three frames of 16 additions of its dt (exact in binary for these dts).
+            assert_eq!(instance.slots().floats[sum as usize], 48.0 * INNER_DTS[k]);
         }
     }
 
