@@ -1069,15 +1069,21 @@ fn run_group<const LANES: bool>(
         let o = unsafe { operands.get_unchecked(args..args + MAX_OPERANDS) };
         moved = 0;
         dispatches += 1;
-        macro_rules! member_bases {
-            ($m:expr) => {
-                if LANES {
-                    lane0.lane($m)
+        // Runs `$body` for member `$k` (`< n`), with its context, slots and slot bases.
+        macro_rules! visit {
+            ($k:expr, $body:expr) => {{
+                m = $k;
+                // SAFETY: `m < n`.
+                cx = unsafe { members.get_unchecked_mut(m) };
+                s = &mut *cx.slots;
+                b = if LANES {
+                    lane0.lane(m)
                 } else {
-                    // SAFETY: `$m < n <= BATCH`.
-                    unsafe { *own.get_unchecked($m) }
-                }
-            };
+                    // SAFETY: `m < n <= BATCH`.
+                    unsafe { *own.get_unchecked(m) }
+                };
+                $body;
+            }};
         }
         macro_rules! each {
             ($body:expr) => {{
@@ -1085,23 +1091,15 @@ fn run_group<const LANES: bool>(
                     // The common case, as a counted loop: its trip count and addresses are
                     // known before it starts.
                     for k in 0..n {
-                        m = k;
-                        // SAFETY: `m < n`.
-                        cx = unsafe { members.get_unchecked_mut(m) };
-                        s = &mut *cx.slots;
-                        b = member_bases!(m);
-                        $body;
+                        visit!(k, $body);
                     }
                 } else {
+                    // `group` has bits for members `0..n` only.
                     let mut rest = group;
                     while rest != 0 {
-                        m = rest.trailing_zeros() as usize;
+                        let k = rest.trailing_zeros() as usize;
                         rest &= rest - 1;
-                        // SAFETY: `group` has bits for members `0..n` only.
-                        cx = unsafe { members.get_unchecked_mut(m) };
-                        s = &mut *cx.slots;
-                        b = member_bases!(m);
-                        $body;
+                        visit!(k, $body);
                     }
                 }
             }};
