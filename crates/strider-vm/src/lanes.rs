@@ -160,7 +160,8 @@ pub(crate) unsafe fn run_wide(
     dts: &[f32; BATCH],
 ) -> bool {
     // `out[k] = expression of inputs` on every lane: each input is slot operand `k` of
-    // array `a`, read as a block before anything is written (an output may be an input).
+    // array `a`, read as a block before anything is written (an output may be an input),
+    // and the result written into the output's block lane by lane.
     // Ops that call a kernel per lane (`n; ...`) compute the batch's `n` members' lanes
     // only; with `; dt` the expression also reads each member's time step.
     macro_rules! lanes {
@@ -168,12 +169,12 @@ pub(crate) unsafe fn run_wide(
             // SAFETY: the operand is a slot of this type (the op's layout), so its block
             // lies in the lanes (loaded for the program's slots).
             $(let $x = unsafe { *block(lane0.$a, o[$k]) };)+
-            let result: [_; BATCH] = std::array::from_fn(|m| {
+            // SAFETY: as above; the inputs are copies, so this is the only reference.
+            let out = unsafe { &mut *block(lane0.$out, o[$ko]) };
+            for (m, r) in out.iter_mut().enumerate() {
                 $(let $x = $x[m];)+
-                $e
-            });
-            // SAFETY: as above.
-            unsafe { *block(lane0.$out, o[$ko]) = result };
+                *r = $e;
+            }
         }};
         (n; $out:ident[$ko:expr] = |$($x:ident: $a:ident[$k:expr]),+ $(; $dt:ident)?| $e:expr) => {{
             // SAFETY: as above.
