@@ -95,17 +95,25 @@ impl Pose {
     }
 
     /// A bone's rig-space transform, recomputing stale ancestors first.
+    #[inline]
     pub fn global(&mut self, bone: BoneIndex) -> Transform {
         let i = bone.get();
         if self.dirty[i] {
-            let g = match self.skeleton.parent(bone) {
-                Some(p) => self.global(p) * self.locals[i],
-                None => self.locals[i],
-            };
-            self.globals[i] = g;
-            self.dirty[i] = false;
+            self.refresh(bone);
         }
         self.globals[i]
+    }
+
+    /// Recomputes the stale global of `bone` and of its stale ancestors.
+    #[cold]
+    fn refresh(&mut self, bone: BoneIndex) {
+        let i = bone.get();
+        let g = match self.skeleton.parent(bone) {
+            Some(p) => self.global(p) * self.locals[i],
+            None => self.locals[i],
+        };
+        self.globals[i] = g;
+        self.dirty[i] = false;
     }
 
     /// Sets a bone's rig-space transform.

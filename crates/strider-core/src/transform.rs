@@ -101,6 +101,7 @@ impl Transform {
     /// A zero scale component has no inverse; it maps to a zero inverse scale on that
     /// axis instead of infinity, so a collapsed bone never produces NaN.
     #[must_use]
+    #[inline]
     pub fn inverse(&self) -> Self {
         let inv_scale = Vec3::new(
             safe_recip(self.scale.x),
@@ -119,6 +120,7 @@ impl Transform {
     /// `self` expressed relative to `parent`: `parent.inverse() * self`
     /// (RigVM's "Make Relative").
     #[must_use]
+    #[inline]
     pub fn relative_to(&self, parent: &Self) -> Self {
         parent.inverse() * *self
     }
@@ -139,6 +141,7 @@ impl Transform {
 
     /// True when every component is finite (no NaN or infinity).
     #[must_use]
+    #[inline]
     pub fn is_finite(&self) -> bool {
         self.translation.is_finite() && self.rotation.is_finite() && self.scale.is_finite()
     }
@@ -156,6 +159,7 @@ impl Transform {
 }
 
 /// `1 / x`, or 0 where `x` is 0 (a collapsed axis stays collapsed instead of exploding).
+#[inline]
 fn safe_recip(x: f32) -> f32 {
     if x == 0.0 { 0.0 } else { 1.0 / x }
 }
@@ -164,6 +168,7 @@ impl core::ops::Mul for Transform {
     type Output = Transform;
 
     /// Parent · child: applies `rhs` first, then `self`.
+    #[inline]
     fn mul(self, rhs: Transform) -> Transform {
         Transform {
             translation: self.transform_point(rhs.translation),
