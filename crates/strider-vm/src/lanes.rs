@@ -190,6 +190,38 @@ pub(crate) unsafe fn run_wide(
             unsafe { *block(lane0.$out, o[$ko]) = result };
         }};
     }
+    // The exponential lerps (operands: current, target, speed, result), whose weight
+    // `exp_alpha(speed, dt)` is computed once for each run of members with the same speed
+    // and dt (bit for bit, so the same weight), as a crowd's members usually have.
+    macro_rules! by_weight {
+        ($a:ident, $apply:path) => {{
+            // SAFETY: as in `lanes!`.
+            let (current, target, speed) = unsafe {
+                (
+                    *block(lane0.$a, o[0]),
+                    *block(lane0.$a, o[1]),
+                    *block(lane0.floats, o[2]),
+                )
+            };
+            // SAFETY: as above.
+            let mut result = unsafe { *block(lane0.$a, o[3]) };
+            let mut last: Option<(u32, u32, f32)> = None;
+            for (m, r) in result.iter_mut().enumerate().take(n) {
+                let (s, d) = (speed[m].to_bits(), dts[m].to_bits());
+                let alpha = match last {
+                    Some((ls, ld, w)) if ls == s && ld == d => w,
+                    _ => {
+                        let w = loco::exp_alpha(speed[m], dts[m]);
+                        last = Some((s, d, w));
+                        w
+                    }
+                };
+                *r = $apply(current[m], target[m], alpha);
+            }
+            // SAFETY: as above.
+            unsafe { *block(lane0.$a, o[3]) = result };
+        }};
+    }
     macro_rules! arith {
         (AddF, $b:expr) => { lanes!(floats[$b + 2] = |a: floats[$b], b: floats[$b + 1]| a + b) };
         (SubF, $b:expr) => { lanes!(floats[$b + 2] = |a: floats[$b], b: floats[$b + 1]| a - b) };
@@ -411,10 +443,8 @@ pub(crate) unsafe fn run_wide(
             // SAFETY: as in `lanes!`.
             unsafe { *block(lane0.floats, o[0]) = *dts };
         }
-        Op::FloatLerp => lanes!(n; floats[3] = |a: floats[0], b: floats[1], speed: floats[2]; dt|
-            loco::lerp_exponential(a, b, dt, speed)),
-        Op::QuatLerp => lanes!(n; quats[3] = |a: quats[0], b: quats[1], speed: floats[2]; dt|
-            loco::lerp_exponential_q(a, b, dt, speed)),
+        Op::FloatLerp => by_weight!(floats, loco::lerp_by_weight),
+        Op::QuatLerp => by_weight!(quats, loco::slerp_by_weight),
         Op::FInterpToF => lanes!(n; floats[3] = |a: floats[0], b: floats[1], speed: floats[2]; dt|
             loco::finterp_to(a, b, dt, speed)),
         Op::FInterpToV => lanes!(n; vec3s[3] = |a: vec3s[0], b: vec3s[1], speed: floats[2]; dt|
@@ -660,6 +690,63 @@ mod tests {
         }
         // The 121 ops `run_wide` has arms for (a miss here means `every_op` lacks one).
         assert_eq!(count, 121);
+    }
+
+    /// The exponential lerps compute their weight once per run of members with the same
+    /// speed and time step: each member still gets `lerp_exponential` of its own speed
+    /// and dt, whatever its neighbours have (runs broken by the speed, by dt, by `-0.0`
+    /// against `0.0` and by NaN).
+    #[test]
+    fn exponential_lerps_reuse_a_weight_only_for_equal_speed_and_time_step() {
+        const NAN: f32 = f32::NAN;
+        let speeds: [f32; BATCH] = [
+            4.0, 4.0, 4.0, 4.0, 2.0, 2.0, 4.0, 4.0, 4.0, -0.0, 0.0, NAN, NAN, 1e30, 4.0, 4.0,
+        ];
+        let (a, b) = (1.0 / 60.0, 1.0 / 30.0);
+        let dts: [f32; BATCH] = [a, a, a, b, a, a, a, a, 0.0, a, a, a, a, a, a, a];
+        let lens = ScalarLens([SLOTS; 6]);
+        // Floats: 1 current, 2 target, 3 speed, 4 result; quats the same.
+        let mut members: Vec<Slots> = (0..BATCH)
+            .map(|m| {
+                let mut slots = member_slots(m);
+                slots.floats[1] = m as f32 - 3.0;
+                slots.floats[2] = 10.0;
+                slots.floats[3] = speeds[m];
+                slots.quats[1] = Quat::from_rotation_z(0.1 * m as f32);
+                slots.quats[2] = Quat::from_rotation_x(1.0);
+                slots
+            })
+            .collect();
+        let mut o = vec![1, 2, 3, 4];
+        o.resize(o.len() + MAX_OPERANDS, 0);
+        let mut lanes = Lanes::default();
+        with_contexts(&mut members, |cxs| {
+            lanes.load(&lens, cxs);
+            for op in [Op::FloatLerp, Op::QuatLerp] {
+                // SAFETY: the operands are slots below `SLOTS` of the lanes loaded above.
+                assert!(unsafe { run_wide(op, &o, lanes.bases(), BATCH, &dts) });
+            }
+            lanes.store(&lens, cxs);
+        });
+        for (m, slots) in members.iter().enumerate() {
+            let want = loco::lerp_exponential(m as f32 - 3.0, 10.0, dts[m], speeds[m]);
+            assert_eq!(
+                slots.floats[4].to_bits(),
+                want.to_bits(),
+                "float, member {m}"
+            );
+            let want = loco::lerp_exponential_q(
+                Quat::from_rotation_z(0.1 * m as f32),
+                Quat::from_rotation_x(1.0),
+                dts[m],
+                speeds[m],
+            );
+            assert_eq!(
+                slots.quats[4].to_array(),
+                want.to_array(),
+                "quat, member {m}"
+            );
+        }
     }
 
     #[test]

@@ -74,11 +74,13 @@ fn wrap_deg(degrees: f32) -> f32 {
     }
 }
 
-/// The frame-rate independent blend weight `1 − e^(−rate·dt)`, computed as
-/// `−expm1(−rate·dt)` for precision at small steps. A rate or dt that is not positive
-/// (or NaN) gives 0 (no motion); an infinite product gives 1.
+/// The frame-rate independent blend weight `1 − e^(−rate·dt)` (in 0..=1) for a decay
+/// `rate` in 1/s over `dt` seconds, computed as `−expm1(−rate·dt)` for precision at small
+/// steps. A rate or dt that is not positive (or NaN) gives 0 (no motion); an infinite
+/// product gives 1.
 #[inline]
-fn exp_alpha(rate: f32, dt: f32) -> f32 {
+#[must_use]
+pub fn exp_alpha(rate: f32, dt: f32) -> f32 {
     if !positive(rate) || !positive(dt) {
         return 0.0;
     }
@@ -803,13 +805,20 @@ fn max_abs_diff(a: Quat, b: Quat) -> f32 {
 /// either); a non-finite `target` keeps `current`.
 #[must_use]
 pub fn lerp_exponential(current: f32, target: f32, dt: f32, speed: f32) -> f32 {
+    lerp_by_weight(current, target, exp_alpha(speed, dt))
+}
+
+/// [`lerp_exponential`] with its weight `alpha = exp_alpha(speed, dt)` already computed
+/// (a crowd whose characters share `speed` and `dt` computes it once).
+#[inline]
+#[must_use]
+pub fn lerp_by_weight(current: f32, target: f32, alpha: f32) -> f32 {
     if !target.is_finite() {
         return finite_or(current, 0.0);
     }
     if !current.is_finite() {
         return target;
     }
-    let alpha = exp_alpha(speed, dt);
     if alpha >= 1.0 {
         return target;
     }
@@ -839,6 +848,13 @@ pub fn lerp_exponential_v(current: Vec3, target: Vec3, dt: f32, speed: f32) -> V
 /// (zero → identity); same fallbacks as [`lerp_exponential`].
 #[must_use]
 pub fn lerp_exponential_q(current: Quat, target: Quat, dt: f32, speed: f32) -> Quat {
+    slerp_by_weight(current, target, exp_alpha(speed, dt))
+}
+
+/// [`lerp_exponential_q`] with its weight `alpha = exp_alpha(speed, dt)` already computed.
+#[inline]
+#[must_use]
+pub fn slerp_by_weight(current: Quat, target: Quat, alpha: f32) -> Quat {
     if !target.is_finite() {
         return unit_q(current);
     }
@@ -846,7 +862,6 @@ pub fn lerp_exponential_q(current: Quat, target: Quat, dt: f32, speed: f32) -> Q
     if !current.is_finite() {
         return target;
     }
-    let alpha = exp_alpha(speed, dt);
     if alpha >= 1.0 {
         return target;
     }
