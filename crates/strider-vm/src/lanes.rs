@@ -16,7 +16,6 @@
 use crate::exec::{BATCH, Bases, Ctx};
 use crate::slots::ScalarLens;
 use glam::{Quat, Vec3};
-use smallvec::SmallVec;
 use std::cell::RefCell;
 use strider_core::Transform;
 use strider_nodes::kernels as k;
@@ -56,8 +55,8 @@ macro_rules! each_scalar_type {
 impl Lanes {
     /// Copies slots `0..lens` of each scalar type of every member in (growing the lanes to
     /// `lens` slots of [`BATCH`] members where they are shorter). `members` has at most
-    /// [`BATCH`] members, each covering `lens`. Slot by slot, so that the lanes are written
-    /// in order and each member's array is read in order.
+    /// [`BATCH`] members, each covering `lens`. Member by member: each member's array is
+    /// read in order into its lane (every [`BATCH`]th item).
     pub(crate) fn load(&mut self, lens: &ScalarLens, members: &[Ctx<'_>]) {
         macro_rules! load {
             ($a:ident, $t:expr) => {{
@@ -65,15 +64,13 @@ impl Lanes {
                 if self.$a.len() < len * BATCH {
                     self.$a.resize(len * BATCH, Default::default());
                 }
-                let own: SmallVec<[*const _; BATCH]> = members
-                    .iter()
-                    .map(|cx| cx.slots.$a[..len].as_ptr())
-                    .collect();
-                for (k, lane) in self.$a.chunks_exact_mut(BATCH).take(len).enumerate() {
-                    for (x, from) in lane.iter_mut().zip(&own) {
-                        // SAFETY: `k < len`, and every member's array has `len` slots (the
-                        // slice above checked it).
-                        *x = unsafe { *from.add(k) };
+                assert!(members.len() <= BATCH, "a batch has at most BATCH members");
+                let lanes = self.$a[..len * BATCH].as_mut_ptr();
+                for (m, cx) in members.iter().enumerate() {
+                    for (k, &from) in cx.slots.$a[..len].iter().enumerate() {
+                        // SAFETY: `k < len` and `m < BATCH`, and the lanes hold
+                        // `len * BATCH` items (grown above, and sliced to that).
+                        unsafe { *lanes.add(k * BATCH + m) = from };
                     }
                 }
             }};
@@ -81,20 +78,18 @@ impl Lanes {
         each_scalar_type!(load);
     }
 
-    /// Copies slots `0..lens` of each scalar type back to every member, slot by slot.
+    /// Copies slots `0..lens` of each scalar type back to every member, member by member.
     pub(crate) fn store(&self, lens: &ScalarLens, members: &mut [Ctx<'_>]) {
         macro_rules! store {
             ($a:ident, $t:expr) => {{
                 let len = lens.0[$t];
-                let own: SmallVec<[*mut _; BATCH]> = members
-                    .iter_mut()
-                    .map(|cx| cx.slots.$a[..len].as_mut_ptr())
-                    .collect();
-                for (k, lane) in self.$a.chunks_exact(BATCH).take(len).enumerate() {
-                    for (&x, to) in lane.iter().zip(&own) {
-                        // SAFETY: `k < len`, every member's array has `len` slots (checked
-                        // above), and the members' arrays are distinct.
-                        unsafe { *to.add(k) = x };
+                assert!(members.len() <= BATCH, "a batch has at most BATCH members");
+                let lanes = self.$a[..len * BATCH].as_ptr();
+                for (m, cx) in members.iter_mut().enumerate() {
+                    for (k, to) in cx.slots.$a[..len].iter_mut().enumerate() {
+                        // SAFETY: `k < len` and `m < BATCH`, and the lanes hold
+                        // `len * BATCH` items (the slice above checked it).
+                        *to = unsafe { *lanes.add(k * BATCH + m) };
                     }
                 }
             }};
