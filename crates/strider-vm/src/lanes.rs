@@ -117,6 +117,32 @@ fn block<T>(base: *mut T, slot: u32) -> *mut [T; BATCH] {
     base.wrapping_add(slot as usize * BATCH).cast()
 }
 
+/// Item `m` of block `out` becomes item `m` of `x` where `c[m]`, else of `y`, lane by
+/// lane (each lane read before it is written, so `out` may be `x` or `y`).
+///
+/// # Safety
+/// The three blocks must be valid for reads and writes of [`BATCH`] items.
+#[inline(always)]
+unsafe fn select_items<T: Copy>(
+    c: [bool; BATCH],
+    x: *mut [T; BATCH],
+    y: *mut [T; BATCH],
+    out: *mut [T; BATCH],
+) {
+    let (x, y, out) = (x.cast::<T>(), y.cast::<T>(), out.cast::<T>());
+    for (m, &c) in c.iter().enumerate() {
+        let from = if c { x } else { y };
+        // SAFETY: `m < BATCH`, by the caller's contract.
+        unsafe { *out.add(m) = *from.add(m) };
+    }
+}
+
+/// Whether two blocks share no byte (blocks of different arrays never do).
+fn disjoint<T, U>(a: *mut [T; BATCH], b: *mut [U; BATCH]) -> bool {
+    let (a0, b0) = (a as usize, b as usize);
+    a0 + size_of::<[T; BATCH]>() <= b0 || b0 + size_of::<[U; BATCH]>() <= a0
+}
+
 /// The block of [`BATCH`] lanes of bool slot `slot`.
 ///
 /// # Safety
@@ -168,6 +194,40 @@ pub(crate) unsafe fn run_wide(
             let out = unsafe { &mut *block(lane0.$out, o[$ko]) };
             for (m, r) in out.iter_mut().enumerate() {
                 $(let $x = $x[m];)+
+                *r = $e;
+            }
+        }};
+        // Inputs after `; ref` are of other types than the output, so they cannot share its
+        // block: they are read where they are, not copied.
+        ($out:ident[$ko:expr] = |$($x:ident: $a:ident[$k:expr]),* ; ref $($y:ident: $b:ident[$kb:expr]),+| $e:expr) => {{
+            // SAFETY: as above.
+            $(let $x = unsafe { *block(lane0.$a, o[$k]) };)*
+            $(
+                debug_assert!(disjoint(block(lane0.$b, o[$kb]), block(lane0.$out, o[$ko])));
+                // SAFETY: as above; in another array than the output's.
+                let $y = unsafe { &*block(lane0.$b, o[$kb]) };
+            )+
+            // SAFETY: as above; no input refers to this array.
+            let out = unsafe { &mut *block(lane0.$out, o[$ko]) };
+            for (m, r) in out.iter_mut().enumerate() {
+                $(let $x = $x[m];)*
+                $(let $y = $y[m];)+
+                *r = $e;
+            }
+        }};
+        (n; $out:ident[$ko:expr] = |$($x:ident: $a:ident[$k:expr]),* ; ref $($y:ident: $b:ident[$kb:expr]),+| $e:expr) => {{
+            // SAFETY: as above.
+            $(let $x = unsafe { *block(lane0.$a, o[$k]) };)*
+            $(
+                debug_assert!(disjoint(block(lane0.$b, o[$kb]), block(lane0.$out, o[$ko])));
+                // SAFETY: as above; in another array than the output's.
+                let $y = unsafe { &*block(lane0.$b, o[$kb]) };
+            )+
+            // SAFETY: as above; no input refers to this array.
+            let out = unsafe { &mut *block(lane0.$out, o[$ko]) };
+            for (m, r) in out.iter_mut().enumerate().take(n) {
+                $(let $x = $x[m];)*
+                $(let $y = $y[m];)+
                 *r = $e;
             }
         }};
@@ -227,14 +287,30 @@ pub(crate) unsafe fn run_wide(
         (ScaleV, $b:expr) => { lanes!(vec3s[$b + 2] = |a: vec3s[$b], b: floats[$b + 1]| a * b) };
     }
     // The Select of a type: operand 0 the condition, 1 and 2 the choices, 3 the result.
+    // Small values as a vectorised loop; vectors, rotations and transforms lane by lane
+    // through the blocks' pointers (a lane is read before it is written, so the result
+    // may share a choice's block), without copying whole blocks of them.
     macro_rules! select {
-        ($a:ident) => {
-            lanes!($a[3] = |c: bools[0], x: $a[1], y: $a[2]| if c { x } else { y })
-        };
+        (bools) => { lanes!(bools[3] = |c: bools[0], x: bools[1], y: bools[2]| if c { x } else { y }) };
+        (ints) => { lanes!(ints[3] = |x: ints[1], y: ints[2]; ref c: bools[0]| if c { x } else { y }) };
+        (floats) => { lanes!(floats[3] = |x: floats[1], y: floats[2]; ref c: bools[0]| if c { x } else { y }) };
+        ($a:ident) => {{
+            // SAFETY: as in `lanes!`.
+            unsafe {
+                select_items(
+                    *block(lane0.bools, o[0]),
+                    block(lane0.$a, o[1]),
+                    block(lane0.$a, o[2]),
+                    block(lane0.$a, o[3]),
+                )
+            }
+        }};
     }
+    // The Copy of a type: the block as it is (the same block when they are one slot).
     macro_rules! copy {
         ($a:ident) => {
-            lanes!($a[1] = |x: $a[0]| x)
+            // SAFETY: as in `lanes!`; `copy` allows the two blocks to be one.
+            unsafe { std::ptr::copy(block(lane0.$a, o[0]), block(lane0.$a, o[1]), 1) }
         };
     }
     match op {
@@ -312,32 +388,32 @@ pub(crate) unsafe fn run_wide(
         Op::MaxV => lanes!(vec3s[2] = |a: vec3s[0], b: vec3s[1]| a.max(b)),
         Op::AbsV => lanes!(vec3s[1] = |a: vec3s[0]| a.abs()),
         Op::LerpV => lanes!(vec3s[3] = |a: vec3s[0], b: vec3s[1], t: floats[2]| a.lerp(b, t)),
-        Op::LengthV => lanes!(floats[1] = |a: vec3s[0]| a.length()),
-        Op::DistanceV => lanes!(floats[2] = |a: vec3s[0], b: vec3s[1]| a.distance(b)),
-        Op::DotV => lanes!(floats[2] = |a: vec3s[0], b: vec3s[1]| a.dot(b)),
+        Op::LengthV => lanes!(floats[1] = |; ref a: vec3s[0]| a.length()),
+        Op::DistanceV => lanes!(floats[2] = |; ref a: vec3s[0], b: vec3s[1]| a.distance(b)),
+        Op::DotV => lanes!(floats[2] = |; ref a: vec3s[0], b: vec3s[1]| a.dot(b)),
         Op::CrossV => lanes!(vec3s[2] = |a: vec3s[0], b: vec3s[1]| a.cross(b)),
         Op::UnitV => lanes!(vec3s[1] = |a: vec3s[0]| k::unit_v(a)),
         Op::MakeVector => {
-            lanes!(vec3s[3] = |x: floats[0], y: floats[1], z: floats[2]| Vec3::new(x, y, z))
+            lanes!(vec3s[3] = |; ref x: floats[0], y: floats[1], z: floats[2]| Vec3::new(x, y, z))
         }
         Op::BreakVector => {
-            lanes!(floats[1] = |v: vec3s[0]| v.x);
-            lanes!(floats[2] = |v: vec3s[0]| v.y);
-            lanes!(floats[3] = |v: vec3s[0]| v.z);
+            lanes!(floats[1] = |; ref v: vec3s[0]| v.x);
+            lanes!(floats[2] = |; ref v: vec3s[0]| v.y);
+            lanes!(floats[3] = |; ref v: vec3s[0]| v.z);
         }
-        Op::RotateVector => lanes!(vec3s[2] = |q: quats[0], v: vec3s[1]| q * v),
-        Op::MakeTransform => lanes!(transforms[3] = |t: vec3s[0], r: quats[1], s: vec3s[2]|
+        Op::RotateVector => lanes!(vec3s[2] = |v: vec3s[1]; ref q: quats[0]| q * v),
+        Op::MakeTransform => lanes!(transforms[3] = |; ref t: vec3s[0], r: quats[1], s: vec3s[2]|
             Transform::new(t, k::unit_q(r), s)),
         Op::BreakTransform => {
-            lanes!(vec3s[1] = |x: transforms[0]| x.translation);
-            lanes!(quats[2] = |x: transforms[0]| x.rotation);
-            lanes!(vec3s[3] = |x: transforms[0]| x.scale);
+            lanes!(vec3s[1] = |; ref x: transforms[0]| x.translation);
+            lanes!(quats[2] = |; ref x: transforms[0]| x.rotation);
+            lanes!(vec3s[3] = |; ref x: transforms[0]| x.scale);
         }
         Op::TransformPoint => {
-            lanes!(vec3s[2] = |t: transforms[0], p: vec3s[1]| t.transform_point(p))
+            lanes!(vec3s[2] = |p: vec3s[1]; ref t: transforms[0]| t.transform_point(p))
         }
         Op::TransformVector => {
-            lanes!(vec3s[2] = |t: transforms[0], v: vec3s[1]| t.transform_vector(v))
+            lanes!(vec3s[2] = |v: vec3s[1]; ref t: transforms[0]| t.transform_vector(v))
         }
 
         Op::MulFMulF => {
@@ -415,7 +491,7 @@ pub(crate) unsafe fn run_wide(
         Op::ClampSpatially => lanes!(n; vec3s[4] = |v: vec3s[0], c: vec3s[1], lo: floats[2],
             hi: floats[3]| k::clamp_spatially(v, c, lo, hi)),
 
-        Op::QuatFromAxisAngle => lanes!(n; quats[2] = |axis: vec3s[0], angle: floats[1]|
+        Op::QuatFromAxisAngle => lanes!(n; quats[2] = |; ref axis: vec3s[0], angle: floats[1]|
             k::quat_from_axis_angle(axis, angle)),
         Op::MulQ => lanes!(n; quats[2] = |a: quats[0], b: quats[1]| k::unit_q(a * b)),
         Op::InverseQ => lanes!(n; quats[1] = |a: quats[0]| k::unit_q(a).inverse()),
@@ -424,14 +500,14 @@ pub(crate) unsafe fn run_wide(
             lanes!(n; quats[3] = |a: quats[0], b: quats[1], t: floats[2]| k::slerp(a, b, t))
         }
         Op::QuatScale => lanes!(n; quats[2] = |a: quats[0], f: floats[1]| k::quat_scale(a, f)),
-        Op::FindQuatBetween => lanes!(n; quats[2] = |a: vec3s[0], b: vec3s[1]|
+        Op::FindQuatBetween => lanes!(n; quats[2] = |; ref a: vec3s[0], b: vec3s[1]|
             k::find_quat_between(a, b)),
         Op::MulT => lanes!(n; transforms[2] = |a: transforms[0], b: transforms[1]| a * b),
         Op::InverseT => lanes!(n; transforms[1] = |a: transforms[0]| a.inverse()),
         Op::MakeRelative => lanes!(n; transforms[2] = |a: transforms[0], b: transforms[1]|
             a.relative_to(&b)),
         Op::MakeAbsolute => lanes!(n; transforms[2] = |a: transforms[0], b: transforms[1]| b * a),
-        Op::RotateAroundPoint => lanes!(n; transforms[3] = |t: transforms[0], p: vec3s[1],
+        Op::RotateAroundPoint => lanes!(n; transforms[3] = |t: transforms[0]; ref p: vec3s[1],
             r: quats[2]| k::rotate_around_point(t, p, r)),
 
         Op::DeltaTime => {
