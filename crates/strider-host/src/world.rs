@@ -625,6 +625,14 @@ pub enum WorldError {
     },
 }
 
+/// A sweep's delta (cm, world space) with its unit direction and its length (cm).
+#[derive(Clone, Copy)]
+struct Along {
+    delta: Vec3,
+    dir: Vec3,
+    length: f32,
+}
+
 /// A hit of a swept capsule or sphere, world space (used by the mover).
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub(crate) struct SweepHit {
@@ -1078,12 +1086,32 @@ impl World {
         if !(length.is_finite() && start.is_finite()) || length <= 1e-7 {
             return None;
         }
-        let dir = delta / length;
         let ball_radius = if skin == 0.0 {
             shape.as_ball().map(|ball| ball.radius)
         } else {
             None
         };
+        let along = Along {
+            delta,
+            dir: delta / length,
+            length,
+        };
+        self.sweep_along(shape, ball_radius, start, along, skin, stop_at_penetration)
+    }
+
+    /// [`World::sweep`] with its delta's direction and length known (`along`), and
+    /// `ball_radius` the radius when `shape` is a ball swept without skin (which the
+    /// closed forms answer).
+    fn sweep_along(
+        &self,
+        shape: &dyn Shape,
+        ball_radius: Option<f32>,
+        start: Vec3,
+        along: Along,
+        skin: f32,
+        stop_at_penetration: bool,
+    ) -> Option<SweepHit> {
+        let Along { delta, dir, length } = along;
         let end = start + delta;
         let reach = if let Some(radius) = ball_radius {
             ball_reach(start, end, radius)
@@ -1235,8 +1263,14 @@ impl WorldQuery for World {
                 .sweep(&ball, start, Vec3::NEG_Z * 1e-6, 0.0, true)
                 .filter(|h| h.distance <= 0.0)?;
             (Vec3::ZERO, hit)
+        } else if length.is_finite() {
+            // `sweep` without asking the shape again what it is.
+            let dir = delta / length;
+            let along = Along { delta, dir, length };
+            let hit = self.sweep_along(&ball, Some(radius), start, along, 0.0, true)?;
+            (dir, hit)
         } else {
-            (delta / length, self.sweep(&ball, start, delta, 0.0, true)?)
+            return None;
         };
         // The touched point of a sphere is one radius from its centre, against the normal.
         Some(TraceHit {
