@@ -198,8 +198,8 @@ pub(crate) unsafe fn run_wide(
             }
         }};
         // Inputs after `; ref` are of other types than the output, so they cannot share its
-        // block: they are read where they are, not copied.
-        ($out:ident[$ko:expr] = |$($x:ident: $a:ident[$k:expr]),* ; ref $($y:ident: $b:ident[$kb:expr]),+| $e:expr) => {{
+        // block: they are read where they are, not copied. The first `$lanes` lanes.
+        (@ref $lanes:expr; $out:ident[$ko:expr] = |$($x:ident: $a:ident[$k:expr]),* ; ref $($y:ident: $b:ident[$kb:expr]),+| $e:expr) => {{
             // SAFETY: as above.
             $(let $x = unsafe { *block(lane0.$a, o[$k]) };)*
             $(
@@ -209,28 +209,18 @@ pub(crate) unsafe fn run_wide(
             )+
             // SAFETY: as above; no input refers to this array.
             let out = unsafe { &mut *block(lane0.$out, o[$ko]) };
-            for (m, r) in out.iter_mut().enumerate() {
+            for (m, r) in out.iter_mut().enumerate().take($lanes) {
                 $(let $x = $x[m];)*
                 $(let $y = $y[m];)+
                 *r = $e;
             }
         }};
-        (n; $out:ident[$ko:expr] = |$($x:ident: $a:ident[$k:expr]),* ; ref $($y:ident: $b:ident[$kb:expr]),+| $e:expr) => {{
-            // SAFETY: as above.
-            $(let $x = unsafe { *block(lane0.$a, o[$k]) };)*
-            $(
-                debug_assert!(disjoint(block(lane0.$b, o[$kb]), block(lane0.$out, o[$ko])));
-                // SAFETY: as above; in another array than the output's.
-                let $y = unsafe { &*block(lane0.$b, o[$kb]) };
-            )+
-            // SAFETY: as above; no input refers to this array.
-            let out = unsafe { &mut *block(lane0.$out, o[$ko]) };
-            for (m, r) in out.iter_mut().enumerate().take(n) {
-                $(let $x = $x[m];)*
-                $(let $y = $y[m];)+
-                *r = $e;
-            }
-        }};
+        ($out:ident[$ko:expr] = |$($x:ident: $a:ident[$k:expr]),* ; ref $($y:ident: $b:ident[$kb:expr]),+| $e:expr) => {
+            lanes!(@ref BATCH; $out[$ko] = |$($x: $a[$k]),* ; ref $($y: $b[$kb]),+| $e)
+        };
+        (n; $out:ident[$ko:expr] = |$($x:ident: $a:ident[$k:expr]),* ; ref $($y:ident: $b:ident[$kb:expr]),+| $e:expr) => {
+            lanes!(@ref n; $out[$ko] = |$($x: $a[$k]),* ; ref $($y: $b[$kb]),+| $e)
+        };
         (n; $out:ident[$ko:expr] = |$($x:ident: $a:ident[$k:expr]),+ $(; $dt:ident)?| $e:expr) => {{
             // SAFETY: as above.
             $(let $x = unsafe { *block(lane0.$a, o[$k]) };)+
