@@ -335,6 +335,15 @@ fn smoothing(c: &mut Criterion) {
     g.bench_function("lerp_exponential_q", |x| {
         x.iter(|| loco::lerp_exponential_q(black_box(qa), black_box(qb), DT, 10.0))
     });
+    g.bench_function("exp_alpha", |x| {
+        x.iter(|| loco::exp_alpha(black_box(10.0), black_box(DT)))
+    });
+    g.bench_function("lerp_by_weight", |x| {
+        x.iter(|| loco::lerp_by_weight(black_box(3.0), black_box(8.0), black_box(0.15)))
+    });
+    g.bench_function("slerp_by_weight", |x| {
+        x.iter(|| loco::slerp_by_weight(black_box(qa), black_box(qb), black_box(0.15)))
+    });
     g.bench_function("lerp_max_step", |x| {
         x.iter(|| loco::lerp_max_step(black_box(cur), black_box(tgt), DT, 10.0, 50.0))
     });
