@@ -976,9 +976,9 @@ pub(crate) const BATCH: usize = 16;
 /// For a program with at least two instructions per scalar slot ([`lanes_pay_off`]), the
 /// members' scalar slots are worked on in this thread's lanes ([`crate::lanes`]): copied
 /// in first (slots `0..lens` of each type, the program's lengths), back when every member
-/// has ended; smaller programs run on each member's own slots. While the whole batch is at one instruction, a plain scalar op runs on all
-/// lanes at once ([`crate::lanes::run_wide`]) and a jump that every member takes, or none,
-/// moves the batch without visiting its members.
+/// has ended; smaller programs run on each member's own slots. While the whole batch is at
+/// one instruction, a plain scalar op runs on all lanes at once ([`crate::lanes::run_wide`])
+/// and a jump that every member takes, or none, moves the batch without visiting its members.
 ///
 /// `code` and `operands` are the program's, passed apart so that the compiler knows that the
 /// handlers' writes do not touch them (operand fetches can stay out of the member loop).

@@ -58,13 +58,13 @@ impl Lanes {
     /// [`BATCH`] members, each covering `lens`. Member by member: each member's array is
     /// read in order into its lane (every [`BATCH`]th item).
     pub(crate) fn load(&mut self, lens: &ScalarLens, members: &[Ctx<'_>]) {
+        assert!(members.len() <= BATCH, "a batch has at most BATCH members");
         macro_rules! load {
             ($a:ident, $t:expr) => {{
                 let len = lens.0[$t];
                 if self.$a.len() < len * BATCH {
                     self.$a.resize(len * BATCH, Default::default());
                 }
-                assert!(members.len() <= BATCH, "a batch has at most BATCH members");
                 let lanes = self.$a[..len * BATCH].as_mut_ptr();
                 for (m, cx) in members.iter().enumerate() {
                     for (k, &from) in cx.slots.$a[..len].iter().enumerate() {
@@ -80,10 +80,10 @@ impl Lanes {
 
     /// Copies slots `0..lens` of each scalar type back to every member, member by member.
     pub(crate) fn store(&self, lens: &ScalarLens, members: &mut [Ctx<'_>]) {
+        assert!(members.len() <= BATCH, "a batch has at most BATCH members");
         macro_rules! store {
             ($a:ident, $t:expr) => {{
                 let len = lens.0[$t];
-                assert!(members.len() <= BATCH, "a batch has at most BATCH members");
                 let lanes = self.$a[..len * BATCH].as_ptr();
                 for (m, cx) in members.iter_mut().enumerate() {
                     for (k, to) in cx.slots.$a[..len].iter_mut().enumerate() {
