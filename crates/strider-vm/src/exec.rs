@@ -112,6 +112,44 @@ macro_rules! by_elem {
     };
 }
 
+/// Runs `$body` with `$c` bound to the constant element type `$e` holds, so that the
+/// `by_elem!` dispatch inside `$body` folds away: one `match` per instruction rather than
+/// one per batch member.
+macro_rules! with_elem {
+    ($e:expr, $c:ident => $body:expr) => {
+        match $e {
+            Elem::Bool => {
+                const $c: Elem = Elem::Bool;
+                $body
+            }
+            Elem::Int => {
+                const $c: Elem = Elem::Int;
+                $body
+            }
+            Elem::Float => {
+                const $c: Elem = Elem::Float;
+                $body
+            }
+            Elem::Vec3 => {
+                const $c: Elem = Elem::Vec3;
+                $body
+            }
+            Elem::Quat => {
+                const $c: Elem = Elem::Quat;
+                $body
+            }
+            Elem::Transform => {
+                const $c: Elem = Elem::Transform;
+                $body
+            }
+            Elem::Bone => {
+                const $c: Elem = Elem::Bone;
+                $body
+            }
+        }
+    };
+}
+
 /// Copies within one slot array; arrays reuse the destination's memory.
 fn copy_vec<T: Clone>(v: &mut [Vec<T>], from: usize, to: usize) {
     if from != to {
@@ -339,7 +377,7 @@ macro_rules! execute {
                     $jump!(o[1] as usize);
                 }
             }),
-            Op::ForEachNext(e) => $each!({
+            Op::ForEachNext(e) => with_elem!(e, E => $each!({
                 let counter = i!(1);
                 macro_rules! next {
                     ($sc:ident, $ar:expr, $zero:expr) => {{
@@ -354,8 +392,8 @@ macro_rules! execute {
                         }
                     }};
                 }
-                by_elem!(e, $s, next);
-            }),
+                by_elem!(E, $s, next);
+            })),
             Op::ForNext => $each!({
                 let counter = i!(0);
                 if counter >= i!(1) {
@@ -708,7 +746,7 @@ macro_rules! execute {
                 q!(3) = loco::rotation_from_normal_quat(n);
             }),
 
-            Op::ArrayAt(e) => $each!(array_at!(e, 0)),
+            Op::ArrayAt(e) => with_elem!(e, E => $each!(array_at!(E, 0))),
             Op::MulFMulF => $each!({
                 arith!(MulF, 0);
                 arith!(MulF, 3);
