@@ -237,23 +237,24 @@ pub(crate) unsafe fn run_wide(
     }
     // The exponential lerps (operands: current, target, speed, result), whose weight
     // `exp_alpha(speed, dt)` is computed once for each run of members with the same speed
-    // and dt (bit for bit, so the same weight), as a crowd's members usually have.
+    // and dt (bit for bit, so the same weight), as a crowd's members usually have. The
+    // weights come first, member by member; then the lerp itself runs on every lane as one
+    // loop (lanes past the members get weight 0 and are never read).
     macro_rules! by_weight {
-        ($a:ident, $apply:path) => {{
+        ($a:ident, $apply:path, $lanes:expr) => {{
             // SAFETY: as in `lanes!`.
             let (current, target, speed) = unsafe {
                 (
                     *block(lane0.$a, o[0]),
                     *block(lane0.$a, o[1]),
-                    *block(lane0.floats, o[2]),
+                    &*block(lane0.floats, o[2]),
                 )
             };
-            // SAFETY: as above.
-            let mut result = unsafe { *block(lane0.$a, o[3]) };
+            let mut alphas = [0.0f32; BATCH];
             let mut last: Option<(u32, u32, f32)> = None;
-            for (m, r) in result.iter_mut().enumerate().take(n) {
+            for (m, alpha) in alphas.iter_mut().enumerate().take(n) {
                 let (s, d) = (speed[m].to_bits(), dts[m].to_bits());
-                let alpha = match last {
+                *alpha = match last {
                     Some((ls, ld, w)) if ls == s && ld == d => w,
                     _ => {
                         let w = loco::exp_alpha(speed[m], dts[m]);
@@ -261,10 +262,12 @@ pub(crate) unsafe fn run_wide(
                         w
                     }
                 };
-                *r = $apply(current[m], target[m], alpha);
             }
-            // SAFETY: as above.
-            unsafe { *block(lane0.$a, o[3]) = result };
+            // SAFETY: as above; the lerped values are copies, so this is the only reference.
+            let out = unsafe { &mut *block(lane0.$a, o[3]) };
+            for (m, r) in out.iter_mut().enumerate().take($lanes) {
+                *r = $apply(current[m], target[m], alphas[m]);
+            }
         }};
     }
     macro_rules! arith {
@@ -504,8 +507,8 @@ pub(crate) unsafe fn run_wide(
             // SAFETY: as in `lanes!`.
             unsafe { *block(lane0.floats, o[0]) = *dts };
         }
-        Op::FloatLerp => by_weight!(floats, loco::lerp_by_weight),
-        Op::QuatLerp => by_weight!(quats, loco::slerp_by_weight),
+        Op::FloatLerp => by_weight!(floats, loco::lerp_by_weight, BATCH),
+        Op::QuatLerp => by_weight!(quats, loco::slerp_by_weight, n),
         Op::FInterpToF => lanes!(n; floats[3] = |a: floats[0], b: floats[1], speed: floats[2]; dt|
             loco::finterp_to(a, b, dt, speed)),
         Op::FInterpToV => lanes!(n; vec3s[3] = |a: vec3s[0], b: vec3s[1], speed: floats[2]; dt|

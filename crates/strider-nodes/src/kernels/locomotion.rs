@@ -813,16 +813,21 @@ pub fn lerp_exponential(current: f32, target: f32, dt: f32, speed: f32) -> f32 {
 #[inline]
 #[must_use]
 pub fn lerp_by_weight(current: f32, target: f32, alpha: f32) -> f32 {
-    if !target.is_finite() {
-        return finite_or(current, 0.0);
+    // Every case computed, then chosen (no early return), so that a loop of these over a
+    // crowd's lanes vectorises: a non-finite target keeps `current` (0 if that is not
+    // finite either); a non-finite current, or a weight of 1 or more, gives `target`;
+    // otherwise the lerp, or `target` should the lerp overflow.
+    let lerped = finite_or(current + (target - current) * alpha, target);
+    let moved = if alpha >= 1.0 || !current.is_finite() {
+        target
+    } else {
+        lerped
+    };
+    if target.is_finite() {
+        moved
+    } else {
+        finite_or(current, 0.0)
     }
-    if !current.is_finite() {
-        return target;
-    }
-    if alpha >= 1.0 {
-        return target;
-    }
-    finite_or(current + (target - current) * alpha, target)
 }
 
 /// [`lerp_exponential`] for vectors (cm or any unit), same weight `1 − e^(−speed·dt)` and
@@ -1906,6 +1911,12 @@ mod tests {
         // NaN current: target; NaN target: current.
         assert_eq!(lerp_exponential(f32::NAN, 100.0, 0.1, 6.0), 100.0);
         assert_eq!(lerp_exponential(3.0, f32::NAN, 0.1, 6.0), 3.0);
+        // Both non-finite: 0. A step that overflows (−MAX − MAX = −∞): the target.
+        assert_eq!(lerp_exponential(f32::NAN, f32::INFINITY, 0.1, 6.0), 0.0);
+        assert_eq!(lerp_by_weight(f32::MAX, -f32::MAX, 0.5), -f32::MAX);
+        // A weight of 1 or more is the target exactly; NaN weight: the target (no lerp).
+        assert_eq!(lerp_by_weight(3.0, 100.0, 1.5), 100.0);
+        assert_eq!(lerp_by_weight(3.0, 100.0, f32::NAN), 100.0);
     }
 
     #[test]
