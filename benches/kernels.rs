@@ -14,7 +14,7 @@ use std::hint::black_box;
 use std::path::Path;
 use std::sync::Arc;
 use strider::core::{Pose, Quat, Skeleton, Transform, Vec3};
-use strider::nodes::kernels::{self as k, locomotion as loco, spline, two_bone_ik};
+use strider::nodes::kernels::{self as k, locomotion as loco, parts, spline, two_bone_ik};
 
 /// One 60 Hz frame, seconds.
 const DT: f32 = 1.0 / 60.0;
@@ -140,6 +140,20 @@ fn quats(c: &mut Criterion) {
     });
     g.bench_function("unit_q_mul", |x| {
         x.iter(|| k::unit_q(black_box(qa) * black_box(qb)))
+    });
+    g.bench_function("rotate_vector", |x| {
+        x.iter(|| k::rotate_vector(black_box(qa), black_box(axis)))
+    });
+    // The same math on plain components (what the crowd path runs lane by lane).
+    let (pa, pb, pv) = (qa.to_array(), qb.to_array(), axis.to_array());
+    g.bench_function("unit_parts", |x| {
+        x.iter(|| parts::unit_parts(black_box(pa)))
+    });
+    g.bench_function("mul_parts", |x| {
+        x.iter(|| parts::mul_parts(black_box(pa), black_box(pb)))
+    });
+    g.bench_function("rotate_parts", |x| {
+        x.iter(|| parts::rotate_parts(black_box(pa), black_box(pv)))
     });
     g.finish();
 }

@@ -503,7 +503,7 @@ macro_rules! execute {
             Op::InverseQ => $each!(q!(1) = k::unit_q(q!(0)).inverse()),
             Op::UnitQ => $each!(q!(1) = k::unit_q(q!(0))),
             Op::SlerpQ => $each!(q!(3) = k::slerp(q!(0), q!(1), f!(2))),
-            Op::RotateVector => $each!(v!(2) = q!(0) * v!(1)),
+            Op::RotateVector => $each!(v!(2) = k::rotate_vector(q!(0), v!(1))),
             Op::QuatScale => $each!(q!(2) = k::quat_scale(q!(0), f!(1))),
             Op::FindQuatBetween => $each!(q!(2) = k::find_quat_between(v!(0), v!(1))),
 

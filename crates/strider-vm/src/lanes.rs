@@ -20,6 +20,7 @@ use std::cell::RefCell;
 use strider_core::Transform;
 use strider_nodes::kernels as k;
 use strider_nodes::kernels::locomotion as loco;
+use strider_nodes::kernels::parts;
 use strider_nodes::{Elem, Op, ValueType};
 
 /// A batch's scalar slots, interleaved by member: slot `k` of member `m` is item
@@ -134,6 +135,37 @@ unsafe fn select_items<T: Copy>(
         let from = if c { x } else { y };
         // SAFETY: `m < BATCH`, by the caller's contract.
         unsafe { *out.add(m) = *from.add(m) };
+    }
+}
+
+/// A block's components as one array per component (`[x; 16], [y; 16], …`), so that
+/// math over them runs as vectorised loops across the lanes (see
+/// [`strider_nodes::kernels::parts`]).
+#[inline(always)]
+fn columns<T, const C: usize>(
+    block: &[T; BATCH],
+    parts: impl Fn(&T) -> [f32; C],
+) -> [[f32; BATCH]; C] {
+    let mut cols = [[0.0; BATCH]; C];
+    for (m, item) in block.iter().enumerate() {
+        for (col, x) in cols.iter_mut().zip(parts(item)) {
+            col[m] = x;
+        }
+    }
+    cols
+}
+
+/// Lane `m` of component arrays `cols`.
+#[inline(always)]
+fn lane<const C: usize>(cols: &[[f32; BATCH]; C], m: usize) -> [f32; C] {
+    std::array::from_fn(|c| cols[c][m])
+}
+
+/// Sets lane `m` of component arrays `cols`.
+#[inline(always)]
+fn set_lane<const C: usize>(cols: &mut [[f32; BATCH]; C], m: usize, x: [f32; C]) {
+    for (col, x) in cols.iter_mut().zip(x) {
+        col[m] = x;
     }
 }
 
@@ -394,9 +426,40 @@ pub(crate) unsafe fn run_wide(
             lanes!(floats[2] = |; ref v: vec3s[0]| v.y);
             lanes!(floats[3] = |; ref v: vec3s[0]| v.z);
         }
-        Op::RotateVector => lanes!(vec3s[2] = |v: vec3s[1]; ref q: quats[0]| q * v),
-        Op::MakeTransform => lanes!(transforms[3] = |; ref t: vec3s[0], r: quats[1], s: vec3s[2]|
-            Transform::new(t, k::unit_q(r), s)),
+        Op::RotateVector => {
+            // SAFETY: as in `lanes!`; both blocks are read before the output is written.
+            let (q, v) = unsafe { (&*block(lane0.quats, o[0]), &*block(lane0.vec3s, o[1])) };
+            let (q, v) = (columns(q, |q| q.to_array()), columns(v, |v| v.to_array()));
+            let mut r = [[0.0; BATCH]; 3];
+            for m in 0..BATCH {
+                set_lane(&mut r, m, parts::rotate_parts(lane(&q, m), lane(&v, m)));
+            }
+            // SAFETY: as above.
+            let out = unsafe { &mut *block(lane0.vec3s, o[2]) };
+            for (m, out) in out.iter_mut().enumerate() {
+                *out = Vec3::from_array(lane(&r, m));
+            }
+        }
+        Op::MakeTransform => {
+            // SAFETY: as in `lanes!`; the inputs are of other types than the output.
+            let (t, r, s) = unsafe {
+                (
+                    &*block(lane0.vec3s, o[0]),
+                    &*block(lane0.quats, o[1]),
+                    &*block(lane0.vec3s, o[2]),
+                )
+            };
+            let r = columns(r, |r| r.to_array());
+            let mut unit = [[0.0; BATCH]; 4];
+            for m in 0..BATCH {
+                set_lane(&mut unit, m, parts::unit_parts(lane(&r, m)));
+            }
+            // SAFETY: as above; in another array than the inputs'.
+            let out = unsafe { &mut *block(lane0.transforms, o[3]) };
+            for (m, out) in out.iter_mut().enumerate() {
+                *out = Transform::new(t[m], Quat::from_array(lane(&unit, m)), s[m]);
+            }
+        }
         Op::BreakTransform => {
             lanes!(vec3s[1] = |; ref x: transforms[0]| x.translation);
             lanes!(quats[2] = |; ref x: transforms[0]| x.rotation);
@@ -500,8 +563,41 @@ pub(crate) unsafe fn run_wide(
         Op::MakeRelative => lanes!(n; transforms[2] = |a: transforms[0], b: transforms[1]|
             a.relative_to(&b)),
         Op::MakeAbsolute => lanes!(n; transforms[2] = |a: transforms[0], b: transforms[1]| b * a),
-        Op::RotateAroundPoint => lanes!(n; transforms[3] = |t: transforms[0]; ref p: vec3s[1],
-            r: quats[2]| k::rotate_around_point(t, p, r)),
+        Op::RotateAroundPoint => {
+            // `k::rotate_around_point` on component arrays: every input is read before the
+            // output (which may be the transform's block) is written.
+            // SAFETY: as in `lanes!`.
+            let (t, p, r) = unsafe {
+                (
+                    &*block(lane0.transforms, o[0]),
+                    &*block(lane0.vec3s, o[1]),
+                    &*block(lane0.quats, o[2]),
+                )
+            };
+            let position = columns(t, |t| t.translation.to_array());
+            let rotation = columns(t, |t| t.rotation.to_array());
+            let scale = columns(t, |t| t.scale.to_array());
+            let (p, r) = (columns(p, |p| p.to_array()), columns(r, |r| r.to_array()));
+            let (mut moved, mut turned) = ([[0.0; BATCH]; 3], [[0.0; BATCH]; 4]);
+            for m in 0..BATCH {
+                let r = parts::unit_parts(lane(&r, m));
+                let (x, pivot) = (lane(&position, m), lane(&p, m));
+                let arm = std::array::from_fn(|c| x[c] - pivot[c]);
+                let swung = parts::rotate_parts(r, arm);
+                set_lane(&mut moved, m, std::array::from_fn(|c| swung[c] + pivot[c]));
+                let q = parts::mul_parts(r, lane(&rotation, m));
+                set_lane(&mut turned, m, parts::unit_parts(q));
+            }
+            // SAFETY: as above.
+            let out = unsafe { &mut *block(lane0.transforms, o[3]) };
+            for (m, out) in out.iter_mut().enumerate() {
+                *out = Transform::new(
+                    Vec3::from_array(lane(&moved, m)),
+                    Quat::from_array(lane(&turned, m)),
+                    Vec3::from_array(lane(&scale, m)),
+                );
+            }
+        }
 
         Op::DeltaTime => {
             // SAFETY: as in `lanes!`.

@@ -3,6 +3,7 @@
 //! kernel fills a caller-owned buffer).
 
 pub mod locomotion;
+pub mod parts;
 pub mod spline;
 pub mod two_bone_ik;
 
@@ -157,12 +158,15 @@ pub fn unit_v(value: Vec3) -> Vec3 {
 #[must_use]
 #[inline]
 pub fn unit_q(value: Quat) -> Quat {
-    let len = value.length();
-    if len > 0.0 && len.is_finite() {
-        value / len
-    } else {
-        Quat::IDENTITY
-    }
+    Quat::from_array(parts::unit_parts(value.to_array()))
+}
+
+/// `rotation · vector`: `vector` (any unit) rotated by the unit `rotation`, as glam's
+/// `Quat * Vec3` computes it (a rotation of length `l` also scales by `l²`).
+#[must_use]
+#[inline]
+pub fn rotate_vector(rotation: Quat, vector: Vec3) -> Vec3 {
+    Vec3::from_array(parts::rotate_parts(rotation.to_array(), vector.to_array()))
 }
 
 /// Rotation of `degrees` about `axis`; identity for a zero axis.
@@ -234,10 +238,12 @@ pub fn find_bones(
 /// rotation, parent · child), the scale is kept.
 #[must_use]
 pub fn rotate_around_point(transform: Transform, pivot: Vec3, rotation: Quat) -> Transform {
-    let r = unit_q(rotation);
+    let r = parts::unit_parts(rotation.to_array());
+    let arm = (transform.translation - pivot).to_array();
+    let turned = parts::mul_parts(r, transform.rotation.to_array());
     Transform {
-        translation: r * (transform.translation - pivot) + pivot,
-        rotation: unit_q(r * transform.rotation),
+        translation: Vec3::from_array(parts::rotate_parts(r, arm)) + pivot,
+        rotation: Quat::from_array(parts::unit_parts(turned)),
         scale: transform.scale,
     }
 }
