@@ -67,7 +67,12 @@ mod tests {
 
     /// Rotations and vectors of every sort: axes, odd angles, tiny and huge components.
     fn samples() -> (Vec<[f32; 4]>, Vec<[f32; 3]>) {
-        let mut qs = vec![[0.0, 0.0, 0.0, 1.0], [1.0, 0.0, 0.0, 0.0]];
+        let mut qs = vec![
+            [0.0, 0.0, 0.0, 1.0],
+            [1.0, 0.0, 0.0, 0.0],
+            [0.3, -1.2, 2.0, 0.5],
+            [1e-20, 0.0, -3e-21, 1e-20],
+        ];
         let mut vs = vec![[0.0, 0.0, 0.0], [1e-30, -3.0, 7.5], [123.456, -0.001, 1e6]];
         for i in 0..40 {
             let t = i as f32 * 0.731;
