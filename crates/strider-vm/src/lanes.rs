@@ -266,6 +266,18 @@ pub(crate) unsafe fn run_wide(
             // SAFETY: as above.
             unsafe { *block(lane0.$out, o[$ko]) = result };
         }};
+        // The same for large outputs (transforms): written in place, lane by lane, rather
+        // than through a copy of the whole block (which pays off for small values only).
+        (n, in place; $out:ident[$ko:expr] = |$($x:ident: $a:ident[$k:expr]),+| $e:expr) => {{
+            // SAFETY: as above.
+            $(let $x = unsafe { *block(lane0.$a, o[$k]) };)+
+            // SAFETY: as above; the inputs are copies, so this is the only reference.
+            let out = unsafe { &mut *block(lane0.$out, o[$ko]) };
+            for (m, r) in out.iter_mut().enumerate().take(n) {
+                $(let $x = $x[m];)+
+                *r = $e;
+            }
+        }};
     }
     // The exponential lerps (operands: current, target, speed, result), whose weight
     // `exp_alpha(speed, dt)` is computed once for each run of members with the same speed
@@ -558,11 +570,15 @@ pub(crate) unsafe fn run_wide(
         Op::QuatScale => lanes!(n; quats[2] = |a: quats[0], f: floats[1]| k::quat_scale(a, f)),
         Op::FindQuatBetween => lanes!(n; quats[2] = |; ref a: vec3s[0], b: vec3s[1]|
             k::find_quat_between(a, b)),
-        Op::MulT => lanes!(n; transforms[2] = |a: transforms[0], b: transforms[1]| a * b),
-        Op::InverseT => lanes!(n; transforms[1] = |a: transforms[0]| a.inverse()),
-        Op::MakeRelative => lanes!(n; transforms[2] = |a: transforms[0], b: transforms[1]|
-            a.relative_to(&b)),
-        Op::MakeAbsolute => lanes!(n; transforms[2] = |a: transforms[0], b: transforms[1]| b * a),
+        Op::MulT => lanes!(n, in place; transforms[2] = |a: transforms[0], b: transforms[1]| a * b),
+        Op::InverseT => lanes!(n, in place; transforms[1] = |a: transforms[0]| a.inverse()),
+        Op::MakeRelative => {
+            lanes!(n, in place; transforms[2] = |a: transforms[0], b: transforms[1]|
+            a.relative_to(&b))
+        }
+        Op::MakeAbsolute => {
+            lanes!(n, in place; transforms[2] = |a: transforms[0], b: transforms[1]| b * a)
+        }
         Op::RotateAroundPoint => {
             // `k::rotate_around_point` on component arrays: every input is read before the
             // output (which may be the transform's block) is written.
