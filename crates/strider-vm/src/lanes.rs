@@ -559,8 +559,31 @@ pub(crate) unsafe fn run_wide(
         Op::ClampSpatially => lanes!(n; vec3s[4] = |v: vec3s[0], c: vec3s[1], lo: floats[2],
             hi: floats[3]| k::clamp_spatially(v, c, lo, hi)),
 
-        Op::QuatFromAxisAngle => lanes!(n; quats[2] = |; ref axis: vec3s[0], angle: floats[1]|
-            k::quat_from_axis_angle(axis, angle)),
+        Op::QuatFromAxisAngle => {
+            // Computed once for each run of members with the same axis and angle, bit for
+            // bit (a crowd's feet often rest at the same roll, usually 0°): the sine and
+            // cosine are most of the op.
+            // SAFETY: as in `lanes!`; the inputs are of other types than the output.
+            let (axis, angle, out) = unsafe {
+                (
+                    &*block(lane0.vec3s, o[0]),
+                    &*block(lane0.floats, o[1]),
+                    &mut *block(lane0.quats, o[2]),
+                )
+            };
+            let mut last: Option<([u32; 3], u32, Quat)> = None;
+            for (m, out) in out.iter_mut().enumerate().take(n) {
+                let key = (axis[m].to_array().map(f32::to_bits), angle[m].to_bits());
+                *out = match last {
+                    Some((a, g, q)) if (a, g) == key => q,
+                    _ => {
+                        let q = k::quat_from_axis_angle(axis[m], angle[m]);
+                        last = Some((key.0, key.1, q));
+                        q
+                    }
+                };
+            }
+        }
         Op::MulQ => lanes!(n; quats[2] = |a: quats[0], b: quats[1]| k::unit_q(a * b)),
         Op::InverseQ => lanes!(n; quats[1] = |a: quats[0]| k::unit_q(a).inverse()),
         Op::UnitQ => lanes!(n; quats[1] = |a: quats[0]| k::unit_q(a)),
@@ -922,6 +945,48 @@ mod tests {
                 want.to_array(),
                 "quat, member {m}"
             );
+        }
+    }
+
+    #[test]
+    fn axis_angle_rotations_are_reused_only_for_equal_axis_and_angle() {
+        const NAN: f32 = f32::NAN;
+        let angles: [f32; BATCH] = [
+            0.0, 0.0, 0.0, -0.0, -0.0, 30.0, 30.0, 30.0, NAN, NAN, 30.0, 1e30, 1e30, 0.0, 0.0, 0.0,
+        ];
+        let (z, x) = (Vec3::Z, Vec3::X);
+        let axes: [Vec3; BATCH] = [z, z, x, x, x, x, z, z, z, z, z, z, z, z, Vec3::ZERO, z];
+        let lens = ScalarLens([SLOTS; 6]);
+        // Vector 1 the axis, float 2 the angle, rotation 3 the result.
+        let mut members: Vec<Slots> = (0..BATCH)
+            .map(|m| {
+                let mut slots = member_slots(m);
+                slots.vec3s[1] = axes[m];
+                slots.floats[2] = angles[m];
+                slots
+            })
+            .collect();
+        let mut o = vec![1, 2, 3];
+        o.resize(o.len() + MAX_OPERANDS, 0);
+        let mut lanes = Lanes::default();
+        with_contexts(&mut members, |cxs| {
+            lanes.load(&lens, cxs);
+            // SAFETY: the operands are slots below `SLOTS` of the lanes loaded above.
+            assert!(unsafe {
+                run_wide(
+                    Op::QuatFromAxisAngle,
+                    &o,
+                    lanes.bases(),
+                    BATCH,
+                    &[0.0; BATCH],
+                )
+            });
+            lanes.store(&lens, cxs);
+        });
+        for (m, slots) in members.iter().enumerate() {
+            let want = k::quat_from_axis_angle(axes[m], angles[m]);
+            let got = slots.quats[3].to_array().map(f32::to_bits);
+            assert_eq!(got, want.to_array().map(f32::to_bits), "member {m}");
         }
     }
 
