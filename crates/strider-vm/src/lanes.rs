@@ -169,6 +169,40 @@ fn set_lane<const C: usize>(cols: &mut [[f32; BATCH]; C], m: usize, x: [f32; C])
     }
 }
 
+/// Bit-for-bit equality of lane values (`-0.0` differs from `0.0`; a NaN equals only the
+/// same NaN): two members with equal inputs in this sense get equal results from a kernel.
+trait SameBits {
+    fn same_bits(&self, other: &Self) -> bool;
+}
+
+impl SameBits for f32 {
+    #[inline(always)]
+    fn same_bits(&self, other: &Self) -> bool {
+        self.to_bits() == other.to_bits()
+    }
+}
+
+impl SameBits for i32 {
+    #[inline(always)]
+    fn same_bits(&self, other: &Self) -> bool {
+        self == other
+    }
+}
+
+impl SameBits for Vec3 {
+    #[inline(always)]
+    fn same_bits(&self, other: &Self) -> bool {
+        self.to_array().map(f32::to_bits) == other.to_array().map(f32::to_bits)
+    }
+}
+
+impl SameBits for Quat {
+    #[inline(always)]
+    fn same_bits(&self, other: &Self) -> bool {
+        self.to_array().map(f32::to_bits) == other.to_array().map(f32::to_bits)
+    }
+}
+
 /// Whether two blocks share no byte (blocks of different arrays never do).
 fn disjoint<T, U>(a: *mut [T; BATCH], b: *mut [U; BATCH]) -> bool {
     let (a0, b0) = (a as usize, b as usize);
@@ -266,8 +300,46 @@ pub(crate) unsafe fn run_wide(
             // SAFETY: as above.
             unsafe { *block(lane0.$out, o[$ko]) = result };
         }};
-        // The same for large outputs (transforms): written in place, lane by lane, rather
-        // than through a copy of the whole block (which pays off for small values only).
+        // For costly kernels: a member whose inputs equal the previous member's, bit for
+        // bit, takes its result instead of calling the kernel again (the kernels are pure,
+        // and a crowd's characters often feed them the same values: shared tunables,
+        // constant axes, feet at rest).
+        (n, shared; $out:ident[$ko:expr] = |; ref $($y:ident: $b:ident[$kb:expr]),+| $e:expr) => {{
+            $(
+                debug_assert!(disjoint(block(lane0.$b, o[$kb]), block(lane0.$out, o[$ko])));
+                // SAFETY: as above; in another array than the output's.
+                let $y = unsafe { &*block(lane0.$b, o[$kb]) };
+            )+
+            // SAFETY: as above; no input refers to this array.
+            let out = unsafe { &mut *block(lane0.$out, o[$ko]) };
+            for m in 0..n {
+                out[m] = if m > 0 $(&& $y[m].same_bits(&$y[m - 1]))+ {
+                    out[m - 1]
+                } else {
+                    $(let $y = $y[m];)+
+                    $e
+                };
+            }
+        }};
+        (n, shared; $out:ident[$ko:expr] = |$($x:ident: $a:ident[$k:expr]),+| $e:expr) => {{
+            // SAFETY: as above.
+            $(let $x = unsafe { *block(lane0.$a, o[$k]) };)+
+            // SAFETY: as above.
+            let mut result = unsafe { *block(lane0.$out, o[$ko]) };
+            for m in 0..n {
+                if m > 0 $(&& $x[m].same_bits(&$x[m - 1]))+ {
+                    result[m] = result[m - 1];
+                    continue;
+                }
+                $(let $x = $x[m];)+
+                result[m] = $e;
+            }
+            // SAFETY: as above.
+            unsafe { *block(lane0.$out, o[$ko]) = result };
+        }};
+        // The same as `n` for large outputs (transforms): written in place, lane by lane,
+        // rather than through a copy of the whole block (which pays off for small values
+        // only).
         (n, in place; $out:ident[$ko:expr] = |$($x:ident: $a:ident[$k:expr]),+| $e:expr) => {{
             // SAFETY: as above.
             $(let $x = unsafe { *block(lane0.$a, o[$k]) };)+
@@ -533,20 +605,22 @@ pub(crate) unsafe fn run_wide(
             arith!(ScaleV, 3);
         }
 
-        Op::SinF => lanes!(n; floats[1] = |a: floats[0]| k::sin_deg(a)),
-        Op::CosF => lanes!(n; floats[1] = |a: floats[0]| k::cos_deg(a)),
-        Op::TanF => lanes!(n; floats[1] = |a: floats[0]| k::tan_deg(a)),
-        Op::Atan2F => lanes!(n; floats[2] = |a: floats[0], b: floats[1]| k::atan2_deg(a, b)),
-        Op::PowF => lanes!(n; floats[2] = |a: floats[0], b: floats[1]| a.powf(b)),
-        Op::FmodF => lanes!(n; floats[2] = |a: floats[0], b: floats[1]| k::mod_f(a, b)),
-        Op::FractF => lanes!(n; floats[1] = |a: floats[0]| k::fract(a)),
+        Op::SinF => lanes!(n, shared; floats[1] = |a: floats[0]| k::sin_deg(a)),
+        Op::CosF => lanes!(n, shared; floats[1] = |a: floats[0]| k::cos_deg(a)),
+        Op::TanF => lanes!(n, shared; floats[1] = |a: floats[0]| k::tan_deg(a)),
+        Op::Atan2F => {
+            lanes!(n, shared; floats[2] = |a: floats[0], b: floats[1]| k::atan2_deg(a, b))
+        }
+        Op::PowF => lanes!(n, shared; floats[2] = |a: floats[0], b: floats[1]| a.powf(b)),
+        Op::FmodF => lanes!(n, shared; floats[2] = |a: floats[0], b: floats[1]| k::mod_f(a, b)),
+        Op::FractF => lanes!(n, shared; floats[1] = |a: floats[0]| k::fract(a)),
         Op::FloorF => lanes!(n; floats[1] = |a: floats[0]| a.floor()),
         Op::CeilF => lanes!(n; floats[1] = |a: floats[0]| a.ceil()),
         Op::RoundF => lanes!(n; floats[1] = |a: floats[0]| a.round()),
         Op::ToInt => lanes!(ints[1] = |a: floats[0]| k::to_int(a)),
         Op::MulI => lanes!(ints[2] = |a: ints[0], b: ints[1]| a.wrapping_mul(b)),
-        Op::DivI => lanes!(n; ints[2] = |a: ints[0], b: ints[1]| k::div_i(a, b)),
-        Op::ModI => lanes!(n; ints[2] = |a: ints[0], b: ints[1]| k::mod_i(a, b)),
+        Op::DivI => lanes!(n, shared; ints[2] = |a: ints[0], b: ints[1]| k::div_i(a, b)),
+        Op::ModI => lanes!(n, shared; ints[2] = |a: ints[0], b: ints[1]| k::mod_i(a, b)),
         Op::AbsI => lanes!(ints[1] = |a: ints[0]| a.wrapping_abs()),
         Op::NegI => lanes!(ints[1] = |a: ints[0]| a.wrapping_neg()),
         Op::ClampI => lanes!(ints[3] = |a: ints[0], lo: ints[1], hi: ints[2]| a.max(lo).min(hi)),
@@ -560,37 +634,18 @@ pub(crate) unsafe fn run_wide(
             hi: floats[3]| k::clamp_spatially(v, c, lo, hi)),
 
         Op::QuatFromAxisAngle => {
-            // Computed once for each run of members with the same axis and angle, bit for
-            // bit (a crowd's feet often rest at the same roll, usually 0°): the sine and
-            // cosine are most of the op.
-            // SAFETY: as in `lanes!`; the inputs are of other types than the output.
-            let (axis, angle, out) = unsafe {
-                (
-                    &*block(lane0.vec3s, o[0]),
-                    &*block(lane0.floats, o[1]),
-                    &mut *block(lane0.quats, o[2]),
-                )
-            };
-            let mut last: Option<([u32; 3], u32, Quat)> = None;
-            for (m, out) in out.iter_mut().enumerate().take(n) {
-                let key = (axis[m].to_array().map(f32::to_bits), angle[m].to_bits());
-                *out = match last {
-                    Some((a, g, q)) if (a, g) == key => q,
-                    _ => {
-                        let q = k::quat_from_axis_angle(axis[m], angle[m]);
-                        last = Some((key.0, key.1, q));
-                        q
-                    }
-                };
-            }
+            lanes!(n, shared; quats[2] = |; ref axis: vec3s[0], angle: floats[1]|
+            k::quat_from_axis_angle(axis, angle))
         }
-        Op::MulQ => lanes!(n; quats[2] = |a: quats[0], b: quats[1]| k::unit_q(a * b)),
+        Op::MulQ => lanes!(n, shared; quats[2] = |a: quats[0], b: quats[1]| k::unit_q(a * b)),
         Op::InverseQ => lanes!(n; quats[1] = |a: quats[0]| k::unit_q(a).inverse()),
         Op::UnitQ => lanes!(n; quats[1] = |a: quats[0]| k::unit_q(a)),
         Op::SlerpQ => {
-            lanes!(n; quats[3] = |a: quats[0], b: quats[1], t: floats[2]| k::slerp(a, b, t))
+            lanes!(n, shared; quats[3] = |a: quats[0], b: quats[1], t: floats[2]| k::slerp(a, b, t))
         }
-        Op::QuatScale => lanes!(n; quats[2] = |a: quats[0], f: floats[1]| k::quat_scale(a, f)),
+        Op::QuatScale => {
+            lanes!(n, shared; quats[2] = |a: quats[0], f: floats[1]| k::quat_scale(a, f))
+        }
         Op::FindQuatBetween => lanes!(n; quats[2] = |; ref a: vec3s[0], b: vec3s[1]|
             k::find_quat_between(a, b)),
         Op::MulT => lanes!(n, in place; transforms[2] = |a: transforms[0], b: transforms[1]| a * b),
@@ -791,12 +846,12 @@ mod tests {
 
     /// Runs `op` on `n` members lane-wide; `None` when it is not a wide op. The lanes hold
     /// other values beyond the members (as after a larger batch).
-    fn wide(op: Op, o: &[u32], n: usize) -> Option<Vec<Slots>> {
+    fn wide(op: Op, o: &[u32], n: usize, source: fn(usize) -> usize) -> Option<Vec<Slots>> {
         let lens = ScalarLens([SLOTS; 6]);
         let mut lanes = Lanes::default();
         let mut stale: Vec<Slots> = (0..BATCH).map(|m| member_slots(m + 100)).collect();
         with_contexts(&mut stale, |cxs| lanes.load(&lens, cxs));
-        let mut members: Vec<Slots> = (0..n).map(member_slots).collect();
+        let mut members: Vec<Slots> = (0..n).map(|m| member_slots(source(m))).collect();
         let mut ran = false;
         with_contexts(&mut members, |cxs| {
             lanes.load(&lens, cxs);
@@ -809,10 +864,10 @@ mod tests {
     }
 
     /// Runs `op` on each of `n` members alone, with the executor's handler.
-    fn alone(op: Op, o: &[u32], n: usize) -> Vec<Slots> {
+    fn alone(op: Op, o: &[u32], n: usize, source: fn(usize) -> usize) -> Vec<Slots> {
         (0..n)
             .map(|m| {
-                let mut slots = member_slots(m);
+                let mut slots = member_slots(source(m));
                 let mut pose = Pose::new(one_bone());
                 let mut debug = DebugDraw::new(false);
                 let mut cx = Ctx::for_test(&mut slots, &[], &mut pose, &mut debug, dt(m));
@@ -862,8 +917,14 @@ mod tests {
                 let Some(o) = operands(op, in_place) else {
                     continue;
                 };
-                for n in [BATCH, 5] {
-                    let Some(lanes) = wide(op, &o, n) else {
+                // Members with slots of their own, then members in runs with the same
+                // slots (kernels run once per run may not reuse a result across a change).
+                let sources: [fn(usize) -> usize; 2] = [
+                    |m| m,
+                    |m| [0, 0, 0, 3, 3, 2, 2, 2, 4, 4, 5, 3, 3, 1, 1, 1][m],
+                ];
+                for (n, source) in [(BATCH, sources[0]), (5, sources[0]), (BATCH, sources[1])] {
+                    let Some(lanes) = wide(op, &o, n, source) else {
                         continue;
                     };
                     // Only ops that compute scalar slots from scalar slots may run wide.
@@ -873,7 +934,7 @@ mod tests {
                             "{op:?} runs wide with operand {operand:?}"
                         );
                     }
-                    let reference = alone(op, &o, n);
+                    let reference = alone(op, &o, n, source);
                     for (m, (a, b)) in lanes.iter().zip(&reference).enumerate() {
                         assert!(
                             same_values(a, b),
@@ -881,7 +942,7 @@ mod tests {
                              the handler run alone"
                         );
                     }
-                    if !in_place && n == BATCH {
+                    if !in_place && n == BATCH && source(1) == 1 {
                         count += 1;
                     }
                 }
