@@ -182,6 +182,20 @@ impl SameBits for f32 {
     }
 }
 
+impl SameBits for Transform {
+    #[inline(always)]
+    fn same_bits(&self, other: &Self) -> bool {
+        self.bit_eq(other)
+    }
+}
+
+impl SameBits for bool {
+    #[inline(always)]
+    fn same_bits(&self, other: &Self) -> bool {
+        self == other
+    }
+}
+
 impl SameBits for i32 {
     #[inline(always)]
     fn same_bits(&self, other: &Self) -> bool {
@@ -693,6 +707,31 @@ pub(crate) unsafe fn run_wide(
             }
         }
 
+        Op::QuatFromEuler => lanes!(n, shared; quats[2] = |; ref euler: vec3s[0], order: ints[1]|
+            strider_core::euler::quat_from_euler(euler, k::euler_order(order))),
+        Op::EulerFromQuat => lanes!(n, shared; vec3s[2] = |; ref q: quats[0], order: ints[1]|
+            strider_core::euler::euler_from_quat(q, k::euler_order(order))),
+        Op::PerFootRotationFactor => lanes!(n, shared; floats[3] = |a: floats[0], b: floats[1],
+            c: floats[2]| loco::per_foot_rotation_factor(a, b, c)),
+        Op::LimitRotationAroundZ => lanes!(n, shared; quats[3] = |q: quats[0], a: floats[1],
+            b: floats[2]| loco::limit_rotation_around_z(q, a, b)),
+        Op::FootAvoidance => lanes!(n, shared; vec3s[5] = |a: vec3s[0], b: vec3s[1], c: floats[2],
+            d: bools[3], e: floats[4]| loco::foot_avoidance(a, b, c, d, e)),
+        Op::KneeVector => lanes!(n, shared; vec3s[5] = |a: quats[0], b: quats[1], c: vec3s[2],
+            d: floats[3], e: floats[4]| loco::knee_vector(a, b, c, d, e)),
+        Op::ClavicleOffset => lanes!(n, shared; floats[4] = |a: floats[0], b: floats[1], c: floats[2],
+            d: floats[3]| loco::clavicle_offset(a, b, c, d)),
+        Op::PelvisSideLean => lanes!(n, shared; floats[3] = |a: floats[0], b: floats[1], c: floats[2]|
+            loco::pelvis_side_lean(a, b, c)),
+        Op::FootOffsetFromTrace => lanes!(n, shared; floats[3] = |hit: bools[0], a: floats[1],
+            b: floats[2]| loco::foot_offset_from_trace(hit, a, b)),
+        Op::ArmSwingRotation => lanes!(n, shared; floats[13] = |a: floats[0], b: vec3s[1],
+            c: quats[2], d: floats[3], e: floats[4], f: floats[5], g: floats[6], h: floats[7],
+            i: floats[8], j: floats[9], l: floats[10], m2: floats[11], p: floats[12]|
+            loco::arm_swing_pitch(a, b, c, d, e, f, g, h, i, j, l, m2, p)),
+        Op::AlignToNormal => lanes!(n, shared; transforms[4] = |t: transforms[0], axis: vec3s[1],
+            normal: vec3s[2], weight: floats[3]| k::aim(t, axis, normal, weight)),
+
         Op::DeltaTime => {
             // SAFETY: as in `lanes!`.
             unsafe { *block(lane0.floats, o[0]) = *dts };
@@ -948,8 +987,8 @@ mod tests {
                 }
             }
         }
-        // The 121 ops `run_wide` has arms for (a miss here means `every_op` lacks one).
-        assert_eq!(count, 121);
+        // The 132 ops `run_wide` has arms for (a miss here means `every_op` lacks one).
+        assert_eq!(count, 132);
     }
 
     /// The exponential lerps compute their weight once per run of members with the same
