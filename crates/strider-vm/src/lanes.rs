@@ -335,17 +335,21 @@ pub(crate) unsafe fn run_wide(
                 };
             }
         }};
-        (n, shared; $out:ident[$ko:expr] = |$($x:ident: $a:ident[$k:expr]),+| $e:expr) => {{
+        (n, shared; $out:ident[$ko:expr] = |$($x:ident: $a:ident[$k:expr]),+ $(; $dt:ident)?| $e:expr) => {{
             // SAFETY: as above.
             $(let $x = unsafe { *block(lane0.$a, o[$k]) };)+
             // SAFETY: as above.
             let mut result = unsafe { *block(lane0.$out, o[$ko]) };
             for m in 0..n {
-                if m > 0 $(&& $x[m].same_bits(&$x[m - 1]))+ {
+                if m > 0
+                    $(&& $x[m].same_bits(&$x[m - 1]))+
+                    $(&& { stringify!($dt); dts[m].same_bits(&dts[m - 1]) })?
+                {
                     result[m] = result[m - 1];
                     continue;
                 }
                 $(let $x = $x[m];)+
+                $(let $dt = dts[m];)?
                 result[m] = $e;
             }
             // SAFETY: as above.
@@ -719,10 +723,17 @@ pub(crate) unsafe fn run_wide(
             d: bools[3], e: floats[4]| loco::foot_avoidance(a, b, c, d, e)),
         Op::KneeVector => lanes!(n, shared; vec3s[5] = |a: quats[0], b: quats[1], c: vec3s[2],
             d: floats[3], e: floats[4]| loco::knee_vector(a, b, c, d, e)),
-        Op::ClavicleOffset => lanes!(n, shared; floats[4] = |a: floats[0], b: floats[1], c: floats[2],
-            d: floats[3]| loco::clavicle_offset(a, b, c, d)),
-        Op::PelvisSideLean => lanes!(n, shared; floats[3] = |a: floats[0], b: floats[1], c: floats[2]|
-            loco::pelvis_side_lean(a, b, c)),
+        Op::MovementAngleOffset => lanes!(n, shared; floats[8] = |velocity: vec3s[0], a: floats[1],
+            b: floats[2], c: floats[3], d: floats[4], e: floats[5], f: floats[6], g: floats[7]; dt|
+            loco::get_movement_angle_offset(velocity, a, b, dt, c, d, e, f, g)),
+        Op::ClavicleOffset => {
+            lanes!(n, shared; floats[4] = |a: floats[0], b: floats[1], c: floats[2],
+            d: floats[3]| loco::clavicle_offset(a, b, c, d))
+        }
+        Op::PelvisSideLean => {
+            lanes!(n, shared; floats[3] = |a: floats[0], b: floats[1], c: floats[2]|
+            loco::pelvis_side_lean(a, b, c))
+        }
         Op::FootOffsetFromTrace => lanes!(n, shared; floats[3] = |hit: bools[0], a: floats[1],
             b: floats[2]| loco::foot_offset_from_trace(hit, a, b)),
         Op::ArmSwingRotation => lanes!(n, shared; floats[13] = |a: floats[0], b: vec3s[1],
@@ -885,31 +896,44 @@ mod tests {
 
     /// Runs `op` on `n` members lane-wide; `None` when it is not a wide op. The lanes hold
     /// other values beyond the members (as after a larger batch).
-    fn wide(op: Op, o: &[u32], n: usize, source: fn(usize) -> usize) -> Option<Vec<Slots>> {
+    fn wide(op: Op, o: &[u32], n: usize, source: Source) -> Option<Vec<Slots>> {
         let lens = ScalarLens([SLOTS; 6]);
         let mut lanes = Lanes::default();
         let mut stale: Vec<Slots> = (0..BATCH).map(|m| member_slots(m + 100)).collect();
         with_contexts(&mut stale, |cxs| lanes.load(&lens, cxs));
-        let mut members: Vec<Slots> = (0..n).map(|m| member_slots(source(m))).collect();
+        let mut members: Vec<Slots> = (0..n).map(|m| member_slots((source.slots)(m))).collect();
         let mut ran = false;
         with_contexts(&mut members, |cxs| {
             lanes.load(&lens, cxs);
             // SAFETY: the operands are slots below `SLOTS` of the lanes loaded above.
-            let dts = std::array::from_fn(|m| if m < n { dt(m) } else { 7.0 });
+            let dts = std::array::from_fn(|m| if m < n { dt((source.dt)(m)) } else { 7.0 });
             ran = unsafe { run_wide(op, o, lanes.bases(), n, &dts) };
             lanes.store(&lens, cxs);
         });
         ran.then_some(members)
     }
 
+    /// Which member's slots ([`member_slots`]) and time step ([`dt`]) each member gets.
+    #[derive(Clone, Copy)]
+    struct Source {
+        slots: fn(usize) -> usize,
+        dt: fn(usize) -> usize,
+    }
+
+    /// Members in runs: 0, 0, 0, 3, 3, 2, 2, 2, … (a run may come back to an earlier value).
+    fn run(m: usize) -> usize {
+        [0, 0, 0, 3, 3, 2, 2, 2, 4, 4, 5, 3, 3, 1, 1, 1][m]
+    }
+
     /// Runs `op` on each of `n` members alone, with the executor's handler.
-    fn alone(op: Op, o: &[u32], n: usize, source: fn(usize) -> usize) -> Vec<Slots> {
+    fn alone(op: Op, o: &[u32], n: usize, source: Source) -> Vec<Slots> {
         (0..n)
             .map(|m| {
-                let mut slots = member_slots(source(m));
+                let mut slots = member_slots((source.slots)(m));
                 let mut pose = Pose::new(one_bone());
                 let mut debug = DebugDraw::new(false);
-                let mut cx = Ctx::for_test(&mut slots, &[], &mut pose, &mut debug, dt(m));
+                let dt = dt((source.dt)(m));
+                let mut cx = Ctx::for_test(&mut slots, &[], &mut pose, &mut debug, dt);
                 // SAFETY: the operands are slots below `SLOTS`, which the slots have.
                 unsafe { step(op, o, &mut cx, 1) };
                 slots
@@ -956,13 +980,22 @@ mod tests {
                 let Some(o) = operands(op, in_place) else {
                     continue;
                 };
-                // Members with slots of their own, then members in runs with the same
-                // slots (kernels run once per run may not reuse a result across a change).
-                let sources: [fn(usize) -> usize; 2] = [
-                    |m| m,
-                    |m| [0, 0, 0, 3, 3, 2, 2, 2, 4, 4, 5, 3, 3, 1, 1, 1][m],
-                ];
-                for (n, source) in [(BATCH, sources[0]), (5, sources[0]), (BATCH, sources[1])] {
+                // Members with slots and time steps of their own; members in runs with
+                // the same slots and time steps; the same slots but time steps of their
+                // own (kernels run once per run may not reuse a result across a change).
+                let own = Source {
+                    slots: |m| m,
+                    dt: |m| m,
+                };
+                let runs = Source {
+                    slots: run,
+                    dt: run,
+                };
+                let own_dt = Source {
+                    slots: run,
+                    dt: |m| m,
+                };
+                for (n, source) in [(BATCH, own), (5, own), (BATCH, runs), (BATCH, own_dt)] {
                     let Some(lanes) = wide(op, &o, n, source) else {
                         continue;
                     };
@@ -981,14 +1014,14 @@ mod tests {
                              the handler run alone"
                         );
                     }
-                    if !in_place && n == BATCH && source(1) == 1 {
+                    if !in_place && n == BATCH && (source.slots)(1) == 1 {
                         count += 1;
                     }
                 }
             }
         }
-        // The 132 ops `run_wide` has arms for (a miss here means `every_op` lacks one).
-        assert_eq!(count, 132);
+        // The 133 ops `run_wide` has arms for (a miss here means `every_op` lacks one).
+        assert_eq!(count, 133);
     }
 
     /// The exponential lerps compute their weight once per run of members with the same
