@@ -667,6 +667,31 @@ impl<'a> Gen<'a> {
         self.avail[frame].clone()
     }
 
+    /// Whether running `body` (nested lists included) in `frame` may change the value at
+    /// `src`: a variable or local it sets or edits in place, any graph variable after an
+    /// impure call, an exec node's outputs when the body runs it, anything when a mutating
+    /// node edits a pure node's output in place. Constants and function inputs never
+    /// change while a body runs.
+    fn body_may_change(&mut self, frame: usize, src: &Src, body: &[CStep]) -> bool {
+        let mut writes = Writes::default();
+        writes.collect(self.body(frame), body);
+        writes.everything
+            || match src {
+                Src::Global(g) => writes.any_global || writes.vars.contains(&VarRef::Global(*g)),
+                Src::Local(l) => writes.vars.contains(&VarRef::Local(*l)),
+                Src::Node { node, .. } => {
+                    // An exec node the body runs; a pure node the body may emit again into
+                    // the same slots, after changing what it reads.
+                    let (checked, function) = (self.checked, self.frames[frame].body);
+                    writes.execs.contains(node)
+                        || (self.body(frame).nodes[*node].pure
+                            && writes.touch(self.reads.node(checked, function, *node)))
+                }
+                Src::Input(_) | Src::Const { .. } => false,
+                Src::Loop { .. } => true,
+            }
+    }
+
     /// Forgets the kept values of `frame` that `writes` may change.
     fn forget(&mut self, frame: usize, writes: &Writes) {
         let (checked, body) = (self.checked, self.frames[frame].body);
@@ -841,7 +866,14 @@ impl<'a> Gen<'a> {
                     let l = &self.frames[frame].loops[*lp];
                     (l.counter, l.element, l.index, l.count, l.snapshot)
                 };
-                self.pb.emit(Op::Copy(items.ty), &[source, arr]);
+                // The loop walks its own copy of the array only if the body could change the
+                // array it iterates; otherwise the array itself.
+                let arr = if self.body_may_change(frame, &items.src, body) {
+                    self.pb.emit(Op::Copy(items.ty), &[source, arr]);
+                    arr
+                } else {
+                    source
+                };
                 self.pb.emit(Op::Copy(ValueType::Int), &[zero, counter]);
                 let keep = self.enter_loop(frame, body);
                 let head = self.pb.here();
@@ -1243,6 +1275,49 @@ mod tests {
         // iteration (3 × 400); the last iteration's index is 2.
         assert_eq!(get("Sum"), Value::Float(1200.0));
         assert_eq!(get("Last"), Value::Float(402.0));
+    }
+
+    /// A ForEach walks a copy of its array only when its body could change the array: here
+    /// the first loop's body sets only a float, the second's appends to the array it walks.
+    const SNAPSHOTS: &str = r#"Graph(
+        version: 1,
+        name: "snapshots",
+        variables: {
+            "Items": (type: FloatArray, default: [1.0, 2.0, 3.0]),
+            "Grow":  (type: FloatArray, default: [1.0]),
+            "Sum":   (type: Float),
+        },
+        nodes: {
+            "sum": Add(a: var("Sum"), b: "x"),
+        },
+        events: {
+            forward: [
+                Set("Sum", 0.0),
+                ForEach(items: var("Items"), element: "x", body: [ Set("Sum", "sum") ]),
+                ForEach(items: var("Grow"), element: "g", body: [
+                    Append(array: var("Grow"), value: 2.0),
+                ]),
+            ],
+        },
+    )"#;
+
+    #[test]
+    fn a_loop_copies_its_array_only_when_its_body_may_change_it() {
+        use strider_nodes::{Elem, Op};
+        let program = crate::compile_str(Path::new("snapshots.ron"), SNAPSHOTS).expect("compiles");
+        let copies = program
+            .code()
+            .iter()
+            .filter(|i| i.op == Op::Copy(ValueType::Array(Elem::Float)))
+            .count();
+        assert_eq!(copies, 1, "only the loop over Grow copies its array");
+        let mut instance = Instance::new(Arc::new(program.clone()), skeleton()).expect("instance");
+        instance.run_forward(&FrameInput::default(), &EmptyWorld, false);
+        let get = |name: &str| instance.variable(program.variable_id(name).expect(name));
+        assert_eq!(get("Sum"), Value::Float(6.0));
+        // The loop over Grow ran once, for the one item it had when it started.
+        let grown = Value::Array(Elem::Float, vec![Value::Float(1.0), Value::Float(2.0)]);
+        assert_eq!(get("Grow"), grown);
     }
 
     /// A mutating node edits only its array target in place: a scalar it reads, from a
