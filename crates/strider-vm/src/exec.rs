@@ -1014,7 +1014,8 @@ pub(crate) const BATCH: usize = 16;
 /// For a program with at least two instructions per scalar slot ([`lanes_pay_off`]), the
 /// members' scalar slots are worked on in this thread's lanes ([`crate::lanes`]): copied
 /// in first (slots `0..lens` of each type, the program's lengths), back when every member
-/// has ended; smaller programs run on each member's own slots. While the whole batch is at
+/// has ended (slots `0..written`: those past it no instruction writes); smaller programs
+/// run on each member's own slots. While the whole batch is at
 /// one instruction, a plain scalar op runs on all lanes at once ([`crate::lanes::run_wide`])
 /// and a jump that every member takes, or none, moves the batch without visiting its members.
 ///
@@ -1029,6 +1030,7 @@ pub(crate) fn run_batch(
     operands: &[u32],
     entry: u32,
     lens: &ScalarLens,
+    written: &ScalarLens,
     members: &mut [Ctx<'_>],
 ) -> usize {
     let n = members.len();
@@ -1038,13 +1040,31 @@ pub(crate) fn run_batch(
     }
     if !lanes_pay_off(code.len(), lens) {
         // No lanes: the empty scratch is never loaded.
-        return run_group::<false>(code, operands, entry, lens, members, &mut Lanes::default());
+        return run_group::<false>(
+            code,
+            operands,
+            entry,
+            lens,
+            written,
+            members,
+            &mut Lanes::default(),
+        );
     }
     LANES.with(|cell| match cell.try_borrow_mut() {
-        Ok(mut lanes) => run_group::<true>(code, operands, entry, lens, members, &mut lanes),
+        Ok(mut lanes) => {
+            run_group::<true>(code, operands, entry, lens, written, members, &mut lanes)
+        }
         // A batch run from inside another one on this thread (a world query that runs a
         // rig of its own): lanes of its own, allocated for this run.
-        Err(_) => run_group::<true>(code, operands, entry, lens, members, &mut Lanes::default()),
+        Err(_) => run_group::<true>(
+            code,
+            operands,
+            entry,
+            lens,
+            written,
+            members,
+            &mut Lanes::default(),
+        ),
     })
 }
 
@@ -1065,6 +1085,7 @@ fn run_group<const LANES: bool>(
     operands: &[u32],
     entry: u32,
     lens: &ScalarLens,
+    written: &ScalarLens,
     members: &mut [Ctx<'_>],
     lanes: &mut Lanes,
 ) -> usize {
@@ -1234,7 +1255,7 @@ fn run_group<const LANES: bool>(
             let least = pcs[..n].iter().copied().min().unwrap_or(END);
             if least == END {
                 if LANES {
-                    lanes.store(lens, members);
+                    lanes.store(written, members);
                 }
                 return dispatches;
             }
@@ -1546,6 +1567,7 @@ mod tests {
                 &program.operands,
                 program.forward,
                 &program.scalar_lens,
+                &program.written_lens,
                 &mut members,
             );
             return (n, Vec::new());
@@ -1555,6 +1577,7 @@ mod tests {
             &program.operands,
             program.forward,
             &program.scalar_lens,
+            &program.written_lens,
             &mut members,
             &mut Lanes::default(),
         );

@@ -412,6 +412,7 @@ impl Instance {
                         &p.operands,
                         p.forward,
                         &p.scalar_lens,
+                        &p.written_lens,
                         &mut members,
                     );
                 }

@@ -225,6 +225,10 @@ pub struct Program {
     /// The lengths of `initial`'s scalar arrays, which cover every scalar slot operand (see
     /// [`ProgramBuilder::finish`]).
     pub(crate) scalar_lens: ScalarLens,
+    /// Per scalar type, one past the highest slot any instruction writes: the slots from
+    /// there on (constants, variables only the host sets) hold the same value before and
+    /// after every run, so a batch need not copy them back (slot sharing puts them last).
+    pub(crate) written_lens: ScalarLens,
     /// The program's [`fingerprint`](crate::native::fingerprint), computed the first time
     /// it is asked for (checking generated code against it) and kept: every instance of
     /// a crowd shares the program, so it is computed once, not once per instance.
@@ -373,6 +377,7 @@ impl ProgramBuilder {
                 second_origins: Vec::new(),
                 pin_slots: Vec::new(),
                 scalar_lens: ScalarLens::default(),
+                written_lens: ScalarLens::default(),
                 fingerprint: std::sync::OnceLock::new(),
             },
             current_origin: None,
@@ -590,6 +595,25 @@ impl ProgramBuilder {
             crate::fusion::fuse(p);
         }
         p.scalar_lens = ScalarLens::of(&p.initial);
+        p.written_lens = written_lens(p);
         self.program
     }
+}
+
+/// One past the highest slot of each scalar type that an instruction of `p` writes.
+fn written_lens(p: &Program) -> ScalarLens {
+    let mut lens = ScalarLens::default();
+    for instr in &p.code {
+        let layout = instr.op.operands().unwrap_or_default();
+        for (k, operand) in layout.into_iter().enumerate() {
+            if let Operand::Slot(ty, access) = operand
+                && access != strider_nodes::Access::Read
+                && let Some(t) = crate::slots::SCALAR_TYPES.iter().position(|&x| x == ty)
+            {
+                let slot = p.operands[instr.args as usize + k] as usize;
+                lens.0[t] = lens.0[t].max(slot + 1);
+            }
+        }
+    }
+    lens
 }

@@ -342,8 +342,17 @@ pub(crate) fn share(program: &mut Program, layouts: &[Vec<Operand>]) {
         },
     );
 
-    // New slots, per type: the kept ones first in their old order, then the shared ones
-    // by greedy interval partitioning; a slot coalesced into another takes that one's.
+    // Whether some instruction writes each slot once copies are coalesced: a slot written
+    // itself, or one a written slot was merged into.
+    let mut written_after = written.clone();
+    for id in written.ones() {
+        written_after.insert(group[id] as usize);
+    }
+
+    // New slots, per type: the kept ones that instructions write first, in their old
+    // order, then the shared ones by greedy interval partitioning, then the kept ones no
+    // instruction writes (constants, variables only the host sets: a batch copies them
+    // into its lanes but never back); a slot coalesced into another takes that one's.
     let mut map = vec![u32::MAX; n_ids];
     let mut occupants: Vec<Vec<u32>> = Vec::with_capacity(6);
     let mut after = [0; 6];
@@ -351,7 +360,10 @@ pub(crate) fn share(program: &mut Program, layouts: &[Vec<Operand>]) {
         let range = ids.base[t]..ids.base[t + 1];
         let mut count = 0u32;
         let mut held = Vec::new();
-        for id in range.clone().filter(|&id| kept.contains(id)) {
+        for id in range
+            .clone()
+            .filter(|&id| kept.contains(id) && written_after.contains(id))
+        {
             map[id] = count;
             held.push(1);
             count += 1;
@@ -378,6 +390,14 @@ pub(crate) fn share(program: &mut Program, layouts: &[Vec<Operand>]) {
             };
             map[id] = slot;
             busy.push(Reverse((hi[id], slot)));
+        }
+        for id in range
+            .clone()
+            .filter(|&id| kept.contains(id) && !written_after.contains(id))
+        {
+            map[id] = count;
+            held.push(1);
+            count += 1;
         }
         for id in range.filter(|&id| group[id] != id as u32) {
             map[id] = map[group[id] as usize];
@@ -644,5 +664,57 @@ pub(crate) fn remove_instructions(
     if !program.second_origins.is_empty() {
         let mut pc = 0;
         program.second_origins.retain(|_| keep(&mut pc));
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use crate::ProgramBuilder;
+    use strider_nodes::{Op, Value, ValueType};
+
+    /// The slots no instruction writes come after every written one, so a batch copies
+    /// back only `0..written_lens`: here two constants and a state carried from frame to
+    /// frame among three temporaries.
+    #[test]
+    fn slots_no_instruction_writes_come_last() {
+        let mut pb = ProgramBuilder::new("order");
+        let two = pb.constant(&Value::Float(2.0), "");
+        let three = pb.constant(&Value::Float(3.0), "");
+        let state = pb.alloc(ValueType::Float);
+        let (a, b, c) = (
+            pb.alloc(ValueType::Float),
+            pb.alloc(ValueType::Float),
+            pb.alloc(ValueType::Float),
+        );
+        pb.set_construction_entry(pb.here());
+        pb.emit(Op::End, &[]);
+        pb.set_forward_entry(pb.here());
+        pb.emit(Op::AddF, &[two, three, a]);
+        pb.emit(Op::MulF, &[a, state, b]);
+        pb.emit(Op::AddF, &[b, two, c]);
+        pb.emit(Op::AddF, &[c, state, state]);
+        pb.emit(Op::End, &[]);
+        let program = pb.finish_sharing_slots();
+        let float = 2;
+        let (all, written) = (program.scalar_lens.0[float], program.written_lens.0[float]);
+        assert_eq!(
+            all - written,
+            2,
+            "the two constants, after everything written"
+        );
+        for (instr, layout) in program.code.iter().map(|i| (i, i.op.operands().unwrap())) {
+            for (k, operand) in layout.iter().enumerate() {
+                let slot = program.operands[instr.args as usize + k] as usize;
+                match operand {
+                    strider_nodes::Operand::Slot(ValueType::Float, strider_nodes::Access::Read) => {
+                        assert!(slot < all)
+                    }
+                    strider_nodes::Operand::Slot(ValueType::Float, _) => assert!(slot < written),
+                    _ => {}
+                }
+            }
+        }
+        let values = &program.initial.floats[written..];
+        assert!(values.contains(&2.0) && values.contains(&3.0));
     }
 }
