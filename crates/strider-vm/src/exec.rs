@@ -117,35 +117,14 @@ macro_rules! by_elem {
 /// one per batch member.
 macro_rules! with_elem {
     ($e:expr, $c:ident => $body:expr) => {
+        with_elem!(@each $e, $c, $body, Bool Int Float Vec3 Quat Transform Bone)
+    };
+    (@each $e:expr, $c:ident, $body:expr, $($v:ident)+) => {
         match $e {
-            Elem::Bool => {
-                const $c: Elem = Elem::Bool;
+            $(Elem::$v => {
+                const $c: Elem = Elem::$v;
                 $body
-            }
-            Elem::Int => {
-                const $c: Elem = Elem::Int;
-                $body
-            }
-            Elem::Float => {
-                const $c: Elem = Elem::Float;
-                $body
-            }
-            Elem::Vec3 => {
-                const $c: Elem = Elem::Vec3;
-                $body
-            }
-            Elem::Quat => {
-                const $c: Elem = Elem::Quat;
-                $body
-            }
-            Elem::Transform => {
-                const $c: Elem = Elem::Transform;
-                $body
-            }
-            Elem::Bone => {
-                const $c: Elem = Elem::Bone;
-                $body
-            }
+            })+
         }
     };
 }
