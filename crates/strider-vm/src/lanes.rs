@@ -355,6 +355,32 @@ pub(crate) unsafe fn run_wide(
             // SAFETY: as above.
             unsafe { *block(lane0.$out, o[$ko]) = result };
         }};
+        // `n, shared` for kernels with several results, `(value => output slot)` each, in
+        // the kernel's order. The outputs are distinct slots in a program (they may share
+        // one in the op test, where the last write wins, as in the handler), so they are
+        // written through pointers.
+        (n, shared; ($($r:ident => $out:ident[$ko:expr]),+) = |$($x:ident: $a:ident[$k:expr]),+ $(; $dt:ident)?| $e:expr) => {{
+            // SAFETY: as above.
+            $(let $x = unsafe { *block(lane0.$a, o[$k]) };)+
+            for m in 0..n {
+                if m > 0
+                    $(&& $x[m].same_bits(&$x[m - 1]))+
+                    $(&& { stringify!($dt); dts[m].same_bits(&dts[m - 1]) })?
+                {
+                    // SAFETY: as above; `m < n <= BATCH`.
+                    $(unsafe {
+                        let out = block(lane0.$out, o[$ko]);
+                        (*out)[m] = (*out)[m - 1];
+                    })+
+                    continue;
+                }
+                $(let $x = $x[m];)+
+                $(let $dt = dts[m];)?
+                let ($($r,)+) = $e;
+                // SAFETY: as above.
+                $(unsafe { (*block(lane0.$out, o[$ko]))[m] = $r };)+
+            }
+        }};
         // The same as `n` for large outputs (transforms): written in place, lane by lane,
         // rather than through a copy of the whole block (which pays off for small values
         // only).
@@ -727,6 +753,19 @@ pub(crate) unsafe fn run_wide(
         Op::MovementAngleOffset => lanes!(n, shared; floats[8] = |velocity: vec3s[0], a: floats[1],
             b: floats[2], c: floats[3], d: floats[4], e: floats[5], f: floats[6], g: floats[7]; dt|
             loco::get_movement_angle_offset(velocity, a, b, dt, c, d, e, f, g)),
+        Op::FootPivots => lanes!(n, shared; (ball => vec3s[6], tip => vec3s[7], heel => vec3s[8]) =
+            |a: vec3s[0], b: vec3s[1], c: floats[2], d: floats[3], e: floats[4], f: floats[5]|
+            loco::foot_pivots(a, b, c, d, e, f)),
+        Op::PelvisLean => lanes!(n, shared; (pitch => floats[4], shift => floats[5]) =
+            |v: vec3s[0], a: floats[1], b: floats[2], c: floats[3]| loco::pelvis_lean(v, a, b, c)),
+        Op::RotationFromNormal => lanes!(n, shared; (pitch => floats[1], roll => floats[2],
+        q => quats[3]) = |normal: vec3s[0]| {
+            let (pitch, roll) = loco::rotation_from_normal(normal);
+            (pitch, roll, loco::rotation_from_normal_quat(normal))
+        }),
+        Op::CycleStep => lanes!(n, shared; (master => floats[4], per_foot => floats[5]) =
+            |a: floats[0], b: floats[1], c: floats[2], d: bools[3]; dt|
+            loco::cycle_step(a, dt, b, c, d)),
         Op::ClavicleOffset => {
             lanes!(n, shared; floats[4] = |a: floats[0], b: floats[1], c: floats[2],
             d: floats[3]| loco::clavicle_offset(a, b, c, d))
@@ -1021,8 +1060,8 @@ mod tests {
                 }
             }
         }
-        // The 133 ops `run_wide` has arms for (a miss here means `every_op` lacks one).
-        assert_eq!(count, 133);
+        // The 137 ops `run_wide` has arms for (a miss here means `every_op` lacks one).
+        assert_eq!(count, 137);
     }
 
     /// The exponential lerps compute their weight once per run of members with the same
