@@ -1029,21 +1029,15 @@ pub(crate) fn run_batch(
             &mut Lanes::default(),
         );
     }
-    LANES.with(|cell| match cell.try_borrow_mut() {
-        Ok(mut lanes) => {
-            run_group::<true>(code, operands, entry, lens, written, members, &mut lanes)
-        }
+    LANES.with(|cell| {
         // A batch run from inside another one on this thread (a world query that runs a
-        // rig of its own): lanes of its own, allocated for this run.
-        Err(_) => run_group::<true>(
-            code,
-            operands,
-            entry,
-            lens,
-            written,
-            members,
-            &mut Lanes::default(),
-        ),
+        // rig of its own) gets lanes of its own, allocated for this run.
+        let (mut thread_lanes, mut own) = (cell.try_borrow_mut().ok(), None);
+        let lanes = match thread_lanes.as_deref_mut() {
+            Some(lanes) => lanes,
+            None => own.insert(Lanes::default()),
+        };
+        run_group::<true>(code, operands, entry, lens, written, members, lanes)
     })
 }
 
