@@ -647,34 +647,38 @@ impl<'a> Gen<'a> {
     /// iteration can change (they read no loop variable, nothing the body writes, and no
     /// stateful node, whose state must advance where the graph evaluates it), and keeps
     /// only the values the body cannot change. Returns those values: they hold in every
-    /// iteration and after the loop, however many times it runs.
-    fn enter_loop(&mut self, frame: usize, body: &[CStep]) -> FxHashSet<usize> {
+    /// iteration and after the loop, however many times it runs. `writes` is what the body
+    /// may change ([`Gen::writes_of`]).
+    fn enter_loop(&mut self, frame: usize, body: &[CStep], writes: &Writes) -> FxHashSet<usize> {
         let checked = self.checked;
         let function = self.frames[frame].body;
         let frame_body = match function {
             None => &checked.graph,
             Some(f) => &checked.functions[f],
         };
-        let mut writes = Writes::default();
-        writes.collect(frame_body, body);
         for n in pulled_by(frame_body, body) {
             let r = self.reads.node(checked, function, n);
             if !r.loop_vars && !r.stateful && !writes.touch(r) {
                 self.pure_closure(frame, n);
             }
         }
-        self.forget(frame, &writes);
+        self.forget(frame, writes);
         self.avail[frame].clone()
     }
 
-    /// Whether running `body` (nested lists included) in `frame` may change the value at
-    /// `src`: a variable or local it sets or edits in place, any graph variable after an
-    /// impure call, an exec node's outputs when the body runs it, anything when a mutating
-    /// node edits a pure node's output in place. Constants and function inputs never
-    /// change while a body runs.
-    fn body_may_change(&mut self, frame: usize, src: &Src, body: &[CStep]) -> bool {
+    /// What running `steps` (nested lists included) in `frame` may change.
+    fn writes_of(&self, frame: usize, steps: &[CStep]) -> Writes {
         let mut writes = Writes::default();
-        writes.collect(self.body(frame), body);
+        writes.collect(self.body(frame), steps);
+        writes
+    }
+
+    /// Whether a body of `frame` that may change `writes` ([`Gen::writes_of`]) may change
+    /// the value at `src`: a variable or local it sets or edits in place, any graph
+    /// variable after an impure call, an exec node's outputs when the body runs it,
+    /// anything when a mutating node edits a pure node's output in place. Constants and
+    /// function inputs never change while a body runs.
+    fn body_may_change(&mut self, frame: usize, src: &Src, writes: &Writes) -> bool {
         writes.everything
             || match src {
                 Src::Global(g) => writes.any_global || writes.vars.contains(&VarRef::Global(*g)),
@@ -704,8 +708,7 @@ impl<'a> Gen<'a> {
     /// edits in place, the pose if it may move bones, and after an impure call any graph
     /// variable and the pose.
     fn forget_written_by(&mut self, frame: usize, step: &CStep) {
-        let mut writes = Writes::default();
-        writes.collect(self.body(frame), std::slice::from_ref(step));
+        let writes = self.writes_of(frame, std::slice::from_ref(step));
         self.forget(frame, &writes);
     }
 
@@ -868,14 +871,15 @@ impl<'a> Gen<'a> {
                 };
                 // The loop walks its own copy of the array only if the body could change the
                 // array it iterates; otherwise the array itself.
-                let arr = if self.body_may_change(frame, &items.src, body) {
+                let writes = self.writes_of(frame, body);
+                let arr = if self.body_may_change(frame, &items.src, &writes) {
                     self.pb.emit(Op::Copy(items.ty), &[source, arr]);
                     arr
                 } else {
                     source
                 };
                 self.pb.emit(Op::Copy(ValueType::Int), &[zero, counter]);
-                let keep = self.enter_loop(frame, body);
+                let keep = self.enter_loop(frame, body, &writes);
                 let head = self.pb.here();
                 let next = self.pb.emit(
                     Op::ForEachNext(elem),
@@ -900,7 +904,8 @@ impl<'a> Gen<'a> {
                 };
                 self.pb.emit(Op::Copy(ValueType::Int), &[source, n]);
                 self.pb.emit(Op::Copy(ValueType::Int), &[zero, counter]);
-                let keep = self.enter_loop(frame, body);
+                let writes = self.writes_of(frame, body);
+                let keep = self.enter_loop(frame, body, &writes);
                 let head = self.pb.here();
                 let next = self.pb.emit(Op::ForNext, &[counter, n, index, 0]);
                 let body_doc: &[Step] = match doc {

@@ -203,19 +203,18 @@ impl SameBits for i32 {
     }
 }
 
-impl SameBits for Vec3 {
-    #[inline(always)]
-    fn same_bits(&self, other: &Self) -> bool {
-        self.to_array().map(f32::to_bits) == other.to_array().map(f32::to_bits)
-    }
+/// Vectors and rotations: every component's bits.
+macro_rules! same_components {
+    ($($t:ty),+) => {$(
+        impl SameBits for $t {
+            #[inline(always)]
+            fn same_bits(&self, other: &Self) -> bool {
+                self.to_array().map(f32::to_bits) == other.to_array().map(f32::to_bits)
+            }
+        }
+    )+};
 }
-
-impl SameBits for Quat {
-    #[inline(always)]
-    fn same_bits(&self, other: &Self) -> bool {
-        self.to_array().map(f32::to_bits) == other.to_array().map(f32::to_bits)
-    }
-}
+same_components!(Vec3, Quat);
 
 /// Whether two blocks share no byte (blocks of different arrays never do).
 fn disjoint<T, U>(a: *mut [T; BATCH], b: *mut [U; BATCH]) -> bool {
@@ -758,8 +757,8 @@ pub(crate) unsafe fn run_wide(
             loco::foot_pivots(a, b, c, d, e, f)),
         Op::PelvisLean => lanes!(n, shared; (pitch => floats[4], shift => floats[5]) =
             |v: vec3s[0], a: floats[1], b: floats[2], c: floats[3]| loco::pelvis_lean(v, a, b, c)),
-        Op::RotationFromNormal => lanes!(n, shared; (pitch => floats[1], roll => floats[2],
-        q => quats[3]) = |normal: vec3s[0]| {
+        Op::RotationFromNormal => lanes!(n, shared;
+        (pitch => floats[1], roll => floats[2], q => quats[3]) = |normal: vec3s[0]| {
             let (pitch, roll) = loco::rotation_from_normal(normal);
             (pitch, roll, loco::rotation_from_normal_quat(normal))
         }),

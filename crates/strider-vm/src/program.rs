@@ -608,7 +608,7 @@ fn written_lens(p: &Program) -> ScalarLens {
         for (k, operand) in layout.into_iter().enumerate() {
             if let Operand::Slot(ty, access) = operand
                 && access != strider_nodes::Access::Read
-                && let Some(t) = crate::slots::SCALAR_TYPES.iter().position(|&x| x == ty)
+                && let Some(t) = crate::slots::scalar(ty)
             {
                 let slot = p.operands[instr.args as usize + k] as usize;
                 lens.0[t] = lens.0[t].max(slot + 1);

@@ -47,16 +47,11 @@
 //! are `fixedbitset`'s.
 
 use crate::program::{Instr, PinSlot, Program};
-use crate::slots::{SCALAR_TYPES, ScalarLens, Slots};
+use crate::slots::{SCALAR_TYPES, ScalarLens, Slots, scalar};
 use fixedbitset::FixedBitSet;
 use std::cmp::Reverse;
 use std::collections::BinaryHeap;
 use strider_nodes::{Access, Op, Operand, ValueType};
-
-/// Position of `ty` in [`SCALAR_TYPES`].
-fn scalar(ty: ValueType) -> Option<usize> {
-    SCALAR_TYPES.iter().position(|&t| t == ty)
-}
 
 /// Every scalar slot of the program numbered in one range: type `t`'s slot `s` is
 /// `base[t] + s`.
@@ -358,15 +353,17 @@ pub(crate) fn share(program: &mut Program, layouts: &[Vec<Operand>]) {
     let mut after = [0; 6];
     for (t, slots) in after.iter_mut().enumerate() {
         let range = ids.base[t]..ids.base[t + 1];
-        let mut count = 0u32;
-        let mut held = Vec::new();
+        // Per new slot, how many old slots it holds; a new slot is the next index.
+        let mut held: Vec<u32> = Vec::new();
+        let new_slot = |held: &mut Vec<u32>| {
+            held.push(1);
+            held.len() as u32 - 1
+        };
         for id in range
             .clone()
             .filter(|&id| kept.contains(id) && written_after.contains(id))
         {
-            map[id] = count;
-            held.push(1);
-            count += 1;
+            map[id] = new_slot(&mut held);
         }
         let mut shared: Vec<usize> = range
             .clone()
@@ -382,11 +379,7 @@ pub(crate) fn share(program: &mut Program, layouts: &[Vec<Operand>]) {
                     held[slot as usize] += 1;
                     slot
                 }
-                _ => {
-                    held.push(1);
-                    count += 1;
-                    count - 1
-                }
+                _ => new_slot(&mut held),
             };
             map[id] = slot;
             busy.push(Reverse((hi[id], slot)));
@@ -395,9 +388,7 @@ pub(crate) fn share(program: &mut Program, layouts: &[Vec<Operand>]) {
             .clone()
             .filter(|&id| kept.contains(id) && !written_after.contains(id))
         {
-            map[id] = count;
-            held.push(1);
-            count += 1;
+            map[id] = new_slot(&mut held);
         }
         for id in range.filter(|&id| group[id] != id as u32) {
             map[id] = map[group[id] as usize];
@@ -405,7 +396,7 @@ pub(crate) fn share(program: &mut Program, layouts: &[Vec<Operand>]) {
                 held[map[id] as usize] += 1;
             }
         }
-        *slots = count as usize;
+        *slots = held.len();
         occupants.push(held);
     }
 

@@ -56,6 +56,11 @@ pub(crate) const SCALAR_TYPES: [ValueType; 6] = [
     ValueType::Transform,
 ];
 
+/// Position of `ty` in [`SCALAR_TYPES`] (`None` for bones, names and arrays).
+pub(crate) fn scalar(ty: ValueType) -> Option<usize> {
+    SCALAR_TYPES.iter().position(|&t| t == ty)
+}
+
 impl ScalarLens {
     /// The lengths of `slots`' scalar arrays.
     pub(crate) fn of(slots: &Slots) -> Self {
