@@ -702,8 +702,9 @@ impl Collider {
         radius: f32,
         stop_at_penetration: bool,
     ) -> Option<Option<SweepHit>> {
-        match &self.form {
-            &Form::HalfSpace { point, normal } => Some(
+        // A half-space (the ground under most traces) inline; the bounded shapes out of line.
+        if let Form::HalfSpace { point, normal } = self.form {
+            return Some(
                 ball_half_space_sweep(
                     start,
                     dir,
@@ -714,7 +715,23 @@ impl Collider {
                     stop_at_penetration,
                 )
                 .map(|distance| SweepHit { distance, normal }),
-            ),
+            );
+        }
+        self.ball_sweep_bounded(start, dir, length, radius)
+    }
+
+    /// [`Collider::ball_sweep`] for the shapes other than a half-space (with
+    /// `stop_at_penetration`: their closed forms leave a ball starting in them to parry3d).
+    #[inline(never)]
+    fn ball_sweep_bounded(
+        &self,
+        start: Vec3,
+        dir: Vec3,
+        length: f32,
+        radius: f32,
+    ) -> Option<Option<SweepHit>> {
+        match &self.form {
+            Form::HalfSpace { .. } | Form::Other => None,
             &Form::Box { half } => {
                 let (local_start, local_dir) = self.to_local(start, dir);
                 self.found(ball_box_sweep(local_start, local_dir, length, radius, half))
@@ -749,8 +766,69 @@ impl Collider {
                     planes,
                 ))
             }
-            Form::Other => None,
         }
+    }
+
+    /// `shape` (at `start`, not rotated) swept along `along` against this shape by
+    /// parry3d's general cast, keeping `skin` from its surface: the hit, if any, with a
+    /// unit normal (`−dir` where the cast gives none). Out of line: the closed forms answer
+    /// the common traces.
+    #[cold]
+    #[inline(never)]
+    fn cast(
+        &self,
+        shape: &dyn Shape,
+        start: Vec3,
+        along: Along,
+        skin: f32,
+        stop_at_penetration: bool,
+    ) -> Option<SweepHit> {
+        let options = ShapeCastOptions {
+            max_time_of_impact: along.length,
+            target_distance: skin,
+            stop_at_penetration,
+            compute_impact_geometry_on_penetration: true,
+        };
+        let hit = cast_shapes(
+            &Pose::from_translation(start),
+            along.dir,
+            shape,
+            &self.pose,
+            Vec3::ZERO,
+            self.shape.as_ref(),
+            options,
+        )
+        .ok()??;
+        let mut normal = -hit.normal1;
+        if !normal.is_finite() || normal.length_squared() < 1e-12 {
+            normal = -along.dir;
+        } else {
+            normal = normal.normalize();
+        }
+        Some(SweepHit {
+            distance: hit.time_of_impact.max(0.0),
+            normal,
+        })
+    }
+
+    /// The ray from `ray.origin` along the unit `ray.dir` for `length` against this solid
+    /// shape (world space): the distance to the first hit and the normal there, zero for a
+    /// ray starting inside. A half-space is answered in closed form (parry3d's formula, in
+    /// world space), the rest by parry3d.
+    #[inline]
+    fn ray(&self, ray: &Ray, length: f32) -> Option<(f32, Vec3)> {
+        if let Form::HalfSpace { point, normal } = self.form {
+            // Height of the start above the plane; below it, the ray starts inside.
+            let height = normal.dot(ray.origin - point);
+            if height < 0.0 {
+                return Some((0.0, Vec3::ZERO));
+            }
+            let t = height / -normal.dot(ray.dir);
+            return (t >= 0.0 && t <= length).then_some((t, normal));
+        }
+        self.shape
+            .cast_ray_and_get_normal(&self.pose, ray, length, true)
+            .map(|hit| (hit.time_of_impact, hit.normal))
     }
 
     /// A world-space point and unit direction in this shape's own frame.
@@ -1101,7 +1179,8 @@ impl World {
 
     /// [`World::sweep`] with its delta's direction and length known (`along`), and
     /// `ball_radius` the radius when `shape` is a ball swept without skin (which the
-    /// closed forms answer).
+    /// closed forms answer). Inlined into the sphere trace, where `shape` is a ball.
+    #[inline(always)]
     fn sweep_along(
         &self,
         shape: &dyn Shape,
@@ -1122,45 +1201,21 @@ impl World {
                 .loosened(skin.max(0.0))
         };
         let mut best: Option<SweepHit> = None;
-        for collider in self.colliders.iter().filter(|c| c.near(&reach)) {
+        for collider in &self.colliders {
+            if !collider.near(&reach) {
+                continue;
+            }
             let closed_form = ball_radius
                 .and_then(|r| collider.ball_sweep(start, dir, length, r, stop_at_penetration));
-            if let Some(found) = closed_form {
-                if let Some(hit) = found
-                    && best.is_none_or(|b| hit.distance < b.distance)
-                {
-                    best = Some(hit);
-                }
-                continue;
-            }
-            let options = ShapeCastOptions {
-                max_time_of_impact: length,
-                target_distance: skin,
-                stop_at_penetration,
-                compute_impact_geometry_on_penetration: true,
+            let found = match closed_form {
+                Some(found) => found,
+                None => collider.cast(shape, start, along, skin, stop_at_penetration),
             };
-            let Ok(Some(hit)) = cast_shapes(
-                &Pose::from_translation(start),
-                dir,
-                shape,
-                &collider.pose,
-                Vec3::ZERO,
-                collider.shape.as_ref(),
-                options,
-            ) else {
-                continue;
-            };
-            let distance = hit.time_of_impact.max(0.0);
-            if best.is_some_and(|b| distance >= b.distance) {
-                continue;
+            if let Some(hit) = found
+                && best.is_none_or(|b| hit.distance < b.distance)
+            {
+                best = Some(hit);
             }
-            let mut normal = -hit.normal1;
-            if !normal.is_finite() || normal.length_squared() < 1e-12 {
-                normal = -dir;
-            } else {
-                normal = normal.normalize();
-            }
-            best = Some(SweepHit { distance, normal });
         }
         best
     }
@@ -1212,14 +1267,14 @@ impl WorldQuery for World {
         let ray = Ray::new(start, dir);
         let reach = Aabb::new(start.min(end), start.max(end));
         let mut best: Option<(f32, Vec3)> = None;
-        for collider in self.colliders.iter().filter(|c| c.near(&reach)) {
-            if let Some(hit) =
-                collider
-                    .shape
-                    .cast_ray_and_get_normal(&collider.pose, &ray, length, true)
-                && best.is_none_or(|(d, _)| hit.time_of_impact < d)
+        for collider in &self.colliders {
+            if !collider.near(&reach) {
+                continue;
+            }
+            if let Some((d, normal)) = collider.ray(&ray, length)
+                && best.is_none_or(|(b, _)| d < b)
             {
-                best = Some((hit.time_of_impact, hit.normal));
+                best = Some((d, normal));
             }
         }
         let (distance, normal) = best?;
@@ -1248,7 +1303,9 @@ impl WorldQuery for World {
     /// is a line trace; a negative or non-finite radius, or non-finite ends, miss. A
     /// zero-length sweep reports an overlap at the start, if any.
     fn sphere_trace(&self, start: Vec3, end: Vec3, radius: f32) -> Option<TraceHit> {
-        if !(radius.is_finite() && radius >= 0.0 && start.is_finite() && end.is_finite()) {
+        // `x − x` is 0 for every finite `x` and NaN otherwise: one test for all seven.
+        let finite = (start - start) + (end - end) + (radius - radius);
+        if !(finite == Vec3::ZERO && radius >= 0.0) {
             return None;
         }
         if radius == 0.0 {

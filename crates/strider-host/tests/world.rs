@@ -377,6 +377,68 @@ fn sphere_traces_onto_the_ground_agree_with_parry3d() {
     );
 }
 
+#[test]
+fn line_traces_onto_the_ground_agree_with_parry3d() {
+    // The world answers rays against the ground in closed form; parry3d's ray cast on a
+    // solid half-space is the independent reference, on 2000 random segments (some start
+    // under the ground, some point up, some stop short of it, some run level).
+    use parry3d::math::Pose;
+    use parry3d::query::{Ray, RayCast};
+    use parry3d::shape::HalfSpace;
+    let height = -7.25;
+    let w = world("(shapes: [Ground(height: -7.25)])");
+    let ground = Pose::from_translation(Vec3::new(0.0, 0.0, height));
+    let half_space = HalfSpace::new(Vec3::Z);
+    let mut next = uniform(0x9e37_79b9);
+    let (mut hits, mut inside) = (0, 0);
+    for k in 0..2000 {
+        let start = Vec3::new(
+            next() * 200.0 - 100.0,
+            next() * 200.0 - 100.0,
+            next() * 120.0 - 30.0,
+        );
+        let mut delta = Vec3::new(
+            next() * 60.0 - 30.0,
+            next() * 60.0 - 30.0,
+            next() * 200.0 - 150.0,
+        );
+        if k % 50 == 0 {
+            delta.z = 0.0; // level: never reaches the plane from above
+        }
+        let end = start + delta;
+        let length = delta.length();
+        let ours = w.line_trace(start, end);
+        let ray = Ray::new(start, delta / length);
+        let reference = half_space.cast_ray_and_get_normal(&ground, &ray, length, true);
+        match (ours, reference) {
+            (Some(hit), Some(r)) => {
+                hits += 1;
+                assert!(
+                    near(hit.distance, r.time_of_impact, 1e-3),
+                    "{hit:?} vs {r:?}"
+                );
+                assert_vec_near(hit.point, start + ray.dir * r.time_of_impact, 1e-3);
+                if r.time_of_impact == 0.0 {
+                    // Starting in the solid: the normal faces back along the ray.
+                    inside += 1;
+                    assert_vec_near(hit.normal, -ray.dir, 1e-6);
+                } else {
+                    assert_vec_near(hit.normal, Vec3::Z, 1e-6);
+                    assert!(near(hit.point.z, height, 1e-3), "{hit:?}");
+                }
+            }
+            (None, None) => {}
+            (ours, reference) => {
+                panic!("start {start} end {end}: ours {ours:?}, parry3d {reference:?}")
+            }
+        }
+    }
+    assert!(
+        hits > 300 && hits < 1900 && inside > 50,
+        "{hits} hits, {inside} from inside: the segments should mix all cases"
+    );
+}
+
 /// A small deterministic generator of floats in [0, 1) for the random sweeps.
 fn uniform(seed: u32) -> impl FnMut() -> f32 {
     let mut seed = seed;
