@@ -1304,6 +1304,7 @@ impl WorldQuery for World {
     /// zero-length sweep reports an overlap at the start, if any.
     fn sphere_trace(&self, start: Vec3, end: Vec3, radius: f32) -> Option<TraceHit> {
         // `x − x` is 0 for every finite `x` and NaN otherwise: one test for all seven.
+        #[allow(clippy::eq_op)]
         let finite = (start - start) + (end - end) + (radius - radius);
         if !(finite == Vec3::ZERO && radius >= 0.0) {
             return None;
