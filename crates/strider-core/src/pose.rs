@@ -1,8 +1,9 @@
 //! [`Pose`]: a skeleton's current local and global transforms.
 //!
 //! Locals are the source of truth. Globals are cached and recomputed lazily: changing a
-//! local marks the bone's subtree dirty (a contiguous range, thanks to the skeleton's
-//! depth-first order), and reading a global recomputes only the dirty chain above it.
+//! local marks the bone's subtree stale (a contiguous range, thanks to the skeleton's
+//! depth-first order), and reading a global recomputes only the stale chain above it.
+//! The stale flags are a bit set: marking a subtree is a few word operations.
 //! Nothing here allocates after [`Pose::new`].
 
 use crate::skeleton::{BoneIndex, Skeleton};
@@ -15,7 +16,8 @@ pub struct Pose {
     skeleton: Arc<Skeleton>,
     locals: Vec<Transform>,
     globals: Vec<Transform>,
-    dirty: Vec<bool>,
+    /// Bit `i % 64` of word `i / 64`: bone `i`'s global is stale.
+    stale: Vec<u64>,
 }
 
 impl Pose {
@@ -24,7 +26,7 @@ impl Pose {
     #[must_use]
     pub fn heap_bytes(&self) -> usize {
         (self.locals.capacity() + self.globals.capacity()) * std::mem::size_of::<Transform>()
-            + self.dirty.capacity()
+            + self.stale.capacity() * std::mem::size_of::<u64>()
     }
 
     /// The rest pose of `skeleton`.
@@ -32,12 +34,12 @@ impl Pose {
     pub fn new(skeleton: Arc<Skeleton>) -> Self {
         let locals = skeleton.rest_locals().to_vec();
         let globals = skeleton.rest_globals().to_vec();
-        let dirty = vec![false; locals.len()];
+        let stale = vec![0; locals.len().div_ceil(64)];
         Self {
             skeleton,
             locals,
             globals,
-            dirty,
+            stale,
         }
     }
 
@@ -63,7 +65,7 @@ impl Pose {
     pub fn reset_to_rest(&mut self) {
         self.locals.copy_from_slice(self.skeleton.rest_locals());
         self.globals.copy_from_slice(self.skeleton.rest_globals());
-        self.dirty.fill(false);
+        self.stale.fill(0);
     }
 
     /// Replaces all locals (storage order, as [`Skeleton::names`]). Extra entries are
@@ -71,7 +73,7 @@ impl Pose {
     pub fn set_locals(&mut self, locals: &[Transform]) {
         let n = self.locals.len().min(locals.len());
         self.locals[..n].copy_from_slice(&locals[..n]);
-        self.dirty.fill(true);
+        self.mark_stale(0, self.locals.len());
     }
 
     /// A bone's transform relative to its parent.
@@ -91,14 +93,38 @@ impl Pose {
         let i = bone.get();
         self.locals[i] = local;
         let end = self.skeleton.subtree_end(bone);
-        self.dirty[i..end].fill(true);
+        self.mark_stale(i, end);
+    }
+
+    /// Whether bone `i`'s global is stale.
+    #[inline]
+    fn is_stale(&self, i: usize) -> bool {
+        self.stale[i / 64] & (1 << (i % 64)) != 0
+    }
+
+    /// Marks bone `i`'s global current.
+    #[inline]
+    fn mark_current(&mut self, i: usize) {
+        self.stale[i / 64] &= !(1 << (i % 64));
+    }
+
+    /// Marks the globals of bones `from..to` stale.
+    #[inline]
+    fn mark_stale(&mut self, from: usize, to: usize) {
+        let mut i = from;
+        while i < to {
+            let bit = i % 64;
+            let n = (to - i).min(64 - bit);
+            self.stale[i / 64] |= (u64::MAX >> (64 - n)) << bit;
+            i += n;
+        }
     }
 
     /// A bone's rig-space transform, recomputing stale ancestors first.
     #[inline]
     pub fn global(&mut self, bone: BoneIndex) -> Transform {
         let i = bone.get();
-        if self.dirty[i] {
+        if self.is_stale(i) {
             self.refresh(bone);
         }
         self.globals[i]
@@ -113,7 +139,7 @@ impl Pose {
             None => self.locals[i],
         };
         self.globals[i] = g;
-        self.dirty[i] = false;
+        self.mark_current(i);
     }
 
     /// Sets a bone's rig-space transform.
@@ -135,10 +161,10 @@ impl Pose {
         };
         self.locals[i] = local;
         self.globals[i] = global;
-        self.dirty[i] = false;
+        self.mark_current(i);
         if propagate_to_children {
             let end = self.skeleton.subtree_end(bone);
-            self.dirty[i + 1..end].fill(true);
+            self.mark_stale(i + 1, end);
         } else {
             for &c in self.skeleton.children(bone) {
                 let ci = c.get();
@@ -150,14 +176,14 @@ impl Pose {
     /// Brings every global up to date and returns them all (storage order).
     pub fn globals(&mut self) -> &[Transform] {
         for i in 0..self.globals.len() {
-            if self.dirty[i] {
+            if self.is_stale(i) {
                 let bone = BoneIndex(i as u32);
                 self.globals[i] = match self.skeleton.parent(bone) {
                     // Parents come first in storage order, so theirs is already fresh.
                     Some(p) => self.globals[p.get()] * self.locals[i],
                     None => self.locals[i],
                 };
-                self.dirty[i] = false;
+                self.mark_current(i);
             }
         }
         &self.globals
@@ -238,6 +264,68 @@ mod tests {
         let all = a.globals().to_vec();
         for (i, g) in all.iter().enumerate() {
             assert_eq!(*g, b.global(BoneIndex(i as u32)));
+        }
+    }
+
+    /// A tree of 150 bones in depth-first order: a spine of 100 (each 1 cm above its
+    /// parent) and a branch of 50 off bone 40 (each 1 cm along +X), so subtrees span the
+    /// stale flags' 64-bone words.
+    fn long_tree() -> Arc<Skeleton> {
+        let b = |i: usize, parent: Option<usize>, t: Vec3| Bone {
+            name: format!("b{i}"),
+            parent: parent.map(|p| format!("b{p}")),
+            rest_local: Transform::from_translation(t),
+        };
+        let mut bones = vec![b(0, None, Vec3::ZERO)];
+        for i in 1..=40 {
+            bones.push(b(i, Some(i - 1), Vec3::Z));
+        }
+        // The branch right after bone 40 (depth-first), then the spine goes on from 40.
+        bones.push(b(41, Some(40), Vec3::X));
+        for i in 42..91 {
+            bones.push(b(i, Some(i - 1), Vec3::X));
+        }
+        bones.push(b(91, Some(40), Vec3::Z));
+        for i in 92..150 {
+            bones.push(b(i, Some(i - 1), Vec3::Z));
+        }
+        Arc::new(Skeleton::new(bones).unwrap())
+    }
+
+    #[test]
+    fn stale_flags_across_words_follow_every_subtree() {
+        let s = long_tree();
+        let up = |cm: f32| Transform::from_translation(Vec3::new(0.0, 0.0, cm));
+        for bone in [0, 1, 40, 41, 63, 64, 90, 91, 127, 128, 149] {
+            let at = BoneIndex(bone);
+            let mut lazy = Pose::new(s.clone());
+            let _ = lazy.globals();
+            lazy.set_local(at, lazy.local(at) * up(1000.0));
+            // Every bone of the subtree moved up 1000 cm, every other bone stayed: read
+            // lazily, one by one, in reverse storage order.
+            let end = s.subtree_end(at);
+            for i in (0..150).rev() {
+                let rest = s.rest_global(BoneIndex(i as u32)).translation;
+                let moved = (bone as usize..end).contains(&i);
+                let want = rest + Vec3::Z * if moved { 1000.0 } else { 0.0 };
+                let got = lazy.global(BoneIndex(i as u32)).translation;
+                assert!((got - want).length() < 1e-3, "bone {i} after {bone}: {got}");
+            }
+            // Set globally with propagation: the subtree follows, the rest stays.
+            let mut set = Pose::new(s.clone());
+            let g = set.global(at);
+            set.set_global(at, up(-500.0) * g, true);
+            let all = set.clone().globals().to_vec();
+            for (i, g) in all.iter().enumerate() {
+                let rest = s.rest_global(BoneIndex(i as u32)).translation;
+                let moved = (bone as usize..end).contains(&i);
+                let want = rest - Vec3::Z * if moved { 500.0 } else { 0.0 };
+                assert!(
+                    (g.translation - want).length() < 1e-3,
+                    "bone {i} set at {bone}"
+                );
+                assert_eq!(*g, set.global(BoneIndex(i as u32)));
+            }
         }
     }
 }

@@ -30,7 +30,7 @@
 use crate::lanes::{LANES, Lanes};
 use crate::program::{Instr, Program};
 use crate::slots::{ScalarLens, Slots};
-use glam::{Quat, Vec3};
+use glam::{Affine3A, Quat, Vec3};
 use strider_core::{BoneIndex, DebugColor, DebugDraw, DebugPrimitive, Pose, Transform, WorldQuery};
 use strider_nodes::kernels as k;
 use strider_nodes::kernels::locomotion as loco;
@@ -48,8 +48,12 @@ pub(crate) struct Ctx<'a> {
     pub world: &'a dyn WorldQuery,
     pub dt: f32,
     pub to_world: Transform,
-    /// `to_world.inverse()`, computed once per run (traces bring hits back to rig space).
-    pub from_world: Transform,
+    /// `to_world` as a matrix ([`Transform::to_affine`]), computed once per run: traces
+    /// map their ends to world space.
+    pub to_world_matrix: Affine3A,
+    /// `to_world.inverse()` as a matrix, computed once per run: traces bring hits back to
+    /// rig space.
+    pub from_world_matrix: Affine3A,
     /// Number of this run (construction or frame), never 0: stateful nodes advance once per
     /// run and remember the run they last advanced in.
     pub run: i32,
@@ -77,7 +81,8 @@ impl<'a> Ctx<'a> {
             world: &strider_core::EmptyWorld,
             dt,
             to_world: Transform::IDENTITY,
-            from_world: Transform::IDENTITY,
+            to_world_matrix: Affine3A::IDENTITY,
+            from_world_matrix: Affine3A::IDENTITY,
             run: 1,
             #[cfg(feature = "profile")]
             profile: None,
@@ -591,23 +596,26 @@ macro_rules! execute {
             Op::LineTrace | Op::SphereTrace => $each!({
                 let (start, end) = (v!(0), v!(1));
                 let (ws, we) = (
-                    $cx.to_world.transform_point(start),
-                    $cx.to_world.transform_point(end),
+                    $cx.to_world_matrix.transform_point3(start),
+                    $cx.to_world_matrix.transform_point3(end),
                 );
                 let (hit, outs) = if op == Op::LineTrace {
                     ($cx.world.line_trace(ws, we), 2)
                 } else {
                     ($cx.world.sphere_trace(ws, we, f!(2).max(0.0)), 3)
                 };
+                // `x − x` is 0 for a finite `x`, NaN otherwise: one test for all seven.
+                #[allow(clippy::eq_op)]
                 let hit = hit.filter(|h| {
-                    h.point.is_finite() && h.normal.is_finite() && h.distance.is_finite()
+                    (h.point - h.point) + (h.normal - h.normal) + (h.distance - h.distance)
+                        == Vec3::ZERO
                 });
                 match hit {
                     Some(h) => {
-                        let from_world = $cx.from_world;
+                        let from_world = &$cx.from_world_matrix;
                         b!(outs) = true;
-                        v!(outs + 1) = from_world.transform_point(h.point);
-                        v!(outs + 2) = k::unit_v(from_world.transform_vector(h.normal));
+                        v!(outs + 1) = from_world.transform_point3(h.point);
+                        v!(outs + 2) = k::unit_v(from_world.transform_vector3(h.normal));
                         f!(outs + 3) = h.distance;
                     }
                     None => {
@@ -1167,14 +1175,16 @@ fn run_group<const LANES: bool>(
                 }
                 Op::JumpIfFalse => {
                     // SAFETY: operand 0 is a bool slot (the op's layout).
-                    let held = unsafe { crate::lanes::bools(lane0, o[0]) };
-                    if held[..n].iter().all(|&h| h) {
-                        pc += 1;
-                        continue;
-                    }
-                    if held[..n].iter().all(|&h| !h) {
-                        pc = o[1] as usize;
-                        continue;
+                    match unsafe { crate::lanes::agree(lane0, o[0], n) } {
+                        Some(true) => {
+                            pc += 1;
+                            continue;
+                        }
+                        Some(false) => {
+                            pc = o[1] as usize;
+                            continue;
+                        }
+                        None => {}
                     }
                 }
                 // SAFETY: an instruction of the program whose slots the lanes hold.

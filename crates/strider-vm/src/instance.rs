@@ -454,7 +454,8 @@ impl Instance {
             world,
             dt,
             to_world: self.to_world,
-            from_world: self.to_world.inverse(),
+            to_world_matrix: self.to_world.to_affine(),
+            from_world_matrix: self.to_world.inverse().to_affine(),
             run: next_run(&mut self.runs),
             #[cfg(feature = "profile")]
             profile: self.profiling.then_some(&mut self.profile[..]),

@@ -222,14 +222,26 @@ fn disjoint<T, U>(a: *mut [T; BATCH], b: *mut [U; BATCH]) -> bool {
     a0 + size_of::<[T; BATCH]>() <= b0 || b0 + size_of::<[U; BATCH]>() <= a0
 }
 
-/// The block of [`BATCH`] lanes of bool slot `slot`.
+/// Whether the first `n` lanes of bool slot `slot` all hold `true` (`Some(true)`), all
+/// hold `false` (`Some(false)`) or differ (`None`).
 ///
 /// # Safety
 /// `slot` must be a bool slot of the program the lanes at `lane0` are loaded for.
 #[inline(always)]
-pub(crate) unsafe fn bools(lane0: Bases, slot: u32) -> [bool; BATCH] {
+pub(crate) unsafe fn agree(lane0: Bases, slot: u32, n: usize) -> Option<bool> {
     // SAFETY: in the lanes by the caller's contract.
-    unsafe { *block(lane0.bools, slot) }
+    let held: [bool; BATCH] = unsafe { *block(lane0.bools, slot) };
+    // A bool is one byte, 0 or 1: the block is tested as one 128-bit word, its first `n`
+    // bytes kept.
+    let word = u128::from_le_bytes(held.map(u8::from));
+    let kept = u128::MAX
+        .checked_shr(8 * (BATCH - n.min(BATCH)) as u32)
+        .unwrap_or(0);
+    match word & kept {
+        0 => Some(false),
+        w if w == 0x0101_0101_0101_0101_0101_0101_0101_0101 & kept => Some(true),
+        _ => None,
+    }
 }
 
 /// Runs `op` (operands `o`) on every lane of the batch whose member 0's lane is `lane0`,
@@ -810,6 +822,43 @@ mod tests {
 
     /// Slots per scalar type in the tests' memory: every operand index stays below it.
     const SLOTS: usize = 16;
+
+    #[test]
+    fn lanes_agree_only_when_every_member_holds_the_same_bool() {
+        let mut lanes = Lanes {
+            bools: vec![false; 2 * BATCH],
+            ..Lanes::default()
+        };
+        let set = |lanes: &mut Lanes, slot: usize, held: &[bool]| {
+            lanes.bools[slot * BATCH..(slot + 1) * BATCH].copy_from_slice(held);
+        };
+        let agree = |lanes: &mut Lanes, slot: u32, n: usize| {
+            // SAFETY: slots 0 and 1 are in the lanes.
+            unsafe { agree(lanes.bases(), slot, n) }
+        };
+        set(&mut lanes, 1, &[true; BATCH]);
+        for n in 1..=BATCH {
+            assert_eq!(agree(&mut lanes, 0, n), Some(false), "{n} members");
+            assert_eq!(agree(&mut lanes, 1, n), Some(true), "{n} members");
+        }
+        // One member differs: the lanes agree on `base` before it, disagree once it is
+        // among them (unless it is alone).
+        for odd in 0..BATCH {
+            for (slot, base) in [(0, false), (1, true)] {
+                let mut held = [base; BATCH];
+                held[odd] = !base;
+                set(&mut lanes, slot, &held);
+                for n in 1..=BATCH {
+                    let expected = match n {
+                        n if n <= odd => Some(base),
+                        1 => Some(!base),
+                        _ => None,
+                    };
+                    assert_eq!(agree(&mut lanes, slot as u32, n), expected, "{odd} of {n}");
+                }
+            }
+        }
+    }
 
     /// Every op a program can hold: the node table's, the fused pairs, and the control,
     /// copy and conversion ops the compiler emits, of every type.
