@@ -111,6 +111,12 @@ impl Pose {
     /// Marks the globals of bones `from..to` stale.
     #[inline]
     fn mark_stale(&mut self, from: usize, to: usize) {
+        let bit = from % 64;
+        if from < to && to - from <= 64 - bit {
+            // Within one word: a bone's subtree, on most skeletons.
+            self.stale[from / 64] |= (u64::MAX >> (64 - (to - from))) << bit;
+            return;
+        }
         let mut i = from;
         while i < to {
             let bit = i % 64;

@@ -41,7 +41,7 @@ use std::fmt;
 use std::path::{Path, PathBuf};
 use std::sync::Arc;
 
-use glam::{Quat, Vec3};
+use glam::{Quat, Vec3, Vec3A};
 use parry3d::bounding_volume::{Aabb, BoundingVolume};
 use parry3d::math::Pose;
 use parry3d::query::{Ray, ShapeCastOptions, cast_shapes};
@@ -1304,9 +1304,10 @@ impl WorldQuery for World {
     /// zero-length sweep reports an overlap at the start, if any.
     fn sphere_trace(&self, start: Vec3, end: Vec3, radius: f32) -> Option<TraceHit> {
         // `x − x` is 0 for every finite `x` and NaN otherwise: one test for all seven.
+        let (a, b) = (Vec3A::from(start), Vec3A::from(end));
         #[allow(clippy::eq_op)]
-        let finite = (start - start) + (end - end) + (radius - radius);
-        if !(finite == Vec3::ZERO && radius >= 0.0) {
+        let finite = (a - a) + (b - b) + (radius - radius);
+        if !(finite == Vec3A::ZERO && radius >= 0.0) {
             return None;
         }
         if radius == 0.0 {

@@ -30,7 +30,7 @@
 use crate::lanes::{LANES, Lanes};
 use crate::program::{Instr, Program};
 use crate::slots::{ScalarLens, Slots};
-use glam::{Affine3A, Quat, Vec3};
+use glam::{Affine3A, Quat, Vec3, Vec3A};
 use strider_core::{BoneIndex, DebugColor, DebugDraw, DebugPrimitive, Pose, Transform, WorldQuery};
 use strider_nodes::kernels as k;
 use strider_nodes::kernels::locomotion as loco;
@@ -607,15 +607,18 @@ macro_rules! execute {
                 // `x − x` is 0 for a finite `x`, NaN otherwise: one test for all seven.
                 #[allow(clippy::eq_op)]
                 let hit = hit.filter(|h| {
-                    (h.point - h.point) + (h.normal - h.normal) + (h.distance - h.distance)
-                        == Vec3::ZERO
+                    let (p, n) = (Vec3A::from(h.point), Vec3A::from(h.normal));
+                    ((p - p) + (n - n) + (h.distance - h.distance)) == Vec3A::ZERO
                 });
                 match hit {
                     Some(h) => {
                         let from_world = &$cx.from_world_matrix;
                         b!(outs) = true;
                         v!(outs + 1) = from_world.transform_point3(h.point);
-                        v!(outs + 2) = k::unit_v(from_world.transform_vector3(h.normal));
+                        // Normalised in SIMD registers (the trace's normal, turned by the
+                        // matrix, needs no round trip through three floats).
+                        let normal = from_world.transform_vector3a(h.normal.into());
+                        v!(outs + 2) = normal.normalize_or_zero().into();
                         f!(outs + 3) = h.distance;
                     }
                     None => {
