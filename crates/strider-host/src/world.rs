@@ -1314,26 +1314,32 @@ impl WorldQuery for World {
             return self.line_trace(start, end);
         }
         let ball = Ball::new(radius);
-        let delta = end - start;
+        // In SIMD registers (the same operations, lane by lane, as on three floats).
+        let delta = b - a;
         let length = delta.length();
         let (dir, hit) = if length <= 1e-7 {
             // Overlap test: a tiny sweep that any overlap stops at distance 0.
             let hit = self
                 .sweep(&ball, start, Vec3::NEG_Z * 1e-6, 0.0, true)
                 .filter(|h| h.distance <= 0.0)?;
-            (Vec3::ZERO, hit)
+            (Vec3A::ZERO, hit)
         } else if length.is_finite() {
             // `sweep` without asking the shape again what it is.
             let dir = delta / length;
-            let along = Along { delta, dir, length };
+            let along = Along {
+                delta: delta.into(),
+                dir: dir.into(),
+                length,
+            };
             let hit = self.sweep_along(&ball, Some(radius), start, along, 0.0, true)?;
             (dir, hit)
         } else {
             return None;
         };
         // The touched point of a sphere is one radius from its centre, against the normal.
+        let point = a + dir * hit.distance - Vec3A::from(hit.normal) * radius;
         Some(TraceHit {
-            point: start + dir * hit.distance - hit.normal * radius,
+            point: point.into(),
             normal: hit.normal,
             distance: hit.distance,
         })
