@@ -84,36 +84,44 @@ pub(crate) fn ball_box_sweep(
             normal: box_normal(at, half),
         };
     }
-    // Edge or corner region: the nearest entry into the union's parts.
+    // The entry point lies beside an edge (two axes beyond the box) or a corner (three):
+    // there the grown box is wider than the rounded one, and the ball can only touch that
+    // edge's or that corner's three edges' capsules first. A ray through an edge region
+    // that misses the edge's capsule misses the rounded box: to reach a face region it
+    // would cross the capsule (the method of Ericson, "Real-Time Collision Detection",
+    // 5.5.7). Fewer than two axes beyond with `t = 0` is a start within rounding of the
+    // surface: left to parry3d, as an overlap.
+    let corner = at.signum() * half;
     let mut best = f32::INFINITY;
-    for axis in 0..3 {
-        let mut slab = half;
-        slab[axis] = grown[axis];
-        if let Some(t) = ray_box_entry(start, dir, length, slab) {
+    let mut enter = |t: Option<f32>| {
+        if let Some(t) = t {
             best = best.min(t);
         }
-    }
-    let corner = |i: usize| {
-        Vec3::new(
-            if i & 1 == 0 { -half.x } else { half.x },
-            if i & 2 == 0 { -half.y } else { half.y },
-            if i & 4 == 0 { -half.z } else { half.z },
-        )
     };
-    for i in 0..8 {
-        let a = corner(i);
-        if let Some(t) = ray_sphere_entry(start, dir, length, a, radius) {
-            best = best.min(t);
-        }
-        // The three edges from this corner towards the corners with one more bit set.
-        for bit in [1, 2, 4] {
-            if i & bit == 0 {
-                let b = corner(i | bit);
-                if let Some(t) = ray_cylinder_entry(start, dir, length, a, b, radius) {
-                    best = best.min(t);
-                }
+    match beyond.bitmask() {
+        0b111 => {
+            // The corner's ball, and each edge from it with the ball at its far end.
+            enter(ray_sphere_entry(start, dir, length, corner, radius));
+            for axis in 0..3 {
+                let mut other = corner;
+                other[axis] = -other[axis];
+                enter(ray_cylinder_entry(
+                    start, dir, length, corner, other, radius,
+                ));
+                enter(ray_sphere_entry(start, dir, length, other, radius));
             }
         }
+        m if m.count_ones() == 2 => {
+            // The edge along the one axis not beyond, with the balls at its ends.
+            let axis = (!m & 0b111).trailing_zeros() as usize;
+            let (mut a, mut b) = (corner, corner);
+            a[axis] = -half[axis];
+            b[axis] = half[axis];
+            enter(ray_cylinder_entry(start, dir, length, a, b, radius));
+            enter(ray_sphere_entry(start, dir, length, a, radius));
+            enter(ray_sphere_entry(start, dir, length, b, radius));
+        }
+        _ => return BallSweep::Overlap,
     }
     if best > length {
         return BallSweep::Miss;
@@ -346,4 +354,50 @@ fn ray_cylinder_entry(
     let t = ((-qb - disc.sqrt()) / qa).max(0.0);
     let along = (m + dir * t).dot(e);
     (t <= length && (0.0..=axis_len).contains(&along)).then_some(t)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The first contact of a ball of radius 5 against the box `[−1, 1]³` on a ray that
+    /// enters the grown box beside the corner (1, 1, 1), runs along the edge towards x = −1
+    /// more than a radius away from it, and closes in on the far corner (−1, 1, 1): its ball
+    /// is touched first, beyond the edge's end. Expected by hand (in f64): the ray's point
+    /// at distance `t` from the far corner is `r` away.
+    #[test]
+    fn the_far_corner_of_an_edge_can_be_touched_first() {
+        let (half, radius) = (Vec3::ONE, 5.0_f32);
+        // Across the edge, the ray's distance from the edge line (y = z = 1) is 5.1 at
+        // x = −1 and grows by 0.9 per centimetre of x back towards +x, along the diagonal.
+        let across = |x: f64| (5.1 + 0.9 * (x + 1.0)) / 2f64.sqrt();
+        let point = |x: f64| [x, 1.0 + across(x), 1.0 + across(x)];
+        let (p0, p1) = (point(3.0), point(-3.0));
+        let d: Vec<f64> = (0..3).map(|k| p1[k] - p0[k]).collect();
+        let len = d.iter().map(|v| v * v).sum::<f64>().sqrt();
+        let dir: Vec<f64> = d.iter().map(|v| v / len).collect();
+        // |p0 + dir·t − c|² = r² for the far corner c.
+        let c = [-1.0, 1.0, 1.0];
+        let m: Vec<f64> = (0..3).map(|k| p0[k] - c[k]).collect();
+        let b: f64 = (0..3).map(|k| m[k] * dir[k]).sum();
+        let cc: f64 = m.iter().map(|v| v * v).sum::<f64>() - 25.0;
+        let t = -b - (b * b - cc).sqrt();
+        let contact_x = p0[0] + dir[0] * t;
+        assert!(
+            contact_x < -1.0,
+            "the contact is beyond the edge's end: x {contact_x}"
+        );
+
+        let as32 = |v: &[f64]| Vec3::new(v[0] as f32, v[1] as f32, v[2] as f32);
+        let (start, dir32) = (as32(&p0), as32(&dir).normalize());
+        match ball_box_sweep(start, dir32, len as f32, radius, half) {
+            BallSweep::Hit { distance, normal } => {
+                assert!((f64::from(distance) - t).abs() < 1e-3, "{distance} vs {t}");
+                let centre = start + dir32 * distance;
+                let want = (centre - Vec3::new(-1.0, 1.0, 1.0)).normalize();
+                assert!((normal - want).length() < 1e-3, "{normal} vs {want}");
+            }
+            other => panic!("{other:?}"),
+        }
+    }
 }
