@@ -41,7 +41,7 @@ use std::fmt;
 use std::path::{Path, PathBuf};
 use std::sync::Arc;
 
-use glam::{Quat, Vec3, Vec3A};
+use glam::{Quat, Vec3, Vec3A, Vec4};
 use parry3d::bounding_volume::{Aabb, BoundingVolume};
 use parry3d::math::Pose;
 use parry3d::query::{Ray, ShapeCastOptions, cast_shapes};
@@ -647,6 +647,46 @@ pub(crate) struct SweepHit {
 pub struct World {
     desc: WorldDesc,
     colliders: Vec<Collider>,
+    /// The colliders' bounds, four to a [`Quad`] in the colliders' order: what a trace
+    /// scans to find the colliders near it.
+    quads: Vec<Quad>,
+    /// Whether any collider has bounds: else a trace need not compute its own.
+    bounded: bool,
+}
+
+/// The bounds of four consecutive colliders laid out by axis, so that testing a box
+/// against all four is a few vector comparisons (a trace in a world of a flight of stairs
+/// tests twenty boxes). Written by hand: parry3d's bounding-volume tree is built for
+/// thousands of shapes and walks nodes one by one.
+#[derive(Clone, Copy, Debug)]
+struct Quad {
+    /// Minimum corner per axis (x, y, z), one lane per collider. A missing collider (past
+    /// the last) has `+∞`, so nothing is near it.
+    lo: [Vec4; 3],
+    /// Maximum corner per axis, one lane per collider (`−∞` for a missing one).
+    hi: [Vec4; 3],
+    /// Colliders without bounds (half-spaces), near every trace: bit `k` for collider `k`
+    /// of the four.
+    always: u32,
+    /// Whether any of the four has bounds (else there is nothing to compare).
+    bounded: bool,
+}
+
+impl Quad {
+    /// Bits `k` of the four colliders whose bounds meet `reach` (boxes touching on a face
+    /// count, as in parry3d's `Aabb::intersects`), or that are unbounded.
+    #[inline(always)]
+    fn near(&self, reach: &Aabb) -> u32 {
+        if !self.bounded {
+            return self.always;
+        }
+        let (low, high) = (reach.mins, reach.maxs);
+        let meets = |axis: usize, low: f32, high: f32| {
+            self.lo[axis].cmple(Vec4::splat(high)) & Vec4::splat(low).cmple(self.hi[axis])
+        };
+        let all = meets(0, low.x, high.x) & meets(1, low.y, high.y) & meets(2, low.z, high.z);
+        all.bitmask() | self.always
+    }
 }
 
 /// One collision shape placed in the world, with what traces need to know about it before
@@ -657,9 +697,31 @@ struct Collider {
     shape: SharedShape,
     /// What the shape is, for the sweeps that have a closed form.
     form: Form,
-    /// Its world-space bounding box, loosened by [`CULL_MARGIN`]; `None` for a half-space
-    /// (unbounded), which every trace tests.
-    bounds: Option<Aabb>,
+}
+
+/// The colliders of a [`World`] whose bounds meet a box, in the colliders' order.
+struct Near<'a> {
+    world: &'a World,
+    reach: Aabb,
+    /// The next quad to scan.
+    quad: usize,
+    /// The colliders of the quad before `quad` not yet returned.
+    bits: u32,
+}
+
+impl<'a> Iterator for Near<'a> {
+    type Item = &'a Collider;
+
+    #[inline(always)]
+    fn next(&mut self) -> Option<&'a Collider> {
+        while self.bits == 0 {
+            self.bits = self.world.quads.get(self.quad)?.near(&self.reach);
+            self.quad += 1;
+        }
+        let k = self.bits.trailing_zeros() as usize;
+        self.bits &= self.bits - 1;
+        self.world.colliders.get((self.quad - 1) * 4 + k)
+    }
 }
 
 /// The kinds of shape a ball's sweep is answered for in closed form ([`crate::sweep`]).
@@ -684,12 +746,6 @@ enum Form {
 }
 
 impl Collider {
-    /// Whether a trace whose swept volume lies within `reach` may touch this shape.
-    #[inline]
-    fn near(&self, reach: &Aabb) -> bool {
-        self.bounds.is_none_or(|b| b.intersects(reach))
-    }
-
     /// A ball of `radius` swept from `start` along the unit `dir` for `length` (world
     /// space), in closed form: `Some(hit or miss)`, or `None` when this shape has no closed
     /// form or the ball starts overlapping it (then parry3d's cast answers).
@@ -1044,7 +1100,9 @@ impl World {
 
     /// A world of built shapes and the description they came from.
     fn with_shapes(desc: WorldDesc, shapes: Vec<(Pose, SharedShape, Option<Grid>)>) -> World {
-        let colliders = shapes
+        // Each collider with its world-space bounding box, loosened by `CULL_MARGIN`;
+        // `None` for a half-space (unbounded), which every trace tests.
+        let built = shapes
             .into_iter()
             .map(|(pose, shape, grid)| {
                 let form = if let Some(h) = shape.as_halfspace() {
@@ -1070,15 +1128,52 @@ impl World {
                 };
                 let bounds = (!matches!(form, Form::HalfSpace { .. }))
                     .then(|| shape.compute_aabb(&pose).loosened(CULL_MARGIN));
-                Collider {
-                    pose,
-                    shape,
-                    form,
-                    bounds,
+                (Collider { pose, shape, form }, bounds)
+            })
+            .collect::<Vec<_>>();
+        let (colliders, bounds): (Vec<Collider>, Vec<Option<Aabb>>) = built.into_iter().unzip();
+        let quads: Vec<Quad> = bounds
+            .chunks(4)
+            .map(|four| {
+                let mut lo = [[f32::INFINITY; 4]; 3];
+                let mut hi = [[f32::NEG_INFINITY; 4]; 3];
+                let mut always = 0;
+                for (k, bounds) in four.iter().enumerate() {
+                    match bounds {
+                        Some(b) => {
+                            for axis in 0..3 {
+                                lo[axis][k] = b.mins[axis];
+                                hi[axis][k] = b.maxs[axis];
+                            }
+                        }
+                        None => always |= 1 << k,
+                    }
+                }
+                Quad {
+                    lo: lo.map(Vec4::from_array),
+                    hi: hi.map(Vec4::from_array),
+                    always,
+                    bounded: four.iter().any(Option::is_some),
                 }
             })
             .collect();
-        World { desc, colliders }
+        World {
+            desc,
+            colliders,
+            bounded: quads.iter().any(|q| q.bounded),
+            quads,
+        }
+    }
+
+    /// The colliders whose bounds meet `reach` (and the unbounded ones), in order.
+    #[inline(always)]
+    fn near(&self, reach: Aabb) -> Near<'_> {
+        Near {
+            world: self,
+            reach,
+            quad: 0,
+            bits: 0,
+        }
     }
 
     /// Builds a world, leaving out any shape that [`ShapeDesc::validate`] rejects or that
@@ -1192,7 +1287,10 @@ impl World {
     ) -> Option<SweepHit> {
         let Along { delta, dir, length } = along;
         let end = start + delta;
-        let reach = if let Some(radius) = ball_radius {
+        let reach = if !self.bounded {
+            // Only half-spaces: nothing to compare the sweep's box with.
+            Aabb::new_invalid()
+        } else if let Some(radius) = ball_radius {
             ball_reach(start, end, radius)
         } else {
             let local = shape.compute_local_aabb();
@@ -1201,10 +1299,7 @@ impl World {
                 .loosened(skin.max(0.0))
         };
         let mut best: Option<SweepHit> = None;
-        for collider in &self.colliders {
-            if !collider.near(&reach) {
-                continue;
-            }
+        for collider in self.near(reach) {
             let closed_form = ball_radius
                 .and_then(|r| collider.ball_sweep(start, dir, length, r, stop_at_penetration));
             let found = match closed_form {
@@ -1265,12 +1360,13 @@ impl WorldQuery for World {
         }
         let dir = delta / length;
         let ray = Ray::new(start, dir);
-        let reach = Aabb::new(start.min(end), start.max(end));
+        let reach = if self.bounded {
+            Aabb::new(start.min(end), start.max(end))
+        } else {
+            Aabb::new_invalid()
+        };
         let mut best: Option<(f32, Vec3)> = None;
-        for collider in &self.colliders {
-            if !collider.near(&reach) {
-                continue;
-            }
+        for collider in self.near(reach) {
             if let Some((d, normal)) = collider.ray(&ray, length)
                 && best.is_none_or(|(b, _)| d < b)
             {

@@ -88,6 +88,48 @@ fn sphere_trace_against_a_wall_box() {
 }
 
 #[test]
+fn every_shape_of_a_crowded_world_is_found() {
+    // Eleven pillars of heights 10, 20, .. 110 cm along x (one every 100 cm), with the
+    // ground listed among them: the world tests its shapes four at a time, and a trace
+    // straight down onto pillar k must stop on its top, at the height only that pillar
+    // has, whichever group it falls in.
+    let mut shapes: Vec<String> = (0..11)
+        .map(|k| {
+            let h = 10.0 * (k + 1) as f32;
+            format!(
+                "Box(center: ({}.0, 0.0, {}), half_extents: (20.0, 20.0, {}))",
+                100 * k,
+                h / 2.0,
+                h / 2.0
+            )
+        })
+        .collect();
+    shapes.insert(6, "Ground(height: 0.0)".to_string());
+    let w = world(&format!("(shapes: [{}])", shapes.join(", ")));
+    for k in 0..11 {
+        let x = 100.0 * k as f32;
+        let top = 10.0 * (k + 1) as f32;
+        let down = |from: Vec3| from - Vec3::Z * 300.0;
+        let from = Vec3::new(x + 5.0, -3.0, 250.0);
+        let hit = w
+            .line_trace(from, down(from))
+            .expect("a line onto the pillar");
+        assert!(near(hit.point.z, top, 1e-3), "pillar {k}: {hit:?}");
+        let hit = w
+            .sphere_trace(from, down(from), 4.0)
+            .expect("a ball onto the pillar");
+        assert!(near(hit.point.z, top, 1e-3), "pillar {k}: {hit:?}");
+        assert_vec_near(hit.normal, Vec3::Z, 1e-4);
+        // Between the pillars: the ground.
+        let gap = Vec3::new(x + 50.0, 0.0, 250.0);
+        let hit = w
+            .sphere_trace(gap, down(gap), 4.0)
+            .expect("a ball onto the ground");
+        assert!(near(hit.point.z, 0.0, 1e-3), "after pillar {k}: {hit:?}");
+    }
+}
+
+#[test]
 fn rotated_box_face() {
     // Half extents (10, 50, 10) turned by 90°: the long axis lies along X, the box spans
     // y ∈ [−10, 10].
