@@ -305,6 +305,7 @@ fn ray_box_entry(start: Vec3, dir: Vec3, length: f32, half: Vec3) -> Option<f32>
 
 /// Where the ray `start + dir·t`, `0 ≤ t ≤ length`, enters the ball of `radius` around
 /// `centre`; `None` for a start inside it (the callers check overlap first).
+#[inline(always)]
 fn ray_sphere_entry(start: Vec3, dir: Vec3, length: f32, centre: Vec3, radius: f32) -> Option<f32> {
     let m = start - centre;
     let b = m.dot(dir);
@@ -323,6 +324,7 @@ fn ray_sphere_entry(start: Vec3, dir: Vec3, length: f32, centre: Vec3, radius: f
 /// Where the ray `start + dir·t`, `0 ≤ t ≤ length`, enters the cylinder of `radius` around
 /// the segment `a → b` (without its end caps: the balls at the ends cover them); `None` for
 /// a start inside it or a ray parallel to it.
+#[inline(always)]
 fn ray_cylinder_entry(
     start: Vec3,
     dir: Vec3,
