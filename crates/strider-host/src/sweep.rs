@@ -227,6 +227,10 @@ pub(crate) fn ball_triangles_sweep(
     nearest
 }
 
+/// How much (cm) the box a ball sweeps through is widened before an edge outside it is
+/// skipped: far more than the rounding of the box's corners.
+const EDGE_CULL_MARGIN: f32 = 0.01;
+
 /// The sweep against a triangle's three edges and corners alone.
 fn ball_edges_sweep(
     start: Vec3,
@@ -236,8 +240,18 @@ fn ball_edges_sweep(
     corners: [Vec3; 3],
 ) -> BallSweep {
     let mut best: Option<(f32, Vec3)> = None;
+    // The box the ball sweeps through, loosened against rounding: an edge whose box misses
+    // it is farther than `radius` from every centre of the sweep (and so is its corner
+    // `a`), so it can neither overlap the start nor be touched. Most of the edges of the
+    // triangles near a short sweep miss it.
+    let end = start + dir * length;
+    let grow = radius + EDGE_CULL_MARGIN;
+    let (low, high) = (start.min(end) - grow, start.max(end) + grow);
     for k in 0..3 {
         let (a, b) = (corners[k], corners[(k + 1) % 3]);
+        if a.min(b).cmpgt(high).any() || a.max(b).cmplt(low).any() {
+            continue;
+        }
         let closest = closest_on_segment(start, a, b);
         if (start - closest).length_squared() <= radius * radius {
             return BallSweep::Overlap;
