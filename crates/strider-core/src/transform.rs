@@ -1,5 +1,6 @@
 //! [`Transform`]: translation, rotation and scale, composed parent · child.
 
+use core::ops::{Add, Sub};
 use glam::{Affine3A, Mat3A, Quat, Vec3, Vec3A, Vec4};
 
 /// A rigid transform with scale: maps a point `p` to `translation + rotation · (scale ⊙ p)`.
@@ -161,13 +162,8 @@ impl Transform {
     #[must_use]
     #[inline]
     pub fn is_finite(&self) -> bool {
-        // `x − x` is 0 for every finite `x` and NaN otherwise: one comparison per register
-        // instead of ten branches.
-        let (t, s) = (Vec3A::from(self.translation), Vec3A::from(self.scale));
-        let r = Vec4::from(self.rotation);
-        #[allow(clippy::eq_op)]
-        let (ts, r) = ((t - t) + (s - s), r - r);
-        ts == Vec3A::ZERO && r == Vec4::ZERO
+        all_finite([Vec3A::from(self.translation), Vec3A::from(self.scale)])
+            && all_finite([Vec4::from(self.rotation)])
     }
 
     /// Linear interpolation of translation and scale, shortest-path slerp of rotation;
@@ -200,6 +196,22 @@ impl core::ops::Mul for Transform {
             scale: self.scale * rhs.scale,
         }
     }
+}
+
+/// Whether every component of `values` is finite (no NaN, no infinity). `x − x` is 0 for
+/// every finite `x` and NaN otherwise, so the sum of the differences is zero exactly when
+/// all are: one vector comparison for all of them instead of a branch per component (for
+/// the checks on hot paths: a transform, a trace's ends and its hit).
+#[must_use]
+#[inline]
+pub fn all_finite<V, const N: usize>(values: [V; N]) -> bool
+where
+    V: Copy + Default + PartialEq + Add<Output = V> + Sub<Output = V>,
+{
+    // `Default` is the zero vector (glam's vectors, and `f32`).
+    #[allow(clippy::eq_op)]
+    let sum = values.iter().fold(V::default(), |sum, &v| sum + (v - v));
+    sum == V::default()
 }
 
 #[cfg(test)]

@@ -48,7 +48,7 @@ use parry3d::query::{Ray, ShapeCastOptions, cast_shapes};
 use parry3d::shape::{Ball, Shape, SharedShape, TriMesh};
 use serde::Deserialize;
 use serde::de::{self, Deserializer, SeqAccess, Visitor};
-use strider_core::{TraceHit, WorldQuery};
+use strider_core::{TraceHit, WorldQuery, all_finite};
 
 use crate::sweep::{
     BallSweep, ball_box_sweep, ball_half_space_sweep, ball_hull_sweep, ball_triangles_sweep,
@@ -1399,11 +1399,8 @@ impl WorldQuery for World {
     /// is a line trace; a negative or non-finite radius, or non-finite ends, miss. A
     /// zero-length sweep reports an overlap at the start, if any.
     fn sphere_trace(&self, start: Vec3, end: Vec3, radius: f32) -> Option<TraceHit> {
-        // `x − x` is 0 for every finite `x` and NaN otherwise: one test for all seven.
         let (a, b) = (Vec3A::from(start), Vec3A::from(end));
-        #[allow(clippy::eq_op)]
-        let finite = (a - a) + (b - b) + (radius - radius);
-        if !(finite == Vec3A::ZERO && radius >= 0.0) {
+        if !(all_finite([a, b, Vec3A::splat(radius)]) && radius >= 0.0) {
             return None;
         }
         if radius == 0.0 {

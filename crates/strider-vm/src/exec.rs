@@ -31,7 +31,9 @@ use crate::lanes::{LANES, Lanes};
 use crate::program::{Instr, Program};
 use crate::slots::{ScalarLens, Slots};
 use glam::{Affine3A, Quat, Vec3, Vec3A};
-use strider_core::{BoneIndex, DebugColor, DebugDraw, DebugPrimitive, Pose, Transform, WorldQuery};
+use strider_core::{
+    BoneIndex, DebugColor, DebugDraw, DebugPrimitive, Pose, Transform, WorldQuery, all_finite,
+};
 use strider_nodes::kernels as k;
 use strider_nodes::kernels::locomotion as loco;
 use strider_nodes::kernels::spline::{self, SplineMode};
@@ -604,11 +606,8 @@ macro_rules! execute {
                 } else {
                     ($cx.world.sphere_trace(ws, we, f!(2).max(0.0)), 3)
                 };
-                // `x − x` is 0 for a finite `x`, NaN otherwise: one test for all seven.
-                #[allow(clippy::eq_op)]
                 let hit = hit.filter(|h| {
-                    let (p, n) = (Vec3A::from(h.point), Vec3A::from(h.normal));
-                    ((p - p) + (n - n) + (h.distance - h.distance)) == Vec3A::ZERO
+                    all_finite([h.point.into(), h.normal.into(), Vec3A::splat(h.distance)])
                 });
                 match hit {
                     Some(h) => {
