@@ -51,7 +51,8 @@ use serde::de::{self, Deserializer, SeqAccess, Visitor};
 use strider_core::{TraceHit, WorldQuery, all_finite};
 
 use crate::sweep::{
-    BallSweep, ball_box_sweep, ball_half_space_sweep, ball_hull_sweep, ball_triangles_sweep,
+    BallSweep, ball_box_sweep, ball_half_space_sweep, ball_hull_sweep, ball_reach,
+    ball_triangles_sweep,
 };
 
 /// How far [`World::ground_height`] looks below its start point, centimetres.
@@ -908,11 +909,6 @@ impl Collider {
             BallSweep::Overlap => None,
         }
     }
-}
-
-/// The box a ball of `radius` sweeps through moving from `start` to `end`.
-fn ball_reach(start: Vec3, end: Vec3, radius: f32) -> Aabb {
-    Aabb::new(start.min(end) - radius, start.max(end) + radius)
 }
 
 /// A heightfield mesh's grid of cells in its own frame (the triangles of cell `(i, j)` are
