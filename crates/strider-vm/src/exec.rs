@@ -50,10 +50,10 @@ pub(crate) struct Ctx<'a> {
     pub world: &'a dyn WorldQuery,
     pub dt: f32,
     pub to_world: Transform,
-    /// `to_world` as a matrix ([`Transform::to_affine`]), computed once per run: traces
-    /// map their ends to world space.
+    /// `to_world` as a matrix ([`Transform::to_affine`]), computed once per run of a
+    /// program that traces (the identity otherwise): traces map their ends to world space.
     pub to_world_matrix: Affine3A,
-    /// `to_world.inverse()` as a matrix, computed once per run: traces bring hits back to
+    /// `to_world.inverse()` as a matrix, as `to_world_matrix`: traces bring hits back to
     /// rig space.
     pub from_world_matrix: Affine3A,
     /// Number of this run (construction or frame), never 0: stateful nodes advance once per

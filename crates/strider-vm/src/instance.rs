@@ -4,6 +4,7 @@ use crate::exec::{self, Ctx};
 use crate::native::NativeProgram;
 use crate::program::{BoneSlot, Program, VariableId};
 use crate::slots::Slots;
+use glam::Affine3A;
 use std::fmt;
 use std::sync::Arc;
 use strider_core::{DebugDraw, EmptyWorld, Pose, Skeleton, Transform, WorldQuery};
@@ -446,6 +447,14 @@ impl Instance {
         // The executor indexes scalar slots unchecked (see `exec`): make sure they still
         // cover the program's.
         self.slots.cover(&self.program.scalar_lens);
+        let (to_world_matrix, from_world_matrix) = if self.program.traces {
+            (
+                self.to_world.to_affine(),
+                self.to_world.inverse().to_affine(),
+            )
+        } else {
+            (Affine3A::IDENTITY, Affine3A::IDENTITY)
+        };
         let cx = Ctx {
             slots: &mut self.slots,
             texts: &self.program.texts,
@@ -454,8 +463,8 @@ impl Instance {
             world,
             dt,
             to_world: self.to_world,
-            to_world_matrix: self.to_world.to_affine(),
-            from_world_matrix: self.to_world.inverse().to_affine(),
+            to_world_matrix,
+            from_world_matrix,
             run: next_run(&mut self.runs),
             #[cfg(feature = "profile")]
             profile: self.profiling.then_some(&mut self.profile[..]),

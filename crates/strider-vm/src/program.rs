@@ -229,6 +229,9 @@ pub struct Program {
     /// there on (constants, variables only the host sets) hold the same value before and
     /// after every run, so a batch need not copy them back (slot sharing puts them last).
     pub(crate) written_lens: ScalarLens,
+    /// Whether an instruction traces the world: only then does a run need the character's
+    /// world transform as matrices.
+    pub(crate) traces: bool,
     /// The program's [`fingerprint`](crate::native::fingerprint), computed the first time
     /// it is asked for (checking generated code against it) and kept: every instance of
     /// a crowd shares the program, so it is computed once, not once per instance.
@@ -378,6 +381,7 @@ impl ProgramBuilder {
                 pin_slots: Vec::new(),
                 scalar_lens: ScalarLens::default(),
                 written_lens: ScalarLens::default(),
+                traces: false,
                 fingerprint: std::sync::OnceLock::new(),
             },
             current_origin: None,
@@ -596,6 +600,10 @@ impl ProgramBuilder {
         }
         p.scalar_lens = ScalarLens::of(&p.initial);
         p.written_lens = written_lens(p);
+        p.traces = p
+            .code
+            .iter()
+            .any(|i| matches!(i.op, Op::LineTrace | Op::SphereTrace));
         self.program
     }
 }
