@@ -981,6 +981,11 @@ mod tests {
         },
     )"#;
 
+    /// How many of `program`'s instructions are `op`.
+    fn count(program: &Program, op: strider_nodes::Op) -> usize {
+        program.code().iter().filter(|i| i.op == op).count()
+    }
+
     fn skeleton() -> Arc<Skeleton> {
         Arc::new(
             Skeleton::new(vec![Bone {
@@ -1207,11 +1212,7 @@ mod tests {
         use strider_nodes::Op;
         let program = crate::compile_str(Path::new("reuse.ron"), REUSE).expect("compiles");
         // Read by two steps with nothing in between that it reads: traced once.
-        let traces = program
-            .code()
-            .iter()
-            .filter(|i| i.op == Op::SphereTrace)
-            .count();
+        let traces = count(&program, Op::SphereTrace);
         assert_eq!(traces, 1);
         let mut instance = Instance::new(Arc::new(program.clone()), skeleton()).expect("instance");
         instance.run_forward(&FrameInput::default(), &EmptyWorld, false);
@@ -1268,7 +1269,7 @@ mod tests {
         let code = program.code();
         let trace = code.iter().position(|i| i.op == Op::SphereTrace);
         let head = code.iter().position(|i| i.op == Op::ForNext);
-        assert_eq!(code.iter().filter(|i| i.op == Op::SphereTrace).count(), 1);
+        assert_eq!(count(&program, Op::SphereTrace), 1);
         assert!(
             trace < head,
             "the trace is emitted before the loop: {trace:?} {head:?}"
@@ -1310,11 +1311,7 @@ mod tests {
     fn a_loop_copies_its_array_only_when_its_body_may_change_it() {
         use strider_nodes::{Elem, Op};
         let program = crate::compile_str(Path::new("snapshots.ron"), SNAPSHOTS).expect("compiles");
-        let copies = program
-            .code()
-            .iter()
-            .filter(|i| i.op == Op::Copy(ValueType::Array(Elem::Float)))
-            .count();
+        let copies = count(&program, Op::Copy(ValueType::Array(Elem::Float)));
         assert_eq!(copies, 1, "only the loop over Grow copies its array");
         let mut instance = Instance::new(Arc::new(program.clone()), skeleton()).expect("instance");
         instance.run_forward(&FrameInput::default(), &EmptyWorld, false);
@@ -1366,18 +1363,13 @@ mod tests {
         let trace = code.iter().position(|i| i.op == Op::SphereTrace);
         let head = code.iter().position(|i| i.op == Op::ForNext);
         assert_eq!(
-            code.iter().filter(|i| i.op == Op::SphereTrace).count(),
+            count(&program, Op::SphereTrace),
             1,
             "traced once: before the loop, and kept after it"
         );
         assert!(trace < head, "{trace:?} {head:?}");
         // `first` reads the array the loop edits: read again after it.
-        assert_eq!(
-            code.iter()
-                .filter(|i| i.op == Op::ArrayAt(strider_nodes::Elem::Float))
-                .count(),
-            2
-        );
+        assert_eq!(count(&program, Op::ArrayAt(strider_nodes::Elem::Float)), 2);
         let mut instance = Instance::new(Arc::new(program.clone()), skeleton()).expect("instance");
         instance.run_forward(&FrameInput::default(), &EmptyWorld, false);
         let get = |name: &str| instance.variable(program.variable_id(name).expect(name));
