@@ -1,11 +1,14 @@
 //! `Instance::run_forward_batch` (docs/performance.md, "Batched execution") gives every
-//! character exactly what `Instance::run_forward` gives it alone: poses every frame, debug
-//! drawing and every slot bit-identical, through scenarios where characters at different
-//! points of their walk take different branches.
+//! character exactly what `Instance::run_forward` gives it alone: poses, debug drawing and
+//! graph variables bit-identical every frame, and every slot after a frame run with debug
+//! (without it a batch leaves the slots of values that live only within a run as they
+//! were), through scenarios where characters at different points of their walk take
+//! different branches.
 
 use std::path::Path;
 use std::sync::Arc;
 use strider::host::scenario::{Scenario, Simulation};
+use strider::vm::VariableId;
 use strider::{EmptyWorld, FrameInput, InputPose, Instance, Program, Skeleton, Transform};
 
 fn compile(graph: &str) -> Arc<Program> {
@@ -52,8 +55,8 @@ fn batched_equals_alone(graph: &str, scenario: &str, hz: u32, characters: usize,
                 pose: InputPose::Rest,
             }
         };
-        // Debug drawing on every other frame.
-        let debug = f % 2 == 0;
+        // Debug on every other frame and on the last.
+        let debug = f % 2 == 0 || f + 1 == frames;
         Instance::run_forward_batch(&mut batched, input, sim.world(), debug);
         for (k, instance) in alone.iter_mut().enumerate() {
             instance.run_forward(&input(k), sim.world(), debug);
@@ -70,6 +73,18 @@ fn batched_equals_alone(graph: &str, scenario: &str, hz: u32, characters: usize,
                 "{graph} in {}: character {k}'s drawing differs at frame {f}",
                 scenario.name
             );
+            for (v, info) in program.variables().iter().enumerate() {
+                let id = VariableId(v as u32);
+                // Debug text compares floats by value and sign (bit for bit but a NaN's
+                // payload).
+                assert_eq!(
+                    format!("{:?}", a.variable(id)),
+                    format!("{:?}", b.variable(id)),
+                    "{graph} in {}: character {k}'s {} differs at frame {f}",
+                    scenario.name,
+                    info.name
+                );
+            }
         }
     }
     for (k, (a, b)) in batched.iter().zip(&alone).enumerate() {

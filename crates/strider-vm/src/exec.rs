@@ -27,7 +27,7 @@
 // code.
 #![allow(unsafe_code)]
 
-use crate::lanes::{LANES, Lanes};
+use crate::lanes::{Copies, LANES, Lanes};
 use crate::program::{Instr, Program};
 use crate::slots::{ScalarLens, Slots};
 use glam::{Affine3A, Quat, Vec3, Vec3A};
@@ -1002,9 +1002,9 @@ pub(crate) const BATCH: usize = 16;
 ///
 /// For a program with at least two instructions per scalar slot ([`lanes_pay_off`]), the
 /// members' scalar slots are worked on in this thread's lanes ([`crate::lanes`]): copied
-/// in first (slots `0..lens` of each type, the program's lengths), back when every member
-/// has ended (slots `0..written`: those past it no instruction writes); smaller programs
-/// run on each member's own slots. While the whole batch is at
+/// in first and back when every member has ended, as `copies` says (see [`Copies`]: the
+/// slots of values that live only within a run go neither way unless `copies.kept` covers
+/// them); smaller programs run on each member's own slots. While the whole batch is at
 /// one instruction, a plain scalar op runs on all lanes at once ([`crate::lanes::run_wide`])
 /// and a jump that every member takes, or none, moves the batch without visiting its members.
 ///
@@ -1018,8 +1018,7 @@ pub(crate) fn run_batch(
     code: &[Instr],
     operands: &[u32],
     entry: u32,
-    lens: &ScalarLens,
-    written: &ScalarLens,
+    copies: Copies<'_>,
     members: &mut [Ctx<'_>],
 ) -> usize {
     let n = members.len();
@@ -1027,14 +1026,13 @@ pub(crate) fn run_batch(
     if n == 0 {
         return 0;
     }
-    if !lanes_pay_off(code.len(), lens) {
+    if !lanes_pay_off(code.len(), copies.lens) {
         // No lanes: the empty scratch is never loaded.
         return run_group::<false>(
             code,
             operands,
             entry,
-            lens,
-            written,
+            copies,
             members,
             &mut Lanes::default(),
         );
@@ -1047,7 +1045,7 @@ pub(crate) fn run_batch(
             Some(lanes) => lanes,
             None => own.insert(Lanes::default()),
         };
-        run_group::<true>(code, operands, entry, lens, written, members, lanes)
+        run_group::<true>(code, operands, entry, copies, members, lanes)
     })
 }
 
@@ -1067,8 +1065,7 @@ fn run_group<const LANES: bool>(
     code: &[Instr],
     operands: &[u32],
     entry: u32,
-    lens: &ScalarLens,
-    written: &ScalarLens,
+    copies: Copies<'_>,
     members: &mut [Ctx<'_>],
     lanes: &mut Lanes,
 ) -> usize {
@@ -1077,7 +1074,7 @@ fn run_group<const LANES: bool>(
     // Without lanes, each member's own base pointers (stride 1).
     let mut own = [Bases::NONE; BATCH];
     if LANES {
-        lanes.load(lens, members);
+        lanes.load(copies, members);
     } else {
         for (b, cx) in own.iter_mut().zip(members.iter_mut()) {
             *b = Bases::of(cx.slots);
@@ -1240,7 +1237,7 @@ fn run_group<const LANES: bool>(
             let least = pcs[..n].iter().copied().min().unwrap_or(END);
             if least == END {
                 if LANES {
-                    lanes.store(written, members);
+                    lanes.store(copies, members);
                 }
                 return dispatches;
             }
@@ -1388,6 +1385,77 @@ mod tests {
                 alone.run_forward(&input(k), &EmptyWorld, false);
             }
             assert!(alone.slots().bit_eq(instance.slots()), "member {k}");
+        }
+    }
+
+    /// `total += 2·dt` twelve times each frame through a temporary (`twice`), slots shared:
+    /// `total` is read before it is written (kept from frame to frame), `dt` and `twice`
+    /// live only within a run. Returns the program and `total`'s slot.
+    fn accumulating() -> (crate::Program, usize) {
+        let mut pb = ProgramBuilder::new("accumulating");
+        let two = pb.constant(&Value::Float(2.0), "");
+        let [d, twice, total] = [(); 3].map(|()| pb.alloc(ValueType::Float));
+        pb.variable(crate::VariableInfo {
+            name: "total".into(),
+            ty: ValueType::Float,
+            slot: total,
+            default: Value::Float(0.0),
+            tunable: None,
+            location: String::new(),
+        });
+        pb.set_construction_entry(pb.here());
+        pb.emit(Op::End, &[]);
+        pb.set_forward_entry(pb.here());
+        pb.emit(Op::DeltaTime, &[d]);
+        pb.emit(Op::MulF, &[d, two, twice]);
+        for _ in 0..12 {
+            pb.emit(Op::AddF, &[total, twice, total]);
+        }
+        pb.emit(Op::End, &[]);
+        let program = pb.finish_sharing_slots();
+        let total = program.variables()[0].slot as usize;
+        (program, total)
+    }
+
+    #[test]
+    fn a_batch_copies_back_what_outlives_the_run_and_with_debug_everything() {
+        let (program, total) = accumulating();
+        let float = 2;
+        let (kept, written) = (program.kept_lens.0[float], program.written_lens.0[float]);
+        assert!(total < kept, "the total is kept ({total} of {kept})");
+        assert!(kept < written, "a temporary is shared ({kept}..{written})");
+        assert!(lanes_pay_off(program.code.len(), &program.scalar_lens));
+        let program = Arc::new(program);
+        let dts = [0.25, 0.5, 1.0, 0.125];
+        let input = |k: usize| FrameInput {
+            dt: dts[k],
+            ..FrameInput::default()
+        };
+        let make = || -> Vec<Instance> {
+            dts.iter()
+                .map(|_| Instance::new(Arc::clone(&program), one_bone()).expect("instantiates"))
+                .collect()
+        };
+        let (mut batched, mut alone) = (make(), make());
+        let initial = batched[0].slots().floats.clone();
+        for frame in 1..=3 {
+            Instance::run_forward_batch(&mut batched, input, &EmptyWorld, false);
+            for (k, a) in alone.iter_mut().enumerate() {
+                a.run_forward(&input(k), &EmptyWorld, false);
+            }
+            for (k, instance) in batched.iter().enumerate() {
+                let f = &instance.slots().floats;
+                // 24·dt per frame, exact in binary for these dts.
+                assert_eq!(f[total], 24.0 * dts[k] * frame as f32, "member {k}");
+                // The temporaries' slots are not copied back: as instantiated.
+                assert_eq!(f[kept..written], initial[kept..written], "member {k}");
+            }
+        }
+        // With debug every written slot comes back: the same as each run alone.
+        Instance::run_forward_batch(&mut batched, input, &EmptyWorld, true);
+        for (k, (b, a)) in batched.iter().zip(alone.iter_mut()).enumerate() {
+            a.run_forward(&input(k), &EmptyWorld, true);
+            assert!(a.slots().bit_eq(b.slots()), "member {k}");
         }
     }
 
@@ -1551,8 +1619,7 @@ mod tests {
                 &program.code,
                 &program.operands,
                 program.forward,
-                &program.scalar_lens,
-                &program.written_lens,
+                Copies::all(&program.scalar_lens),
                 &mut members,
             );
             return (n, Vec::new());
@@ -1561,8 +1628,7 @@ mod tests {
             &program.code,
             &program.operands,
             program.forward,
-            &program.scalar_lens,
-            &program.written_lens,
+            Copies::all(&program.scalar_lens),
             &mut members,
             &mut Lanes::default(),
         );

@@ -372,6 +372,13 @@ impl Instance {
     /// with fewer than two instructions per scalar slot runs its batches on each instance's
     /// own slots, without the vectorised loops, whose copies it would not win back.
     ///
+    /// Without `debug`, a batch on lanes leaves alone the slots of values that live only
+    /// within a run (node outputs that share a slot with others, see
+    /// [`Program::pin_slots`]): it copies back graph variables and state, and those slots
+    /// keep what the instance's last run alone or with `debug` left there. With `debug` it
+    /// copies back every slot an instruction writes, so every pin value reads as after
+    /// [`Instance::run_forward`].
+    ///
     /// For threads, split the crowd into chunks (e.g. rayon's `par_chunks_mut(64)`) and call
     /// this on each. Allocates nothing after warm-up: each thread keeps one scratch copy of
     /// 16 instances' scalar slots, made by its first batch.
@@ -412,8 +419,12 @@ impl Instance {
                         &p.code,
                         &p.operands,
                         p.forward,
-                        &p.scalar_lens,
-                        &p.written_lens,
+                        crate::lanes::Copies {
+                            lens: &p.scalar_lens,
+                            // With debug every written slot goes back: pin values too.
+                            kept: if debug { &p.written_lens } else { &p.kept_lens },
+                            written: &p.written_lens,
+                        },
                         &mut members,
                     );
                 }

@@ -35,6 +35,39 @@ pub(crate) struct Lanes {
     transforms: Vec<Transform>,
 }
 
+/// Which of a program's scalar slots a batch copies between its members and the lanes, per
+/// type: in, slots `0..kept` and `written..lens`; back, `0..kept`.
+///
+/// Slot sharing ([`crate::sharing`]) numbers each type's slots as: those whose value may be
+/// read before it is written in a run (graph variables, state kept from frame to frame)
+/// and that an instruction writes, `0..kept`; then the shared slots of values that live
+/// only within a run, `kept..written`, which every run writes before it reads them; then
+/// the slots no instruction writes (constants, variables only the host sets),
+/// `written..lens`. The shared slots' lanes start a batch with whatever an earlier batch
+/// left there, which no run reads. With `kept` = `written` every written slot goes both
+/// ways, so the members' own slots end as a run on them alone leaves them.
+#[derive(Clone, Copy)]
+pub(crate) struct Copies<'p> {
+    /// One past each type's highest slot: every slot the program has.
+    pub(crate) lens: &'p ScalarLens,
+    /// Each type's slots `0..kept` are copied in and back.
+    pub(crate) kept: &'p ScalarLens,
+    /// Each type's slots from `written` on are copied in only (no instruction writes them).
+    pub(crate) written: &'p ScalarLens,
+}
+
+impl<'p> Copies<'p> {
+    /// Every slot in, every slot back (`lens` = `kept` = `written`).
+    #[cfg(test)]
+    pub(crate) fn all(lens: &'p ScalarLens) -> Self {
+        Self {
+            lens,
+            kept: lens,
+            written: lens,
+        }
+    }
+}
+
 thread_local! {
     /// Each thread's lanes, reused by every batch it runs: they grow to the largest
     /// program's slots once and are not reallocated after that.
@@ -54,24 +87,33 @@ macro_rules! each_scalar_type {
 }
 
 impl Lanes {
-    /// Copies slots `0..lens` of each scalar type of every member in (growing the lanes to
-    /// `lens` slots of [`BATCH`] members where they are shorter). `members` has at most
-    /// [`BATCH`] members, each covering `lens`. Member by member: each member's array is
-    /// read in order into its lane (every [`BATCH`]th item).
-    pub(crate) fn load(&mut self, lens: &ScalarLens, members: &[Ctx<'_>]) {
+    /// Copies each scalar type's slots `0..copies.kept` and `copies.written..copies.lens`
+    /// of every member in (growing the lanes to `lens` slots of [`BATCH`] members where
+    /// they are shorter). `members` has at most [`BATCH`] members, each covering `lens`.
+    /// Member by member: each member's array is read in order into its lane (every
+    /// [`BATCH`]th item).
+    pub(crate) fn load(&mut self, copies: Copies<'_>, members: &[Ctx<'_>]) {
         assert!(members.len() <= BATCH, "a batch has at most BATCH members");
         macro_rules! load {
             ($a:ident, $t:expr) => {{
-                let len = lens.0[$t];
+                let len = copies.lens.0[$t];
+                let kept = copies.kept.0[$t].min(len);
+                let rest = copies.written.0[$t].clamp(kept, len);
                 if self.$a.len() < len * BATCH {
                     self.$a.resize(len * BATCH, Default::default());
                 }
                 let lanes = self.$a[..len * BATCH].as_mut_ptr();
                 for (m, cx) in members.iter().enumerate() {
-                    for (k, &from) in cx.slots.$a[..len].iter().enumerate() {
+                    let from = &cx.slots.$a[..len];
+                    // Two plain loops: one over a chained range costs more per slot.
+                    for (k, &x) in from[..kept].iter().enumerate() {
                         // SAFETY: `k < len` and `m < BATCH`, and the lanes hold
                         // `len * BATCH` items (grown above, and sliced to that).
-                        unsafe { *lanes.add(k * BATCH + m) = from };
+                        unsafe { *lanes.add(k * BATCH + m) = x };
+                    }
+                    for (k, &x) in from[rest..].iter().enumerate() {
+                        // SAFETY: as above, `rest + k < len`.
+                        unsafe { *lanes.add((rest + k) * BATCH + m) = x };
                     }
                 }
             }};
@@ -79,12 +121,13 @@ impl Lanes {
         each_scalar_type!(load);
     }
 
-    /// Copies slots `0..lens` of each scalar type back to every member, member by member.
-    pub(crate) fn store(&self, lens: &ScalarLens, members: &mut [Ctx<'_>]) {
+    /// Copies each scalar type's slots `0..copies.kept` back to every member, member by
+    /// member.
+    pub(crate) fn store(&self, copies: Copies<'_>, members: &mut [Ctx<'_>]) {
         assert!(members.len() <= BATCH, "a batch has at most BATCH members");
         macro_rules! store {
             ($a:ident, $t:expr) => {{
-                let len = lens.0[$t];
+                let len = copies.kept.0[$t];
                 let lanes = self.$a[..len * BATCH].as_ptr();
                 for (m, cx) in members.iter_mut().enumerate() {
                     for (k, to) in cx.slots.$a[..len].iter_mut().enumerate() {
@@ -988,15 +1031,15 @@ mod tests {
         let lens = ScalarLens([SLOTS; 6]);
         let mut lanes = Lanes::default();
         let mut stale: Vec<Slots> = (0..BATCH).map(|m| member_slots(m + 100)).collect();
-        with_contexts(&mut stale, |cxs| lanes.load(&lens, cxs));
+        with_contexts(&mut stale, |cxs| lanes.load(Copies::all(&lens), cxs));
         let mut members: Vec<Slots> = (0..n).map(|m| member_slots((source.slots)(m))).collect();
         let mut ran = false;
         with_contexts(&mut members, |cxs| {
-            lanes.load(&lens, cxs);
+            lanes.load(Copies::all(&lens), cxs);
             // SAFETY: the operands are slots below `SLOTS` of the lanes loaded above.
             let dts = std::array::from_fn(|m| if m < n { dt((source.dt)(m)) } else { 7.0 });
             ran = unsafe { run_wide(op, o, lanes.bases(), n, &dts) };
-            lanes.store(&lens, cxs);
+            lanes.store(Copies::all(&lens), cxs);
         });
         ran.then_some(members)
     }
@@ -1141,12 +1184,12 @@ mod tests {
         o.resize(o.len() + MAX_OPERANDS, 0);
         let mut lanes = Lanes::default();
         with_contexts(&mut members, |cxs| {
-            lanes.load(&lens, cxs);
+            lanes.load(Copies::all(&lens), cxs);
             for op in [Op::FloatLerp, Op::QuatLerp] {
                 // SAFETY: the operands are slots below `SLOTS` of the lanes loaded above.
                 assert!(unsafe { run_wide(op, &o, lanes.bases(), BATCH, &dts) });
             }
-            lanes.store(&lens, cxs);
+            lanes.store(Copies::all(&lens), cxs);
         });
         for (m, slots) in members.iter().enumerate() {
             let want = loco::lerp_exponential(m as f32 - 3.0, 10.0, dts[m], speeds[m]);
@@ -1191,7 +1234,7 @@ mod tests {
         o.resize(o.len() + MAX_OPERANDS, 0);
         let mut lanes = Lanes::default();
         with_contexts(&mut members, |cxs| {
-            lanes.load(&lens, cxs);
+            lanes.load(Copies::all(&lens), cxs);
             // SAFETY: the operands are slots below `SLOTS` of the lanes loaded above.
             assert!(unsafe {
                 run_wide(
@@ -1202,7 +1245,7 @@ mod tests {
                     &[0.0; BATCH],
                 )
             });
-            lanes.store(&lens, cxs);
+            lanes.store(Copies::all(&lens), cxs);
         });
         for (m, slots) in members.iter().enumerate() {
             let want = k::quat_from_axis_angle(axes[m], angles[m]);
@@ -1218,13 +1261,13 @@ mod tests {
         let before = members.clone();
         with_contexts(&mut members, |cxs| {
             let mut lanes = Lanes::default();
-            lanes.load(&lens, cxs);
+            lanes.load(Copies::all(&lens), cxs);
             // Slot 2 of member 9 is item 2 * BATCH + 9 of its type's lane array.
             assert_eq!(lanes.floats[2 * BATCH + 9].to_bits(), float(9, 2).to_bits());
             assert_eq!(lanes.ints.len(), 4 * BATCH);
             assert_eq!(lanes.transforms.len(), 8 * BATCH);
             lanes.floats[2 * BATCH + 9] = 42.0;
-            lanes.store(&lens, cxs);
+            lanes.store(Copies::all(&lens), cxs);
         });
         assert_eq!(members[9].floats[2], 42.0);
         members[9].floats[2] = before[9].floats[2];

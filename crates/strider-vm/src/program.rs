@@ -229,6 +229,12 @@ pub struct Program {
     /// there on (constants, variables only the host sets) hold the same value before and
     /// after every run, so a batch need not copy them back (slot sharing puts them last).
     pub(crate) written_lens: ScalarLens,
+    /// Per scalar type, how many of the first slots an instruction writes and a run may
+    /// read before writing (graph variables, state kept from frame to frame): the rest of
+    /// `0..written_lens` hold values that live only within a run, which a batch does not
+    /// copy (see [`crate::lanes::Copies`]). `written_lens` for a program without slot
+    /// sharing.
+    pub(crate) kept_lens: ScalarLens,
     /// Whether an instruction traces the world: only then does a run need the character's
     /// world transform as matrices.
     pub(crate) traces: bool,
@@ -381,6 +387,7 @@ impl ProgramBuilder {
                 pin_slots: Vec::new(),
                 scalar_lens: ScalarLens::default(),
                 written_lens: ScalarLens::default(),
+                kept_lens: ScalarLens::default(),
                 traces: false,
                 fingerprint: std::sync::OnceLock::new(),
             },
@@ -600,6 +607,9 @@ impl ProgramBuilder {
         }
         p.scalar_lens = ScalarLens::of(&p.initial);
         p.written_lens = written_lens(p);
+        if !share {
+            p.kept_lens = p.written_lens;
+        }
         p.traces = p
             .code
             .iter()

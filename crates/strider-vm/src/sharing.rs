@@ -345,7 +345,8 @@ pub(crate) fn share(program: &mut Program, layouts: &[Vec<Operand>]) {
     }
 
     // New slots, per type: the kept ones that instructions write first, in their old
-    // order, then the shared ones by greedy interval partitioning, then the kept ones no
+    // order (a batch copies them into its lanes and back), then the shared ones by greedy
+    // interval partitioning (a batch copies them neither way), then the kept ones no
     // instruction writes (constants, variables only the host sets: a batch copies them
     // into its lanes but never back); a slot coalesced into another takes that one's.
     let mut map = vec![u32::MAX; n_ids];
@@ -397,6 +398,9 @@ pub(crate) fn share(program: &mut Program, layouts: &[Vec<Operand>]) {
             }
         }
         *slots = held.len();
+        program.kept_lens.0[t] = (ids.base[t]..ids.base[t + 1])
+            .filter(|&id| kept.contains(id) && written_after.contains(id))
+            .count();
         occupants.push(held);
     }
 
@@ -663,9 +667,10 @@ mod tests {
     use crate::ProgramBuilder;
     use strider_nodes::{Op, Value, ValueType};
 
-    /// The slots no instruction writes come after every written one, so a batch copies
-    /// back only `0..written_lens`: here two constants and a state carried from frame to
-    /// frame among three temporaries.
+    /// The slots no instruction writes come after every written one, and the written ones
+    /// that outlive a run before the temporaries, so a batch copies in only `0..kept_lens`
+    /// and `written_lens..` and back only `0..kept_lens`: here two constants and a state
+    /// carried from frame to frame among three temporaries.
     #[test]
     fn slots_no_instruction_writes_come_last() {
         let mut pb = ProgramBuilder::new("order");
@@ -707,5 +712,24 @@ mod tests {
         }
         let values = &program.initial.floats[written..];
         assert!(values.contains(&2.0) && values.contains(&3.0));
+        // The state first, then the temporaries: walking the straight code operand by
+        // operand, the state is read before it is written; the temporaries are written
+        // first.
+        let kept = program.kept_lens.0[float];
+        assert_eq!(kept, 1, "the state alone outlives a run");
+        let mut first_read = vec![None; written];
+        for (instr, layout) in program.code.iter().map(|i| (i, i.op.operands().unwrap())) {
+            for (k, operand) in layout.iter().enumerate() {
+                let slot = program.operands[instr.args as usize + k] as usize;
+                if let strider_nodes::Operand::Slot(ValueType::Float, access) = operand
+                    && slot < written
+                    && first_read[slot].is_none()
+                {
+                    first_read[slot] = Some(*access == strider_nodes::Access::Read);
+                }
+            }
+        }
+        assert_eq!(first_read[..kept], [Some(true)], "{:?}", program.operands);
+        assert!(first_read[kept..].iter().all(|&r| r == Some(false)));
     }
 }
