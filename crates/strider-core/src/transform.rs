@@ -122,11 +122,14 @@ impl Transform {
     #[must_use]
     #[inline]
     pub fn inverse(&self) -> Self {
-        let inv_scale = Vec3::new(
-            safe_recip(self.scale.x),
-            safe_recip(self.scale.y),
-            safe_recip(self.scale.z),
-        );
+        // `1 / x`, or 0 where `x` is 0 (a collapsed axis stays collapsed instead of
+        // exploding), for the three axes at once.
+        let scale = Vec3A::from(self.scale);
+        let inv_scale = Vec3::from(Vec3A::select(
+            scale.cmpeq(Vec3A::ZERO),
+            Vec3A::ZERO,
+            Vec3A::ONE / scale,
+        ));
         let inv_rotation = self.rotation.inverse();
         let translation = inv_scale * (inv_rotation * -self.translation);
         Self {
@@ -176,12 +179,6 @@ impl Transform {
             scale: self.scale.lerp(other.scale, alpha),
         }
     }
-}
-
-/// `1 / x`, or 0 where `x` is 0 (a collapsed axis stays collapsed instead of exploding).
-#[inline]
-fn safe_recip(x: f32) -> f32 {
-    if x == 0.0 { 0.0 } else { 1.0 / x }
 }
 
 impl core::ops::Mul for Transform {

@@ -7,7 +7,7 @@ pub mod parts;
 pub mod spline;
 pub mod two_bone_ik;
 
-use glam::{Quat, Vec3};
+use glam::{Quat, Vec3, Vec4};
 use strider_core::{BoneIndex, Skeleton, Transform};
 
 const DEG: f32 = core::f32::consts::PI / 180.0;
@@ -158,7 +158,15 @@ pub fn unit_v(value: Vec3) -> Vec3 {
 #[must_use]
 #[inline]
 pub fn unit_q(value: Quat) -> Quat {
-    Quat::from_array(parts::unit_parts(value.to_array()))
+    // What `parts::unit_parts` computes (glam's vector dot product sums the squares as
+    // `(x² + z²) + (y² + w²)` too), with one vector division for the four quotients.
+    let v = Vec4::from(value);
+    let len = v.length();
+    if len > 0.0 && len.is_finite() {
+        Quat::from_vec4(v / len)
+    } else {
+        Quat::IDENTITY
+    }
 }
 
 /// `rotation · vector`: `vector` (any unit) rotated by the unit `rotation`, as glam's

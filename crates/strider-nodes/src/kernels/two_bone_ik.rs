@@ -41,7 +41,7 @@
 //! whose two bones both have zero length is left unchanged.
 
 use super::{find_quat_between, slerp, unit_q};
-use glam::{Mat3, Quat, Vec3};
+use glam::{Mat3A, Quat, Vec3, Vec3A};
 use strider_core::{BoneIndex, Pose, Transform};
 
 /// Lengths (cm) at or below this are treated as zero: a bone this short has no direction.
@@ -289,7 +289,8 @@ pub fn stretch_scale(stretch: Option<(f32, f32)>, reach_ratio: f32) -> f32 {
 fn direction(v: Vec3) -> Option<Vec3> {
     let len_sq = v.length_squared();
     if len_sq.is_finite() {
-        return (len_sq > LEN_EPS * LEN_EPS).then(|| v / len_sq.sqrt());
+        // One vector division for the three quotients.
+        return (len_sq > LEN_EPS * LEN_EPS).then(|| (Vec3A::from(v) / len_sq.sqrt()).into());
     }
     let m = v.abs().max_element();
     if !(m > 0.0 && m.is_finite()) {
@@ -315,6 +316,8 @@ fn chain_direction(root: Vec3, mid: Vec3, end: Vec3, target: Vec3) -> Option<Vec
 /// The part of `v` perpendicular to the unit `dir`, normalised; `None` when `v` is zero,
 /// non-finite or within [`PARALLEL_EPS`] of parallel to `dir`.
 fn perpendicular(v: Vec3, dir: Vec3) -> Option<Vec3> {
+    // In SIMD registers: the same sums and products, lane by lane.
+    let (v, dir) = (Vec3A::from(v), Vec3A::from(dir));
     // Not finite (or overflowing when squared) and zero both fail here.
     let len_sq = v.length_squared();
     if !(len_sq > 0.0 && len_sq.is_finite()) {
@@ -324,7 +327,7 @@ fn perpendicular(v: Vec3, dir: Vec3) -> Option<Vec3> {
     if p.length_squared() > PARALLEL_EPS * PARALLEL_EPS * len_sq {
         // A second projection: for a `v` nearly parallel to `dir` the first one cancels
         // most of `v` and leaves a rounding error along `dir` that would tilt the plane.
-        (p - dir * p.dot(dir)).try_normalize()
+        (p - dir * p.dot(dir)).try_normalize().map(Vec3::from)
     } else {
         None
     }
@@ -398,15 +401,24 @@ struct BoneAxes {
     /// The secondary axis made perpendicular to `primary` and normalised, when both are
     /// usable.
     local_secondary: Option<Vec3>,
+    /// With both axes usable, the transpose (inverse) of the local frame (primary,
+    /// secondary, primary × secondary): shared by both bones' rotations.
+    local_inverse: Option<Mat3A>,
 }
 
 impl BoneAxes {
     fn new(primary: Vec3, secondary: Vec3) -> Self {
         let primary = direction(primary);
+        let local_secondary = primary.and_then(|p| perpendicular(secondary, p));
+        let local_inverse = primary.zip(local_secondary).map(|(p, s)| {
+            let (p, s) = (Vec3A::from(p), Vec3A::from(s));
+            Mat3A::from_cols(p, s, p.cross(s)).transpose()
+        });
         Self {
             secondary,
             primary,
-            local_secondary: primary.and_then(|p| perpendicular(secondary, p)),
+            local_secondary,
+            local_inverse,
         }
     }
 }
@@ -430,12 +442,12 @@ fn bone_rotation(
     let (Some(old_dir), Some(dir)) = (direction(old_offset), direction(new_offset)) else {
         return current;
     };
-    if let (Some(p), Some(s)) = (axes.primary, axes.local_secondary)
+    if let Some(local_inverse) = axes.local_inverse
         && let Some(want) = perpendicular(normal.cross(dir), dir)
     {
-        let local = Mat3::from_cols(p, s, p.cross(s));
-        let solved = Mat3::from_cols(dir, want, dir.cross(want));
-        let q = unit_q(Quat::from_mat3(&(solved * local.transpose())));
+        let (dir, want) = (Vec3A::from(dir), Vec3A::from(want));
+        let solved = Mat3A::from_cols(dir, want, dir.cross(want));
+        let q = unit_q(Quat::from_mat3a(&(solved * local_inverse)));
         return if q.dot(current) < 0.0 { -q } else { q };
     }
     let (primary, local_secondary) = match axes.primary {
