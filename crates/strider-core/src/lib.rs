@@ -33,4 +33,4 @@ pub use glam::{Quat, Vec3};
 pub use host::{DebugColor, DebugDraw, DebugPrimitive, EmptyWorld, TraceHit, WorldQuery};
 pub use pose::Pose;
 pub use skeleton::{Bone, BoneIndex, Skeleton, SkeletonError};
-pub use transform::{Transform, all_finite};
+pub use transform::{Transform, all_finite, load_vec3};

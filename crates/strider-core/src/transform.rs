@@ -211,6 +211,34 @@ where
     sum == V::default()
 }
 
+/// `v` in a SIMD register, read as one 8-byte load of `x, y` and one 4-byte load of `z`:
+/// for a `Vec3` that the caller has just stored, such as a query's argument.
+///
+/// That is how a `Vec3` computed in a SIMD register is stored (`movlps` and `movss`), so
+/// each load takes its bytes from one store still in flight and the processor forwards it;
+/// a load straddling two recent stores waits until both reach the cache. Left to itself
+/// the compiler may read `x` alone and `y, z` together, straddling the two stores (a
+/// world's sphere trace did: 3 to 5 % of a locomotion frame's time, see
+/// docs/performance.md).
+#[must_use]
+#[inline(always)]
+#[allow(unsafe_code)]
+pub fn load_vec3(v: &Vec3) -> Vec3A {
+    #[cfg(target_arch = "x86_64")]
+    {
+        use core::arch::x86_64::{_mm_castpd_ps, _mm_load_sd, _mm_load_ss, _mm_movelh_ps};
+        // SAFETY: `Vec3` is `#[repr(C)]` x, y, z: its first 8 bytes are x and y, and `v.z`
+        // is a valid `f32`; both loads are unaligned ones; SSE2 is part of x86_64.
+        unsafe {
+            let xy = _mm_castpd_ps(_mm_load_sd(core::ptr::from_ref(v).cast::<f64>()));
+            let z = _mm_load_ss(&v.z);
+            Vec3A::from(_mm_movelh_ps(xy, z))
+        }
+    }
+    #[cfg(not(target_arch = "x86_64"))]
+    Vec3A::from(*v)
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -294,6 +322,28 @@ mod tests {
         let id = t.inverse() * t;
         assert_vec_near(id.translation, Vec3::ZERO);
         assert_vec_near(id.scale, Vec3::ONE);
+    }
+
+    #[test]
+    fn a_loaded_vector_holds_its_three_components_bit_for_bit() {
+        let nan = f32::from_bits(0x7fc0_1234);
+        for v in [
+            Vec3::new(1.5, -2.25, 1e30),
+            Vec3::new(-0.0, 0.0, f32::MIN_POSITIVE / 4.0),
+            Vec3::new(nan, f32::INFINITY, f32::NEG_INFINITY),
+        ] {
+            let a = load_vec3(&v);
+            assert_eq!(
+                a.to_array().map(f32::to_bits),
+                v.to_array().map(f32::to_bits),
+                "{v:?}"
+            );
+        }
+        // From inside an array (unaligned to 8 and 16 bytes), each element itself.
+        let vs = [Vec3::X, Vec3::Y, Vec3::Z, Vec3::new(4.0, 5.0, 6.0)];
+        for v in &vs {
+            assert_eq!(Vec3::from(load_vec3(v)), *v);
+        }
     }
 
     #[test]

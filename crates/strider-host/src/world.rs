@@ -48,7 +48,7 @@ use parry3d::query::{Ray, ShapeCastOptions, cast_shapes};
 use parry3d::shape::{Ball, Shape, SharedShape, TriMesh};
 use serde::Deserialize;
 use serde::de::{self, Deserializer, SeqAccess, Visitor};
-use strider_core::{TraceHit, WorldQuery, all_finite};
+use strider_core::{TraceHit, WorldQuery, all_finite, load_vec3};
 
 use crate::sweep::{
     BallSweep, ball_box_sweep, ball_half_space_sweep, ball_hull_sweep, ball_reach,
@@ -1349,6 +1349,8 @@ impl WorldQuery for World {
     /// a segment starting inside one hits at distance 0 with the normal `−direction`. A
     /// zero-length or non-finite segment misses.
     fn line_trace(&self, start: Vec3, end: Vec3) -> Option<TraceHit> {
+        // Read as the caller stored them (see `load_vec3`).
+        let (start, end) = (Vec3::from(load_vec3(&start)), Vec3::from(load_vec3(&end)));
         let delta = end - start;
         let length = delta.length();
         if !(start.is_finite() && end.is_finite() && length.is_finite()) || length <= 1e-7 {
@@ -1395,7 +1397,8 @@ impl WorldQuery for World {
     /// is a line trace; a negative or non-finite radius, or non-finite ends, miss. A
     /// zero-length sweep reports an overlap at the start, if any.
     fn sphere_trace(&self, start: Vec3, end: Vec3, radius: f32) -> Option<TraceHit> {
-        let (a, b) = (Vec3A::from(start), Vec3A::from(end));
+        // Read as the caller stored them (see `load_vec3`).
+        let (a, b) = (load_vec3(&start), load_vec3(&end));
         if !(all_finite([a, b, Vec3A::splat(radius)]) && radius >= 0.0) {
             return None;
         }
