@@ -105,7 +105,7 @@ pub struct IkReport {
 
 impl IkReport {
     /// The report for `effector` (rig space, cm) against `target`.
-    fn measure(effector: Vec3, target: Vec3) -> Self {
+    fn measure(effector: Vec3A, target: Vec3A) -> Self {
         let d = effector.distance(target);
         let d = if d.is_finite() { d } else { f32::INFINITY };
         Self {
@@ -157,22 +157,29 @@ impl TwoBoneIk {
         let ga = pose.global(a);
         let gb = pose.global(b);
         let ge = pose.global(effector);
-        let goal = target.translation;
+        // In SIMD registers throughout (the same operations, lane by lane, as on three
+        // floats): a `Vec3` assembled into a register through memory waits on the stores.
+        let goal = Vec3A::from(target.translation);
         if !target.is_finite() {
             return IkReport::UNMEASURED;
         }
         if !(ga.is_finite() && gb.is_finite() && ge.is_finite()) {
-            return IkReport::measure(ge.translation, goal);
+            return IkReport::measure(ge.translation.into(), goal);
         }
-        let (root, mid, end) = (ga.translation, gb.translation, ge.translation);
+        let (root, mid, end) = (
+            Vec3A::from(ga.translation),
+            Vec3A::from(gb.translation),
+            Vec3A::from(ge.translation),
+        );
         let Some(dir) = chain_direction(root, mid, end, goal) else {
             return IkReport::measure(end, goal);
         };
         let pole = match self.pole {
-            Pole::Direction(v) => v,
-            Pole::Location(p) => p - root,
+            Pole::Direction(v) => v.into(),
+            Pole::Location(p) => Vec3A::from(p) - root,
         };
-        let side = bend_side(dir, [pole, mid - root, ga.rotation * self.secondary_axis]);
+        let secondary = Vec3A::from(self.secondary_axis);
+        let side = bend_side(dir, [pole, mid - root, ga.rotation * secondary]);
         let Some((new_mid, new_end)) = place_joints(root, mid, end, goal, dir, side, self.stretch)
         else {
             return IkReport::measure(end, goal);
@@ -189,9 +196,9 @@ impl TwoBoneIk {
         }
 
         let normal = dir.cross(side);
-        let axes = BoneAxes::new(self.primary_axis, self.secondary_axis);
-        let qa_solved = bone_rotation(ga.rotation, axes, mid - root, new_mid - root, normal);
-        let qb_solved = bone_rotation(gb.rotation, axes, end - mid, new_end - new_mid, normal);
+        let axes = BoneAxes::new(self.primary_axis.into(), secondary);
+        let qa_solved = bone_rotation(ga.rotation, &axes, mid - root, new_mid - root, normal);
+        let qb_solved = bone_rotation(gb.rotation, &axes, end - mid, new_end - new_mid, normal);
         let (qa, qb, mid_w, end_w) = if w >= 1.0 {
             (qa_solved, qb_solved, new_mid, new_end)
         } else {
@@ -218,8 +225,8 @@ impl TwoBoneIk {
         };
 
         pose.set_global(a, Transform { rotation: qa, ..ga }, true);
-        pose.set_global(b, Transform::new(mid_w, qb, gb.scale), true);
-        pose.set_global(effector, Transform::new(end_w, qe, ge.scale), true);
+        pose.set_global(b, Transform::new(mid_w.into(), qb, gb.scale), true);
+        pose.set_global(effector, Transform::new(end_w.into(), qe, ge.scale), true);
         report
     }
 }
@@ -246,11 +253,20 @@ pub fn solve_positions(
     if !(root.is_finite() && mid.is_finite() && end.is_finite() && target.is_finite()) {
         return (mid, end);
     }
-    let Some(dir) = chain_direction(root, mid, end, target) else {
+    let [root_a, mid_a, end_a, target_a] = [root, mid, end, target].map(Vec3A::from);
+    let Some(dir) = chain_direction(root_a, mid_a, end_a, target_a) else {
         return (mid, end);
     };
-    let side = bend_side(dir, [pole_dir, mid - root, dir.any_orthonormal_vector()]);
-    place_joints(root, mid, end, target, dir, side, stretch).unwrap_or((mid, end))
+    let side = bend_side(
+        dir,
+        [
+            pole_dir.into(),
+            mid_a - root_a,
+            dir.any_orthonormal_vector(),
+        ],
+    );
+    place_joints(root_a, mid_a, end_a, target_a, dir, side, stretch)
+        .map_or((mid, end), |(m, e)| (m.into(), e.into()))
 }
 
 /// The factor (≥ 1) by which soft stretch scales both bone lengths, for a target at
@@ -286,11 +302,10 @@ pub fn stretch_scale(stretch: Option<(f32, f32)>, reach_ratio: f32) -> f32 {
 
 /// Unit vector along `v`, or `None` when `v` is shorter than [`LEN_EPS`] or not finite.
 /// A vector whose squared length overflows is divided by its largest component first.
-fn direction(v: Vec3) -> Option<Vec3> {
+fn direction(v: Vec3A) -> Option<Vec3A> {
     let len_sq = v.length_squared();
     if len_sq.is_finite() {
-        // One vector division for the three quotients.
-        return (len_sq > LEN_EPS * LEN_EPS).then(|| (Vec3A::from(v) / len_sq.sqrt()).into());
+        return (len_sq > LEN_EPS * LEN_EPS).then(|| v / len_sq.sqrt());
     }
     let m = v.abs().max_element();
     if !(m > 0.0 && m.is_finite()) {
@@ -307,7 +322,7 @@ fn direction(v: Vec3) -> Option<Vec3> {
 
 /// Direction from `root` to `target`, or the chain's current direction (root → end, else
 /// root → mid) when the target sits on the root. `None` when all three coincide.
-fn chain_direction(root: Vec3, mid: Vec3, end: Vec3, target: Vec3) -> Option<Vec3> {
+fn chain_direction(root: Vec3A, mid: Vec3A, end: Vec3A, target: Vec3A) -> Option<Vec3A> {
     direction(target - root)
         .or_else(|| direction(end - root))
         .or_else(|| direction(mid - root))
@@ -315,9 +330,7 @@ fn chain_direction(root: Vec3, mid: Vec3, end: Vec3, target: Vec3) -> Option<Vec
 
 /// The part of `v` perpendicular to the unit `dir`, normalised; `None` when `v` is zero,
 /// non-finite or within [`PARALLEL_EPS`] of parallel to `dir`.
-fn perpendicular(v: Vec3, dir: Vec3) -> Option<Vec3> {
-    // In SIMD registers: the same sums and products, lane by lane.
-    let (v, dir) = (Vec3A::from(v), Vec3A::from(dir));
+fn perpendicular(v: Vec3A, dir: Vec3A) -> Option<Vec3A> {
     // Not finite (or overflowing when squared) and zero both fail here.
     let len_sq = v.length_squared();
     if !(len_sq > 0.0 && len_sq.is_finite()) {
@@ -327,7 +340,7 @@ fn perpendicular(v: Vec3, dir: Vec3) -> Option<Vec3> {
     if p.length_squared() > PARALLEL_EPS * PARALLEL_EPS * len_sq {
         // A second projection: for a `v` nearly parallel to `dir` the first one cancels
         // most of `v` and leaves a rounding error along `dir` that would tilt the plane.
-        (p - dir * p.dot(dir)).try_normalize().map(Vec3::from)
+        (p - dir * p.dot(dir)).try_normalize()
     } else {
         None
     }
@@ -335,7 +348,7 @@ fn perpendicular(v: Vec3, dir: Vec3) -> Option<Vec3> {
 
 /// The first candidate with a usable part perpendicular to the unit `dir` (normalised), or
 /// an arbitrary perpendicular.
-fn bend_side(dir: Vec3, candidates: [Vec3; 3]) -> Vec3 {
+fn bend_side(dir: Vec3A, candidates: [Vec3A; 3]) -> Vec3A {
     candidates
         .into_iter()
         .find_map(|c| perpendicular(c, dir))
@@ -345,14 +358,14 @@ fn bend_side(dir: Vec3, candidates: [Vec3; 3]) -> Vec3 {
 /// Law of cosines in the plane of the unit `dir` and the unit `side` (perpendicular to it).
 /// `None` when both bones have zero length or the lengths are not finite.
 fn place_joints(
-    root: Vec3,
-    mid: Vec3,
-    end: Vec3,
-    target: Vec3,
-    dir: Vec3,
-    side: Vec3,
+    root: Vec3A,
+    mid: Vec3A,
+    end: Vec3A,
+    target: Vec3A,
+    dir: Vec3A,
+    side: Vec3A,
     stretch: Option<(f32, f32)>,
-) -> Option<(Vec3, Vec3)> {
+) -> Option<(Vec3A, Vec3A)> {
     let l1 = mid.distance(root);
     let l2 = end.distance(mid);
     let total = l1 + l2;
@@ -394,26 +407,25 @@ fn place_joints(
 struct BoneAxes {
     /// The secondary axis as given (made perpendicular to each bone's own direction when
     /// the primary axis is unusable).
-    secondary: Vec3,
+    secondary: Vec3A,
     /// The unit primary axis; `None` when zero or not finite (each bone then uses its own
     /// direction towards its child).
-    primary: Option<Vec3>,
+    primary: Option<Vec3A>,
     /// The secondary axis made perpendicular to `primary` and normalised, when both are
     /// usable.
-    local_secondary: Option<Vec3>,
+    local_secondary: Option<Vec3A>,
     /// With both axes usable, the transpose (inverse) of the local frame (primary,
     /// secondary, primary × secondary): shared by both bones' rotations.
     local_inverse: Option<Mat3A>,
 }
 
 impl BoneAxes {
-    fn new(primary: Vec3, secondary: Vec3) -> Self {
+    fn new(primary: Vec3A, secondary: Vec3A) -> Self {
         let primary = direction(primary);
         let local_secondary = primary.and_then(|p| perpendicular(secondary, p));
-        let local_inverse = primary.zip(local_secondary).map(|(p, s)| {
-            let (p, s) = (Vec3A::from(p), Vec3A::from(s));
-            Mat3A::from_cols(p, s, p.cross(s)).transpose()
-        });
+        let local_inverse = primary
+            .zip(local_secondary)
+            .map(|(p, s)| Mat3A::from_cols(p, s, p.cross(s)).transpose());
         Self {
             secondary,
             primary,
@@ -434,10 +446,10 @@ impl BoneAxes {
 /// turn.
 fn bone_rotation(
     current: Quat,
-    axes: BoneAxes,
-    old_offset: Vec3,
-    new_offset: Vec3,
-    normal: Vec3,
+    axes: &BoneAxes,
+    old_offset: Vec3A,
+    new_offset: Vec3A,
+    normal: Vec3A,
 ) -> Quat {
     let (Some(old_dir), Some(dir)) = (direction(old_offset), direction(new_offset)) else {
         return current;
@@ -445,7 +457,6 @@ fn bone_rotation(
     if let Some(local_inverse) = axes.local_inverse
         && let Some(want) = perpendicular(normal.cross(dir), dir)
     {
-        let (dir, want) = (Vec3A::from(dir), Vec3A::from(want));
         let solved = Mat3A::from_cols(dir, want, dir.cross(want));
         let q = unit_q(Quat::from_mat3a(&(solved * local_inverse)));
         return if q.dot(current) < 0.0 { -q } else { q };
@@ -457,7 +468,7 @@ fn bone_rotation(
             (p, perpendicular(axes.secondary, p))
         }
     };
-    let swung = unit_q(find_quat_between(current * primary, dir) * current);
+    let swung = unit_q(find_quat_between((current * primary).into(), dir.into()) * current);
 
     let Some(local_secondary) = local_secondary else {
         return swung;
@@ -477,7 +488,7 @@ fn bone_rotation(
 /// `(axis·sin θ/2, cos θ/2)` is proportional to `(axis·s, 1 + c)` and to `(axis·(1 − c), s)`;
 /// the first is used up to 90° and the second beyond, where `1 + c` would lose its digits
 /// to cancellation (and vanish at 180°).
-fn twist_between(from: Vec3, to: Vec3, axis: Vec3) -> Quat {
+fn twist_between(from: Vec3A, to: Vec3A, axis: Vec3A) -> Quat {
     let c = from.dot(to);
     let s = from.cross(to).dot(axis);
     let (v, w) = if c >= 0.0 { (s, 1.0 + c) } else { (1.0 - c, s) };
@@ -490,6 +501,11 @@ mod tests {
     use core::f32::consts::{FRAC_PI_2, PI};
     use std::sync::Arc;
     use strider_core::{Bone, Skeleton};
+
+    /// [`perpendicular`] on `Vec3`s.
+    fn perp(v: Vec3, dir: Vec3) -> Option<Vec3> {
+        perpendicular(v.into(), dir.into()).map(Vec3::from)
+    }
 
     // ---------------------------------------------------------------------------------------
     // Fixtures.
@@ -629,13 +645,13 @@ mod tests {
         ] {
             let t = deg.to_radians();
             let to = Vec3::new(t.cos(), t.sin(), 0.0);
-            let q = twist_between(Vec3::X, to, Vec3::Z);
+            let q = twist_between(Vec3A::X, to.into(), Vec3A::Z);
             let want = Quat::from_axis_angle(Vec3::Z, t);
             assert!(q.dot(want).abs() > 1.0 - 1e-6, "{deg}: {q:?} vs {want:?}");
             assert!((q * Vec3::X).distance(to) < 1e-5, "{deg}");
         }
         // A half turn about the given axis, not an arbitrary one.
-        let q = twist_between(Vec3::X, -Vec3::X, Vec3::Z);
+        let q = twist_between(Vec3A::X, -Vec3A::X, Vec3A::Z);
         assert!((q * Vec3::Y).distance(-Vec3::Y) < 1e-6);
         assert!((q * Vec3::Z).distance(Vec3::Z) < 1e-6);
     }
@@ -1490,7 +1506,7 @@ mod tests {
                 // The effector is on the root → target line, at the clamped distance.
                 assert_near(e, root + dir * d.max(lo).min(hi), 1e-3);
                 // The mid joint is in the plane of the chain and the pole, on the pole side.
-                if let Some(side) = perpendicular(pole, dir) {
+                if let Some(side) = perp(pole, dir) {
                     let normal = dir.cross(side);
                     assert!((m - root).dot(normal).abs() < 1e-3, "{ctx}");
                     assert!((m - root).dot(side) >= -1e-3, "{ctx}");
@@ -1530,7 +1546,7 @@ mod tests {
                 primary.any_orthonormal_vector()
             } else {
                 let s = rng.dir();
-                if perpendicular(s, primary).is_some() {
+                if perp(s, primary).is_some() {
                     s
                 } else {
                     primary.any_orthonormal_vector()
@@ -1681,7 +1697,7 @@ mod tests {
             assert!((after[1].rotation * primary).dot(ua) >= 1.0 - 1e-4, "{ctx}");
             assert!((after[2].rotation * primary).dot(ub) >= 1.0 - 1e-4, "{ctx}");
             // Plane and pole side, for a pole that is not parallel to the chain.
-            let Some(side) = perpendicular(pole_vec, dir) else {
+            let Some(side) = perp(pole_vec, dir) else {
                 continue;
             };
             let normal = dir.cross(side);
