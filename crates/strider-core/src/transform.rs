@@ -212,27 +212,35 @@ where
 }
 
 /// `v` in a SIMD register, read as one 8-byte load of `x, y` and one 4-byte load of `z`:
-/// for a `Vec3` that the caller has just stored, such as a query's argument.
+/// for a `Vec3` stored a moment ago, such as a query's argument or its answer.
 ///
 /// That is how a `Vec3` computed in a SIMD register is stored (`movlps` and `movss`), so
 /// each load takes its bytes from one store still in flight and the processor forwards it;
 /// a load straddling two recent stores waits until both reach the cache. Left to itself
-/// the compiler may read `x` alone and `y, z` together, straddling the two stores (a
-/// world's sphere trace did: 3 to 5 % of a locomotion frame's time, see
-/// docs/performance.md).
+/// the compiler may read `x` alone and `y, z` together, or 16 bytes at once when more
+/// bytes follow `v`, straddling the stores (a world's sphere trace did: 3 to 5 % of a
+/// locomotion frame's time, see docs/performance.md). Written by hand because no crate
+/// pins the width of a load; the compiler may not widen the inline `movsd`.
 #[must_use]
 #[inline(always)]
 #[allow(unsafe_code)]
 pub fn load_vec3(v: &Vec3) -> Vec3A {
     #[cfg(target_arch = "x86_64")]
     {
-        use core::arch::x86_64::{_mm_castpd_ps, _mm_load_sd, _mm_load_ss, _mm_movelh_ps};
-        // SAFETY: `Vec3` is `#[repr(C)]` x, y, z: its first 8 bytes are x and y, and `v.z`
-        // is a valid `f32`; both loads are unaligned ones; SSE2 is part of x86_64.
+        use core::arch::x86_64::{__m128, _mm_load_ss, _mm_movelh_ps};
+        let xy: __m128;
+        // SAFETY: `Vec3` is `#[repr(C)]` x, y, z: its first 8 bytes are x and y, read by
+        // one unaligned `movsd` (written out, so that the compiler does not widen it into a
+        // 16-byte load when more bytes follow `v`); `v.z` is a valid `f32`; SSE2 is part
+        // of x86_64.
         unsafe {
-            let xy = _mm_castpd_ps(_mm_load_sd(core::ptr::from_ref(v).cast::<f64>()));
-            let z = _mm_load_ss(&v.z);
-            Vec3A::from(_mm_movelh_ps(xy, z))
+            core::arch::asm!(
+                "movsd {xy}, qword ptr [{p}]",
+                xy = out(xmm_reg) xy,
+                p = in(reg) core::ptr::from_ref(v),
+                options(pure, readonly, nostack, preserves_flags),
+            );
+            Vec3A::from(_mm_movelh_ps(xy, _mm_load_ss(&v.z)))
         }
     }
     #[cfg(not(target_arch = "x86_64"))]

@@ -32,7 +32,8 @@ use crate::program::{Instr, Program};
 use crate::slots::{ScalarLens, Slots};
 use glam::{Affine3A, Quat, Vec3, Vec3A};
 use strider_core::{
-    BoneIndex, DebugColor, DebugDraw, DebugPrimitive, Pose, Transform, WorldQuery, all_finite,
+    BoneIndex, DebugColor, DebugDraw, DebugPrimitive, Pose, TraceHit, Transform, WorldQuery,
+    all_finite, load_vec3,
 };
 use strider_nodes::kernels as k;
 use strider_nodes::kernels::locomotion as loco;
@@ -151,6 +152,17 @@ macro_rules! once {
     ($body:expr) => {
         $body
     };
+}
+
+/// A trace's hit as SIMD vectors (point, normal) and its distance, or `None` for a miss
+/// or a hit with a non-finite component. Read where the world returned it: its vectors
+/// with [`load_vec3`], as stored, not copied out first (a copy reads 16 bytes at a time
+/// across the answer's separate stores, and waits for them to reach the cache).
+#[inline(always)]
+fn read_hit(hit: &Option<TraceHit>) -> Option<(Vec3A, Vec3A, f32)> {
+    let h = hit.as_ref()?;
+    let (point, normal) = (load_vec3(&h.point), load_vec3(&h.normal));
+    all_finite([point, normal, Vec3A::splat(h.distance)]).then_some((point, normal, h.distance))
 }
 
 /// The "next instruction" of an `End`: the event is over.
@@ -601,24 +613,23 @@ macro_rules! execute {
                     $cx.to_world_matrix.transform_point3(start),
                     $cx.to_world_matrix.transform_point3(end),
                 );
+                // Each answer's vectors read in place, as the world stored them (see
+                // `load_vec3` and `read_hit`).
                 let (hit, outs) = if op == Op::LineTrace {
-                    ($cx.world.line_trace(ws, we), 2)
+                    (read_hit(&$cx.world.line_trace(ws, we)), 2)
                 } else {
-                    ($cx.world.sphere_trace(ws, we, f!(2).max(0.0)), 3)
+                    (read_hit(&$cx.world.sphere_trace(ws, we, f!(2).max(0.0))), 3)
                 };
-                let hit = hit.filter(|h| {
-                    all_finite([h.point.into(), h.normal.into(), Vec3A::splat(h.distance)])
-                });
                 match hit {
-                    Some(h) => {
+                    Some((point, normal, distance)) => {
                         let from_world = &$cx.from_world_matrix;
                         b!(outs) = true;
-                        v!(outs + 1) = from_world.transform_point3(h.point);
+                        v!(outs + 1) = from_world.transform_point3a(point).into();
                         // Normalised in SIMD registers (the trace's normal, turned by the
                         // matrix, needs no round trip through three floats).
-                        let normal = from_world.transform_vector3a(h.normal.into());
+                        let normal = from_world.transform_vector3a(normal);
                         v!(outs + 2) = normal.normalize_or_zero().into();
-                        f!(outs + 3) = h.distance;
+                        f!(outs + 3) = distance;
                     }
                     None => {
                         b!(outs) = false;
