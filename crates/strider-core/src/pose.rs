@@ -7,7 +7,7 @@
 //! Nothing here allocates after [`Pose::new`].
 
 use crate::skeleton::{BoneIndex, Skeleton};
-use crate::transform::{Transform, load_vec3};
+use crate::transform::Transform;
 use std::sync::Arc;
 
 /// The current pose of one character: local and global transform per bone.
@@ -154,12 +154,8 @@ impl Pose {
     /// with the bone (RigVM's "Propagate to Children"). Without it the children keep their
     /// global transforms: their locals are recomputed against the new parent.
     pub fn set_global(&mut self, bone: BoneIndex, global: Transform, propagate_to_children: bool) {
-        // Read as the caller stored it a moment ago (see `load_vec3`).
-        let global = Transform::new(
-            load_vec3(&global.translation).into(),
-            global.rotation,
-            load_vec3(&global.scale).into(),
-        );
+        // Read as the caller stored it a moment ago.
+        let global = global.load_stored();
         if !propagate_to_children {
             for k in 0..self.skeleton.children(bone).len() {
                 let c = self.skeleton.children(bone)[k];

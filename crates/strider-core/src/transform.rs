@@ -211,6 +211,20 @@ where
     sum == V::default()
 }
 
+impl Transform {
+    /// A copy of a transform stored a moment ago (an argument, a bone's global just set),
+    /// its vectors read with [`load_vec3`], as they were stored.
+    #[must_use]
+    #[inline(always)]
+    pub fn load_stored(&self) -> Transform {
+        Transform::new(
+            load_vec3(&self.translation).into(),
+            self.rotation,
+            load_vec3(&self.scale).into(),
+        )
+    }
+}
+
 /// `v` in a SIMD register, read as one 8-byte load of `x, y` and one 4-byte load of `z`:
 /// for a `Vec3` stored a moment ago, such as a query's argument or its answer.
 ///
@@ -352,6 +366,16 @@ mod tests {
         for v in &vs {
             assert_eq!(Vec3::from(load_vec3(v)), *v);
         }
+    }
+
+    #[test]
+    fn a_stored_transform_loads_bit_for_bit() {
+        let t = Transform::new(
+            Vec3::new(-0.0, f32::from_bits(0x7fc0_0042), 3.5),
+            Quat::from_xyzw(0.1, -0.2, 0.3, 0.9),
+            Vec3::new(f32::MIN_POSITIVE / 8.0, 0.0, -2.0),
+        );
+        assert!(t.load_stored().bit_eq(&t));
     }
 
     #[test]
