@@ -366,6 +366,8 @@ pub(crate) fn share(program: &mut Program, layouts: &[Vec<Operand>]) {
         {
             map[id] = new_slot(&mut held);
         }
+        // The kept, written slots are the first ones: a batch copies them in and back.
+        program.kept_lens.0[t] = held.len();
         let mut shared: Vec<usize> = range
             .clone()
             .filter(|&id| !kept.contains(id) && group[id] == id as u32 && lo[id] != usize::MAX)
@@ -398,9 +400,6 @@ pub(crate) fn share(program: &mut Program, layouts: &[Vec<Operand>]) {
             }
         }
         *slots = held.len();
-        program.kept_lens.0[t] = (ids.base[t]..ids.base[t + 1])
-            .filter(|&id| kept.contains(id) && written_after.contains(id))
-            .count();
         occupants.push(held);
     }
 
