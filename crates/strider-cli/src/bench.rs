@@ -93,6 +93,11 @@ pub(crate) struct BenchArgs {
     #[arg(long, value_name = "B", default_value_t = 16, value_parser = clap::value_parser!(u32).range(1..=16))]
     pub batch: u32,
 
+    /// Run batches on the baseline x86-64 copy of the batch loop even where the processor
+    /// has AVX2 (results are bit for bit the same; for measuring what AVX2 gives).
+    #[arg(long)]
+    pub baseline_code: bool,
+
     /// Set a graph variable before the first frame; repeatable (as in `strider run`).
     #[arg(long, value_name = "NAME=VALUE")]
     pub set: Vec<String>,
@@ -221,6 +226,8 @@ pub(crate) fn run(args: &BenchArgs) -> anyhow::Result<ExitCode> {
             "--profile needs a build with profiling: cargo run --release --features profile -- bench ..."
         );
     }
+    strider_vm::allow_avx2(!args.baseline_code);
+    let code = strider_vm::batch_code();
     let cores = std::thread::available_parallelism().map_or(1, |n| n.get() as u32);
     let max_threads = args.threads.unwrap_or(cores);
     let native = if args.no_native {
@@ -410,6 +417,7 @@ pub(crate) fn run(args: &BenchArgs) -> anyhow::Result<ExitCode> {
             "warm_up_frames": warm_up,
             "threads": max_threads,
             "batch": args.batch,
+            "batch_code": code.name(),
             "cores": cores,
             "ns_per_character_frame": headline.ns_per_character_frame,
             "characters_per_16ms": headline.characters_per_16ms,
@@ -428,7 +436,7 @@ pub(crate) fn run(args: &BenchArgs) -> anyhow::Result<ExitCode> {
             text,
             "graph       {} ({})\nscenario    {} ({}), 60 Hz input, characters offset in time\n\
              workload    {n} characters x {} frames x {} repetitions per thread count, after {} warm-up frames\n\
-             batch       {} characters through each instruction together (native: each alone)\n\
+             batch       {} characters through each instruction together (native: each alone), {} code\n\
              machine     {cores} cores\n\
              compile     {compile_ms:.2} ms (load + validate + compile, median of {COMPILES})\n",
             program.name(),
@@ -439,6 +447,7 @@ pub(crate) fn run(args: &BenchArgs) -> anyhow::Result<ExitCode> {
             args.repetitions,
             warm_up,
             args.batch,
+            code.name(),
         );
         let _ = writeln!(
             text,

@@ -27,6 +27,8 @@
 // code.
 #![allow(unsafe_code)]
 
+#[cfg(target_arch = "x86_64")]
+use crate::batch_code::{BatchCode, batch_code};
 use crate::lanes::{Copies, LANES, Lanes};
 use crate::program::{Instr, Program};
 use crate::slots::{ScalarLens, Slots};
@@ -1056,8 +1058,41 @@ pub(crate) fn run_batch(
             Some(lanes) => lanes,
             None => own.insert(Lanes::default()),
         };
-        run_group::<true>(code, operands, entry, copies, members, lanes)
+        run_group_lanes(code, operands, entry, copies, members, lanes)
     })
+}
+
+/// `run_group::<true>` on the machine code `batch_code()` picks (see
+/// [`crate::batch_code`]).
+fn run_group_lanes(
+    code: &[Instr],
+    operands: &[u32],
+    entry: u32,
+    copies: Copies<'_>,
+    members: &mut [Ctx<'_>],
+    lanes: &mut Lanes,
+) -> usize {
+    #[cfg(target_arch = "x86_64")]
+    if batch_code() == BatchCode::Avx2 {
+        // SAFETY: the processor has AVX2 (`batch_code` checked it).
+        return unsafe { run_group_avx2(code, operands, entry, copies, members, lanes) };
+    }
+    run_group::<true>(code, operands, entry, copies, members, lanes)
+}
+
+/// `run_group::<true>` compiled for AVX2: the same source (inlined here), wider registers.
+/// Callers must make sure the processor has AVX2.
+#[cfg(target_arch = "x86_64")]
+#[target_feature(enable = "avx2")]
+fn run_group_avx2(
+    code: &[Instr],
+    operands: &[u32],
+    entry: u32,
+    copies: Copies<'_>,
+    members: &mut [Ctx<'_>],
+    lanes: &mut Lanes,
+) -> usize {
+    run_group::<true>(code, operands, entry, copies, members, lanes)
 }
 
 /// Whether a program of `code_len` instructions over scalar slots `lens` runs its batches
@@ -1070,8 +1105,10 @@ fn lanes_pay_off(code_len: usize, lens: &ScalarLens) -> bool {
 }
 
 /// [`run_batch`], on `lanes` (`LANES`: the members' scalar slots are copied into them, run
-/// there and copied back) or on each member's own slots.
+/// there and copied back) or on each member's own slots. Always inlined, so that
+/// [`run_group_avx2`] compiles the whole loop, wide ops and lane copies included, for AVX2.
 #[allow(unused_assignments)]
+#[inline(always)]
 fn run_group<const LANES: bool>(
     code: &[Instr],
     operands: &[u32],

@@ -92,6 +92,7 @@ impl Lanes {
     /// they are shorter). `members` has at most [`BATCH`] members, each covering `lens`.
     /// Member by member: each member's array is read in order into its lane (every
     /// [`BATCH`]th item).
+    #[inline(always)]
     pub(crate) fn load(&mut self, copies: Copies<'_>, members: &[Ctx<'_>]) {
         assert!(members.len() <= BATCH, "a batch has at most BATCH members");
         macro_rules! load {
@@ -123,6 +124,7 @@ impl Lanes {
 
     /// Copies each scalar type's slots `0..copies.kept` back to every member, member by
     /// member.
+    #[inline(always)]
     pub(crate) fn store(&self, copies: Copies<'_>, members: &mut [Ctx<'_>]) {
         assert!(members.len() <= BATCH, "a batch has at most BATCH members");
         macro_rules! store {

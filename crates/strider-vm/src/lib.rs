@@ -22,6 +22,7 @@
 //! Programs are built by the compiler (`strider-compiler`), which guarantees what the
 //! executor trusts: operand counts and slot types match the op.
 
+mod batch_code;
 mod exec;
 mod fusion;
 pub mod instance;
@@ -32,6 +33,7 @@ pub mod program;
 mod sharing;
 pub mod slots;
 
+pub use batch_code::{BatchCode, allow_avx2, batch_code};
 pub use instance::{
     FrameInput, InputPose, Instance, InstantiateError, MissingBone, NativeMismatch, VariableError,
 };

@@ -1,0 +1,93 @@
+//! The batch loop's two copies of machine code (`strider::vm::batch_code`: the baseline
+//! x86-64 one and the AVX2 one) give a crowd bit-identical poses, debug drawing, variables
+//! and slots, frame by frame, through scenarios where the characters branch apart.
+//!
+//! One test in its own binary: `allow_avx2` switches the whole process, so no other test
+//! may run batches at the same time.
+
+use std::path::Path;
+use std::sync::Arc;
+use strider::host::scenario::{Scenario, Simulation};
+use strider::vm::{BatchCode, VariableId, allow_avx2, batch_code};
+use strider::{FrameInput, InputPose, Instance, Transform};
+
+/// Runs `characters` locomotion instances through `scenario` at `hz` (character `k` offset
+/// by `5 k` frames), one crowd on each copy of the batch loop, and compares them every frame.
+fn both_copies_agree(scenario: &str, hz: u32, characters: usize, frames: usize) {
+    let program = Arc::new(
+        strider::compile_file(Path::new("graphs/locomotion.ron")).expect("locomotion compiles"),
+    );
+    let skeleton = strider::load_skeleton(Path::new("graphs/skeletons/mannequin.ron"))
+        .expect("skeleton")
+        .skeleton;
+    let scenario = Scenario::load(scenario).expect("scenario");
+    let mut sim = Simulation::new(&scenario, hz);
+    let mut track: Vec<(f32, Transform)> = Vec::new();
+    while let Some(frame) = sim.next_frame() {
+        track.push((frame.dt, frame.component_to_world));
+    }
+    let make = || -> Vec<Instance> {
+        (0..characters)
+            .map(|_| Instance::new(Arc::clone(&program), Arc::clone(&skeleton)).unwrap())
+            .collect()
+    };
+    let (mut wide, mut baseline) = (make(), make());
+    for f in 0..frames {
+        let input = |k: usize| {
+            let (dt, component_to_world) = track[(f + 5 * k) % track.len()];
+            FrameInput {
+                dt,
+                component_to_world,
+                pose: InputPose::Rest,
+            }
+        };
+        let debug = f % 3 == 0 || f + 1 == frames;
+        allow_avx2(true);
+        assert_eq!(batch_code(), BatchCode::Avx2);
+        Instance::run_forward_batch(&mut wide, input, sim.world(), debug);
+        allow_avx2(false);
+        assert_eq!(batch_code(), BatchCode::Baseline);
+        Instance::run_forward_batch(&mut baseline, input, sim.world(), debug);
+        for (k, (a, b)) in wide.iter().zip(&baseline).enumerate() {
+            let (pa, pb) = (a.pose().locals(), b.pose().locals());
+            assert!(
+                pa.iter().zip(pb).all(|(x, y)| x.bit_eq(y)),
+                "{}: character {k}'s pose differs at frame {f}",
+                scenario.name
+            );
+            assert_eq!(
+                a.debug_draw().primitives(),
+                b.debug_draw().primitives(),
+                "{}: character {k}'s drawing differs at frame {f}",
+                scenario.name
+            );
+            for (v, info) in program.variables().iter().enumerate() {
+                let id = VariableId(v as u32);
+                assert_eq!(
+                    format!("{:?}", a.variable(id)),
+                    format!("{:?}", b.variable(id)),
+                    "{}: character {k}'s {} differs at frame {f}",
+                    scenario.name,
+                    info.name
+                );
+            }
+        }
+    }
+    // The last frame ran with debug: every written slot came back.
+    for (k, (a, b)) in wide.iter().zip(&baseline).enumerate() {
+        assert!(a.slots().bit_eq(b.slots()), "character {k}'s slots differ");
+    }
+}
+
+#[test]
+fn the_avx2_batch_loop_gives_what_the_baseline_one_gives() {
+    allow_avx2(true);
+    if batch_code() == BatchCode::Baseline {
+        // No AVX2 here (or not x86-64): there is one copy, and the switch cannot add one.
+        eprintln!("this processor has no AVX2: only the baseline batch loop exists here");
+        return;
+    }
+    both_copies_agree("graphs/scenarios/strafe_8dir.ron", 60, 19, 120);
+    both_copies_agree("graphs/scenarios/stairs_up_down.ron", 144, 17, 120);
+    allow_avx2(true);
+}
