@@ -72,6 +72,47 @@ fn a_crowd_on_two_threads_reports_every_figure() {
     assert!(f(&j["instance_bytes"]) > pose, "{j}");
 }
 
+/// Locomotion runs on lanes, where a batch does not copy back the slots of values that
+/// live only within a run: the bench still finds its outputs bit-identical to the native
+/// code's (its last check frame runs with debug, which brings every slot back), on either
+/// copy of the batch loop.
+#[test]
+fn a_batched_locomotion_crowd_matches_its_native_code_on_either_batch_loop() {
+    for baseline in [false, true] {
+        let mut args = vec![
+            "graphs/locomotion.ron",
+            "--skeleton",
+            "graphs/skeletons/mannequin.ron",
+            "--scenario",
+            "graphs/scenarios/strafe_8dir.ron",
+            "--characters",
+            "17",
+            "--frames",
+            "2",
+            "--repetitions",
+            "1",
+            "--threads",
+            "1",
+            "--warm-up",
+            "30",
+            "--json",
+        ];
+        if baseline {
+            args.push("--baseline-code");
+        }
+        let (ok, j, err) = bench(&args);
+        assert!(ok, "{err}");
+        assert_eq!(j["batch"], 16);
+        assert_eq!(j["native_identical"], true, "{j}");
+        let code = j["batch_code"].as_str().expect("batch_code");
+        if baseline {
+            assert_eq!(code, "baseline");
+        } else {
+            assert_eq!(code, strider::vm::batch_code().name());
+        }
+    }
+}
+
 #[test]
 fn a_graph_without_native_code_has_no_ratio() {
     let (ok, j, err) = bench(&[

@@ -158,7 +158,8 @@ struct Crowd {
 }
 
 impl Crowd {
-    /// Runs every character one frame (`frame` counts from the start of the run).
+    /// Runs every character one frame (`frame` counts from the start of the run), with
+    /// debug drawing off.
     fn run_frame(
         &mut self,
         track: &Track,
@@ -166,6 +167,21 @@ impl Crowd {
         frame: usize,
         native: Option<&NativeProgram>,
         threads: u32,
+    ) {
+        self.run_frame_with(track, world, frame, native, threads, false);
+    }
+
+    /// [`Crowd::run_frame`] with debug drawing on or off. A batch run with debug leaves
+    /// every slot as running each character alone would (without it, the slots of values
+    /// that live only within a run keep what an earlier run left).
+    fn run_frame_with(
+        &mut self,
+        track: &Track,
+        world: &World,
+        frame: usize,
+        native: Option<&NativeProgram>,
+        threads: u32,
+        debug: bool,
     ) {
         let input = |offset: usize| {
             let (dt, to_world) = track.inputs[(frame + offset) % track.inputs.len()];
@@ -177,7 +193,7 @@ impl Crowd {
         };
         if native.is_none() && self.batch > 1 {
             let run = |(instances, offsets): (&mut [Instance], &[usize])| {
-                Instance::run_forward_batch(instances, |k| input(offsets[k]), world, false);
+                Instance::run_forward_batch(instances, |k| input(offsets[k]), world, debug);
             };
             let (instances, offsets) = (&mut self.instances, &self.offsets);
             if threads == 1 {
@@ -198,9 +214,9 @@ impl Crowd {
             match native {
                 // Checked once before timing: cannot fail here.
                 Some(native) => {
-                    let _ = instance.run_forward_native(native, &input, world, false);
+                    let _ = instance.run_forward_native(native, &input, world, debug);
                 }
-                None => instance.run_forward(&input, world, false),
+                None => instance.run_forward(&input, world, debug),
             }
         };
         if threads == 1 {
@@ -370,6 +386,12 @@ pub(crate) fn run(args: &BenchArgs) -> anyhow::Result<ExitCode> {
     let single = rows[0].ns_per_character_frame.median;
     for row in &mut rows {
         row.speedup = single / row.ns_per_character_frame.median;
+    }
+    // One more frame of both crowds, with debug, so that a batch brings back every slot
+    // (see `run_frame_with`); then every slot and bone must be the same.
+    if let (Some(c), Some(code)) = (native_crowd.as_mut(), native) {
+        crowd.run_frame_with(&track, &world, frame, None, 1, true);
+        c.run_frame_with(&track, &world, frame, Some(code), 1, true);
     }
     let identical = match &native_crowd {
         Some(c) => Some(
