@@ -4,8 +4,11 @@
 //! ```text
 //! cargo build --release -p strider-vm --example op_cost
 //! valgrind --tool=callgrind --toggle-collect='strider_vm::instance::Instance::run_forward_batch' \
-//!     target/release/examples/op_cost OP REPS FRAMES
+//!     target/release/examples/op_cost OP REPS FRAMES [baseline]
 //! ```
+//!
+//! With `baseline` the batches run the baseline x86-64 copy of the batch loop, not the
+//! AVX2 one (`strider_vm::allow_avx2`).
 //!
 //! `OP` is the op's `Debug` name (`AddF`, `Select(Float)`, `RotateAroundPoint`, ...). The
 //! instructions of a run with 400 reps minus those of a run with 200, divided by
@@ -36,7 +39,7 @@ fn input(ty: ValueType) -> Value {
 
 fn main() -> Result<(), String> {
     let mut args = std::env::args().skip(1);
-    let usage = "usage: op_cost OP [REPS] [FRAMES]";
+    let usage = "usage: op_cost OP [REPS] [FRAMES] [baseline]";
     let name = args.next().ok_or(usage)?;
     let number = |arg: Option<String>, default: usize| {
         arg.map_or(Ok(default), |s| {
@@ -45,6 +48,11 @@ fn main() -> Result<(), String> {
     };
     let reps = number(args.next(), 200)?;
     let frames = number(args.next(), 10)?;
+    match args.next().as_deref() {
+        None => {}
+        Some("baseline") => strider_vm::allow_avx2(false),
+        Some(other) => return Err(format!("{other}: expected `baseline`; {usage}")),
+    }
     let op = strider_nodes::registry()
         .nodes()
         .iter()

@@ -497,13 +497,22 @@ pub(crate) unsafe fn run_wide(
         (ScaleV, $b:expr) => { lanes!(vec3s[$b + 2] = |a: vec3s[$b], b: floats[$b + 1]| a * b) };
     }
     // The Select of a type: operand 0 the condition, 1 and 2 the choices, 3 the result.
-    // Small values as a vectorised loop; vectors, rotations and transforms lane by lane
+    // Small values as a vectorised loop (ints and floats through a mask made of the
+    // condition, bit for bit the chosen value, which the compiler does several lanes at a
+    // time: 4.4 instead of 10 machine instructions per character with AVX2, 7 instead of
+    // 9.5–10 without); vectors, rotations and transforms lane by lane
     // through the blocks' pointers (a lane is read before it is written, so the result
     // may share a choice's block), without copying whole blocks of them.
     macro_rules! select {
         (bools) => { lanes!(bools[3] = |c: bools[0], x: bools[1], y: bools[2]| if c { x } else { y }) };
-        (ints) => { lanes!(ints[3] = |x: ints[1], y: ints[2]; ref c: bools[0]| if c { x } else { y }) };
-        (floats) => { lanes!(floats[3] = |x: floats[1], y: floats[2]; ref c: bools[0]| if c { x } else { y }) };
+        (ints) => { lanes!(ints[3] = |x: ints[1], y: ints[2], c: bools[0]| {
+            let mask = i32::from(c).wrapping_neg();
+            (x & mask) | (y & !mask)
+        }) };
+        (floats) => { lanes!(floats[3] = |x: floats[1], y: floats[2], c: bools[0]| {
+            let mask = u32::from(c).wrapping_neg();
+            f32::from_bits((x.to_bits() & mask) | (y.to_bits() & !mask))
+        }) };
         ($a:ident) => {{
             // SAFETY: as in `lanes!`.
             unsafe {
