@@ -387,6 +387,16 @@ pub(crate) fn run(args: &BenchArgs) -> anyhow::Result<ExitCode> {
     for row in &mut rows {
         row.speedup = single / row.ns_per_character_frame.median;
     }
+    let allocations_per_frame = allocations.map(|a| a as f64 / timed_frames.max(1) as f64);
+    // The largest instance once warmed up (their buffers no longer grow).
+    // Measured before the check frame below, whose debug drawing fills the debug buffer
+    // (the timed frames run without).
+    let instance_bytes = crowd
+        .instances
+        .iter()
+        .map(Instance::memory_bytes)
+        .max()
+        .unwrap_or(0);
     // One more frame of both crowds, with debug, so that a batch brings back every slot
     // (see `run_frame_with`); then every slot and bone must be the same.
     if let (Some(c), Some(code)) = (native_crowd.as_mut(), native) {
@@ -403,14 +413,6 @@ pub(crate) fn run(args: &BenchArgs) -> anyhow::Result<ExitCode> {
         ),
         None => None,
     };
-    let allocations_per_frame = allocations.map(|a| a as f64 / timed_frames.max(1) as f64);
-    // The largest instance once warmed up (their buffers no longer grow).
-    let instance_bytes = crowd
-        .instances
-        .iter()
-        .map(Instance::memory_bytes)
-        .max()
-        .unwrap_or(0);
     let profile = if args.profile {
         Some(profile_top(
             &program,
