@@ -12,9 +12,9 @@
 //! arithmetic. Fused multiply-add (`fma`, which rounds once where a multiply and an add
 //! round twice) is not enabled, and Rust never fuses a multiply and an add on its own; glam
 //! chooses its own code paths when it is compiled (for the build's target), not per
-//! function. So a crowd gives the same poses on a processor with AVX2 and one without,
-//! and `tests/batch.rs` checks the AVX2 copy against the baseline and against each
-//! character run alone.
+//! function. So a crowd gives the same poses on a processor with AVX2 and one without:
+//! `tests/batch_code.rs` checks the AVX2 copy against the baseline frame by frame, and
+//! `tests/batch.rs` checks batches against each character run alone.
 //!
 //! Kernels the loop calls without inlining (the two-bone IK, the pose's global transforms,
 //! the world's traces) run the baseline code either way.
