@@ -7,9 +7,10 @@
 
 use std::path::Path;
 use std::sync::Arc;
-use strider::host::scenario::{Scenario, Simulation};
-use strider::vm::VariableId;
-use strider::{EmptyWorld, FrameInput, InputPose, Instance, Program, Skeleton, Transform};
+use strider::host::scenario::Scenario;
+use strider::{EmptyWorld, FrameInput, InputPose, Instance, Program, Skeleton};
+
+mod common;
 
 fn compile(graph: &str) -> Arc<Program> {
     Arc::new(strider::compile_file(Path::new(graph)).unwrap_or_else(|d| panic!("{graph}: {d:?}")))
@@ -34,11 +35,7 @@ fn batched_equals_alone(graph: &str, scenario: &str, hz: u32, characters: usize,
     let program = compile(graph);
     let skeleton = mannequin();
     let scenario = Scenario::load(scenario).expect("scenario");
-    let mut sim = Simulation::new(&scenario, hz);
-    let mut track: Vec<(f32, Transform)> = Vec::new();
-    while let Some(frame) = sim.next_frame() {
-        track.push((frame.dt, frame.component_to_world));
-    }
+    let (sim, track) = common::track(&scenario, hz);
     assert!(track.len() > 60, "{} frames", track.len());
     let make = || -> Vec<Instance> {
         (0..characters)
@@ -46,6 +43,7 @@ fn batched_equals_alone(graph: &str, scenario: &str, hz: u32, characters: usize,
             .collect()
     };
     let (mut batched, mut alone) = (make(), make());
+    let what = format!("{graph} in {}", scenario.name);
     for f in 0..frames {
         let input = |k: usize| {
             let (dt, component_to_world) = track[(f + 7 * k) % track.len()];
@@ -62,36 +60,13 @@ fn batched_equals_alone(graph: &str, scenario: &str, hz: u32, characters: usize,
             instance.run_forward(&input(k), sim.world(), debug);
         }
         for (k, (a, b)) in batched.iter().zip(&alone).enumerate() {
-            assert!(
-                same_pose(a, b),
-                "{graph} in {}: character {k}'s pose differs at frame {f}",
-                scenario.name
-            );
-            assert_eq!(
-                a.debug_draw().primitives(),
-                b.debug_draw().primitives(),
-                "{graph} in {}: character {k}'s drawing differs at frame {f}",
-                scenario.name
-            );
-            for (v, info) in program.variables().iter().enumerate() {
-                let id = VariableId(v as u32);
-                // Debug text compares floats by value and sign (bit for bit but a NaN's
-                // payload).
-                assert_eq!(
-                    format!("{:?}", a.variable(id)),
-                    format!("{:?}", b.variable(id)),
-                    "{graph} in {}: character {k}'s {} differs at frame {f}",
-                    scenario.name,
-                    info.name
-                );
-            }
+            common::assert_same_frame(&what, &program, k, f, a, b);
         }
     }
     for (k, (a, b)) in batched.iter().zip(&alone).enumerate() {
         assert!(
             a.slots().bit_eq(b.slots()),
-            "{graph} in {}: character {k}'s slots differ",
-            scenario.name
+            "{what}: character {k}'s slots differ"
         );
     }
 }

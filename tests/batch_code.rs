@@ -7,9 +7,11 @@
 
 use std::path::Path;
 use std::sync::Arc;
-use strider::host::scenario::{Scenario, Simulation};
-use strider::vm::{BatchCode, VariableId, allow_avx2, batch_code};
-use strider::{FrameInput, InputPose, Instance, Transform};
+use strider::host::scenario::Scenario;
+use strider::vm::{BatchCode, allow_avx2, batch_code};
+use strider::{FrameInput, InputPose, Instance};
+
+mod common;
 
 /// Runs `characters` locomotion instances through `scenario` at `hz` (character `k` offset
 /// by `5 k` frames), one crowd on each copy of the batch loop, and compares them every frame.
@@ -21,11 +23,7 @@ fn both_copies_agree(scenario: &str, hz: u32, characters: usize, frames: usize) 
         .expect("skeleton")
         .skeleton;
     let scenario = Scenario::load(scenario).expect("scenario");
-    let mut sim = Simulation::new(&scenario, hz);
-    let mut track: Vec<(f32, Transform)> = Vec::new();
-    while let Some(frame) = sim.next_frame() {
-        track.push((frame.dt, frame.component_to_world));
-    }
+    let (sim, track) = common::track(&scenario, hz);
     let make = || -> Vec<Instance> {
         (0..characters)
             .map(|_| Instance::new(Arc::clone(&program), Arc::clone(&skeleton)).unwrap())
@@ -49,28 +47,7 @@ fn both_copies_agree(scenario: &str, hz: u32, characters: usize, frames: usize) 
         assert_eq!(batch_code(), BatchCode::Baseline);
         Instance::run_forward_batch(&mut baseline, input, sim.world(), debug);
         for (k, (a, b)) in wide.iter().zip(&baseline).enumerate() {
-            let (pa, pb) = (a.pose().locals(), b.pose().locals());
-            assert!(
-                pa.iter().zip(pb).all(|(x, y)| x.bit_eq(y)),
-                "{}: character {k}'s pose differs at frame {f}",
-                scenario.name
-            );
-            assert_eq!(
-                a.debug_draw().primitives(),
-                b.debug_draw().primitives(),
-                "{}: character {k}'s drawing differs at frame {f}",
-                scenario.name
-            );
-            for (v, info) in program.variables().iter().enumerate() {
-                let id = VariableId(v as u32);
-                assert_eq!(
-                    format!("{:?}", a.variable(id)),
-                    format!("{:?}", b.variable(id)),
-                    "{}: character {k}'s {} differs at frame {f}",
-                    scenario.name,
-                    info.name
-                );
-            }
+            common::assert_same_frame(&scenario.name, &program, k, f, a, b);
         }
     }
     // The last frame ran with debug: every written slot came back.

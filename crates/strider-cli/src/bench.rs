@@ -158,23 +158,11 @@ struct Crowd {
 }
 
 impl Crowd {
-    /// Runs every character one frame (`frame` counts from the start of the run), with
-    /// debug drawing off.
+    /// Runs every character one frame (`frame` counts from the start of the run). The timed
+    /// frames run without `debug`; a batch run with it leaves every slot as running each
+    /// character alone would (without it, the slots of values that live only within a run
+    /// keep what an earlier run left).
     fn run_frame(
-        &mut self,
-        track: &Track,
-        world: &World,
-        frame: usize,
-        native: Option<&NativeProgram>,
-        threads: u32,
-    ) {
-        self.run_frame_with(track, world, frame, native, threads, false);
-    }
-
-    /// [`Crowd::run_frame`] with debug drawing on or off. A batch run with debug leaves
-    /// every slot as running each character alone would (without it, the slots of values
-    /// that live only within a run keep what an earlier run left).
-    fn run_frame_with(
         &mut self,
         track: &Track,
         world: &World,
@@ -243,7 +231,7 @@ pub(crate) fn run(args: &BenchArgs) -> anyhow::Result<ExitCode> {
         );
     }
     strider_vm::allow_avx2(!args.baseline_code);
-    let code = strider_vm::batch_code();
+    let batch_code = strider_vm::batch_code();
     let cores = std::thread::available_parallelism().map_or(1, |n| n.get() as u32);
     let max_threads = args.threads.unwrap_or(cores);
     let native = if args.no_native {
@@ -306,9 +294,9 @@ pub(crate) fn run(args: &BenchArgs) -> anyhow::Result<ExitCode> {
     let mut frame = 0usize;
     bar.set_message("warm-up");
     for _ in 0..warm_up {
-        crowd.run_frame(&track, &world, frame, None, 1);
+        crowd.run_frame(&track, &world, frame, None, 1, false);
         if let (Some(c), Some(code)) = (native_crowd.as_mut(), native) {
-            c.run_frame(&track, &world, frame, Some(code), 1);
+            c.run_frame(&track, &world, frame, Some(code), 1, false);
         }
         frame += 1;
     }
@@ -324,9 +312,9 @@ pub(crate) fn run(args: &BenchArgs) -> anyhow::Result<ExitCode> {
             let mut native_times = Vec::new();
             // One untimed frame on these threads first (their first jobs set up per-thread
             // state of the scheduler).
-            crowd.run_frame(&track, &world, frame, None, t);
+            crowd.run_frame(&track, &world, frame, None, t, false);
             if let (Some(c), Some(code)) = (native_crowd.as_mut(), native) {
-                c.run_frame(&track, &world, frame, Some(code), t);
+                c.run_frame(&track, &world, frame, Some(code), t, false);
             }
             frame += 1;
             for rep in 0..args.repetitions {
@@ -345,7 +333,7 @@ pub(crate) fn run(args: &BenchArgs) -> anyhow::Result<ExitCode> {
                     let (elapsed, counted) = alloc_count::count(|| {
                         let start = Instant::now();
                         for f in 0..args.frames as usize {
-                            c.run_frame(&track, &world, start_frame + f, code, t);
+                            c.run_frame(&track, &world, start_frame + f, code, t, false);
                         }
                         start.elapsed()
                     });
@@ -398,10 +386,10 @@ pub(crate) fn run(args: &BenchArgs) -> anyhow::Result<ExitCode> {
         .max()
         .unwrap_or(0);
     // One more frame of both crowds, with debug, so that a batch brings back every slot
-    // (see `run_frame_with`); then every slot and bone must be the same.
+    // (see `Crowd::run_frame`); then every slot and bone must be the same.
     if let (Some(c), Some(code)) = (native_crowd.as_mut(), native) {
-        crowd.run_frame_with(&track, &world, frame, None, 1, true);
-        c.run_frame_with(&track, &world, frame, Some(code), 1, true);
+        crowd.run_frame(&track, &world, frame, None, 1, true);
+        c.run_frame(&track, &world, frame, Some(code), 1, true);
     }
     let identical = match &native_crowd {
         Some(c) => Some(
@@ -441,7 +429,7 @@ pub(crate) fn run(args: &BenchArgs) -> anyhow::Result<ExitCode> {
             "warm_up_frames": warm_up,
             "threads": max_threads,
             "batch": args.batch,
-            "batch_code": code.name(),
+            "batch_code": batch_code.name(),
             "cores": cores,
             "ns_per_character_frame": headline.ns_per_character_frame,
             "characters_per_16ms": headline.characters_per_16ms,
@@ -471,7 +459,7 @@ pub(crate) fn run(args: &BenchArgs) -> anyhow::Result<ExitCode> {
             args.repetitions,
             warm_up,
             args.batch,
-            code.name(),
+            batch_code.name(),
         );
         let _ = writeln!(
             text,
@@ -609,12 +597,12 @@ fn profile_top(
         batch: 1,
     };
     for f in 0..warm_up {
-        crowd.run_frame(track, world, f, None, 1);
+        crowd.run_frame(track, world, f, None, 1, false);
     }
     crowd.instances[0].set_profiling(true);
     let frames = track.inputs.len().max(args.frames as usize);
     for f in 0..frames {
-        crowd.run_frame(track, world, warm_up + f, None, 1);
+        crowd.run_frame(track, world, warm_up + f, None, 1, false);
     }
     let nodes = crowd.instances[0].profile_by_node();
     let total: u64 = nodes.iter().map(|n| n.nanos).sum();
