@@ -122,14 +122,7 @@ impl Transform {
     #[must_use]
     #[inline]
     pub fn inverse(&self) -> Self {
-        // `1 / x`, or 0 where `x` is 0 (a collapsed axis stays collapsed instead of
-        // exploding), for the three axes at once.
-        let scale = Vec3A::from(self.scale);
-        let inv_scale = Vec3::from(Vec3A::select(
-            scale.cmpeq(Vec3A::ZERO),
-            Vec3A::ZERO,
-            Vec3A::ONE / scale,
-        ));
+        let inv_scale = Vec3::from(reciprocal_or_zero(self.scale));
         let inv_rotation = self.rotation.inverse();
         let translation = inv_scale * (inv_rotation * -self.translation);
         Self {
@@ -139,12 +132,24 @@ impl Transform {
         }
     }
 
-    /// `self` expressed relative to `parent`: `parent.inverse() * self`
-    /// (RigVM's "Make Relative").
+    /// `self` expressed relative to `parent` (RigVM's "Make Relative", Unreal's
+    /// `GetRelativeTransform`): the local transform `l` with `parent * l == self`, for any
+    /// scale, uniform or not. Rotation `p.r⁻¹ · r` (normalised, as a product in
+    /// [`Mul`](core::ops::Mul) is), scale `s / p.s`, translation `(p.r⁻¹ · (t − p.t)) / p.s`;
+    /// a zero parent scale component divides by nothing and gives 0 on that axis, as in
+    /// [`Transform::inverse`]. For uniform scale this is `parent.inverse() * self`, with one
+    /// rotation of a vector fewer.
     #[must_use]
     #[inline]
     pub fn relative_to(&self, parent: &Self) -> Self {
-        parent.inverse() * *self
+        let inv_scale = reciprocal_or_zero(parent.scale);
+        let inv_rotation = parent.rotation.inverse();
+        let offset = Vec3A::from(self.translation) - Vec3A::from(parent.translation);
+        Self {
+            translation: (inv_scale * (inv_rotation * offset)).into(),
+            rotation: (inv_rotation * self.rotation).normalize(),
+            scale: (inv_scale * Vec3A::from(self.scale)).into(),
+        }
     }
 
     /// The bit patterns of every component: translation, rotation (x, y, z, w), scale.
@@ -193,6 +198,14 @@ impl core::ops::Mul for Transform {
             scale: self.scale * rhs.scale,
         }
     }
+}
+
+/// `1 / x` per axis, or 0 where `x` is 0 (a collapsed axis stays collapsed instead of
+/// exploding), for the three axes at once.
+#[inline]
+fn reciprocal_or_zero(scale: Vec3) -> Vec3A {
+    let scale = Vec3A::from(scale);
+    Vec3A::select(scale.cmpeq(Vec3A::ZERO), Vec3A::ZERO, Vec3A::ONE / scale)
 }
 
 /// Whether every component of `values` is finite (no NaN, no infinity). `x − x` is 0 for
@@ -432,5 +445,42 @@ mod tests {
         assert_vec_near(global.translation, Vec3::new(0.0, 0.0, 55.0));
         let back = global.relative_to(&parent);
         assert_vec_near(back.translation, local.translation);
+    }
+
+    #[test]
+    fn relative_to_inverts_a_parent_with_non_uniform_scale() {
+        // Parent at (10, 0, 0), turned 90° about Z (X → Y), stretched 2× along its own X.
+        // A child 2 cm along the parent's X sits at (10, 0, 0) + Rz(90°)·(2·2, 0, 0) =
+        // (10, 4, 0); its scale (1, 3, 1) becomes (2, 3, 1). Back from the globals: (2, 0, 0)
+        // and (1, 3, 1). (`parent.inverse() * global` gives (4, 5, 0) here: the inverse of a
+        // non-uniformly scaled rotation is not a transform of this form.)
+        let parent = Transform::new(
+            Vec3::new(10.0, 0.0, 0.0),
+            Quat::from_rotation_z(FRAC_PI_2),
+            Vec3::new(2.0, 1.0, 1.0),
+        );
+        let global = Transform::new(
+            Vec3::new(10.0, 4.0, 0.0),
+            Quat::from_rotation_z(FRAC_PI_2) * Quat::from_rotation_x(0.5),
+            Vec3::new(2.0, 3.0, 1.0),
+        );
+        let local = global.relative_to(&parent);
+        assert_vec_near(local.translation, Vec3::new(2.0, 0.0, 0.0));
+        assert_vec_near(local.scale, Vec3::new(1.0, 3.0, 1.0));
+        assert!(local.rotation.angle_between(Quat::from_rotation_x(0.5)) < 1e-6);
+        // And the parent carries it back onto the global.
+        let again = parent * local;
+        assert_vec_near(again.translation, global.translation);
+        assert_vec_near(again.scale, global.scale);
+    }
+
+    #[test]
+    fn relative_to_a_collapsed_parent_axis_stays_finite() {
+        let parent = Transform::new(Vec3::ZERO, Quat::IDENTITY, Vec3::new(0.0, 2.0, 1.0));
+        let global = Transform::new(Vec3::new(3.0, 4.0, 5.0), Quat::IDENTITY, Vec3::ONE);
+        let local = global.relative_to(&parent);
+        assert!(local.is_finite());
+        assert_vec_near(local.translation, Vec3::new(0.0, 2.0, 5.0));
+        assert_vec_near(local.scale, Vec3::new(0.0, 0.5, 1.0));
     }
 }
