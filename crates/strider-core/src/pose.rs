@@ -181,6 +181,41 @@ impl Pose {
         }
     }
 
+    /// Sets the rig-space transforms of a chain `[a, b, c]`, each with
+    /// `propagate_to_children` (as [`Pose::set_global`] on `a`, then `b`, then `c`: bones
+    /// below them keep their locals and follow). When `b` is `a`'s child and `c` is `b`'s,
+    /// as in a limb, the locals are computed along the chain in one pass and `a`'s subtree
+    /// is marked stale once; otherwise it is the three calls.
+    pub fn set_chain_globals(&mut self, bones: [BoneIndex; 3], globals: [Transform; 3]) {
+        let [a, b, c] = bones;
+        let sk = &self.skeleton;
+        if sk.parent(b) != Some(a) || sk.parent(c) != Some(b) {
+            for (bone, global) in bones.into_iter().zip(globals) {
+                self.set_global(bone, global, true);
+            }
+            return;
+        }
+        let end = sk.subtree_end(a);
+        let [ga, gb, gc] = globals.map(|g| g.load_stored());
+        let la = match sk.parent(a) {
+            Some(p) => ga.relative_to(&self.global(p)),
+            None => ga,
+        };
+        let (ia, ib, ic) = (a.get(), b.get(), c.get());
+        self.locals[ia] = la;
+        self.locals[ib] = gb.relative_to(&ga);
+        self.locals[ic] = gc.relative_to(&gb);
+        self.globals[ia] = ga;
+        self.globals[ib] = gb;
+        self.globals[ic] = gc;
+        // `b` and `c` lie in `a`'s subtree (depth-first order): everything below `a`
+        // follows, but for the two bones set here.
+        self.mark_current(ia);
+        self.mark_stale(ia + 1, end);
+        self.mark_current(ib);
+        self.mark_current(ic);
+    }
+
     /// Brings every global up to date and returns them all (storage order).
     pub fn globals(&mut self) -> &[Transform] {
         for i in 0..self.globals.len() {
@@ -254,6 +289,72 @@ mod tests {
         // The foot stays where it was in rig space.
         assert_eq!(pose.global(foot).translation, Vec3::new(0.0, 0.0, 5.0));
         assert_eq!(pose.local(foot).translation, Vec3::new(-10.0, 0.0, -40.0));
+    }
+
+    /// Bits of every local and global of `pose`.
+    fn bits(pose: &mut Pose) -> Vec<[u32; 10]> {
+        let locals: Vec<_> = pose.locals().iter().map(Transform::to_bits).collect();
+        let globals = pose.globals().iter().map(Transform::to_bits);
+        locals.into_iter().chain(globals).collect()
+    }
+
+    #[test]
+    fn a_chain_set_at_once_is_three_set_globals() {
+        // Thigh, calf and foot bent into an L: the thigh at (5, 0, 90) turned 90° about X
+        // (its −Z now points along +Y), the calf turned with it 45 cm along +Y at
+        // (5, 45, 90), the foot unturned 40 cm straight down from there at (5, 45, 50).
+        let s = chain();
+        let [thigh, calf, foot] = ["thigh", "calf", "foot"].map(|n| s.find(n).unwrap());
+        let turn = Quat::from_rotation_x(core::f32::consts::FRAC_PI_2);
+        let globals = [
+            Transform::from_translation_rotation(Vec3::new(5.0, 0.0, 90.0), turn),
+            Transform::from_translation_rotation(Vec3::new(5.0, 45.0, 90.0), turn),
+            Transform::from_translation(Vec3::new(5.0, 45.0, 50.0)),
+        ];
+        let mut one_pass = Pose::new(s.clone());
+        one_pass.set_chain_globals([thigh, calf, foot], globals);
+        let mut three = Pose::new(s.clone());
+        for (bone, g) in [thigh, calf, foot].into_iter().zip(globals) {
+            three.set_global(bone, g, true);
+        }
+        assert_eq!(bits(&mut one_pass), bits(&mut three));
+        // In its parent's frame the calf is 45 cm down the thigh's −Z, unturned; the foot is
+        // 40 cm along the rig's −Z, which in the calf's turned frame is its −Y: (0, −40, 0),
+        // turned back by −90° about X.
+        let calf_local = one_pass.local(calf);
+        assert!((calf_local.translation - Vec3::new(0.0, 0.0, -45.0)).length() < 1e-4);
+        assert!(calf_local.rotation.angle_between(Quat::IDENTITY) < 1e-4);
+        let foot_local = one_pass.local(foot);
+        let (t, r) = (foot_local.translation, foot_local.rotation);
+        assert!((t - Vec3::new(0.0, -40.0, 0.0)).length() < 1e-4, "{t}");
+        assert!(r.angle_between(turn.inverse()) < 1e-4);
+        // Moving the root 10 cm along +Y carries the whole chain along.
+        let root = s.find("root").unwrap();
+        one_pass.set_local(root, Transform::from_translation(Vec3::new(0.0, 10.0, 0.0)));
+        let moved = one_pass.global(foot).translation;
+        assert!(
+            (moved - Vec3::new(5.0, 55.0, 50.0)).length() < 1e-4,
+            "{moved}"
+        );
+    }
+
+    #[test]
+    fn bones_that_are_not_a_chain_are_set_one_by_one() {
+        // Root, calf and thigh: not parent → child → grandchild in that order.
+        let s = chain();
+        let [root, thigh, calf] = ["root", "thigh", "calf"].map(|n| s.find(n).unwrap());
+        let globals = [
+            Transform::from_translation(Vec3::new(1.0, 0.0, 0.0)),
+            Transform::from_translation(Vec3::new(2.0, 0.0, 40.0)),
+            Transform::from_translation(Vec3::new(3.0, 0.0, 80.0)),
+        ];
+        let mut at_once = Pose::new(s.clone());
+        at_once.set_chain_globals([root, calf, thigh], globals);
+        let mut three = Pose::new(s.clone());
+        for (bone, g) in [root, calf, thigh].into_iter().zip(globals) {
+            three.set_global(bone, g, true);
+        }
+        assert_eq!(bits(&mut at_once), bits(&mut three));
     }
 
     #[test]

@@ -224,9 +224,14 @@ impl TwoBoneIk {
             unit_q(qb * (gb.rotation.inverse() * ge.rotation))
         };
 
-        pose.set_global(a, Transform { rotation: qa, ..ga }, true);
-        pose.set_global(b, Transform::new(mid_w.into(), qb, gb.scale), true);
-        pose.set_global(effector, Transform::new(end_w.into(), qe, ge.scale), true);
+        pose.set_chain_globals(
+            [a, b, effector],
+            [
+                Transform { rotation: qa, ..ga },
+                Transform::new(mid_w.into(), qb, gb.scale),
+                Transform::new(end_w.into(), qe, ge.scale),
+            ],
+        );
         report
     }
 }
