@@ -362,6 +362,22 @@ fn transforms() {
         "MakeRelative(global: (translation: (0.0, 10.0, 95.0)), parent: (translation: (0.0, 0.0, 95.0), rotation: euler(0.0, 0.0, 90.0)))",
     );
     close_v(r.translation, Vec3::new(10.0, 0.0, 0.0));
+    // A parent stretched 2× along its own X and turned 90° about Z: the child at rig
+    // (0, 20, 95) is 20 cm along the parent's X, stretched, so 10 cm before the stretch;
+    // its scale (2, 3, 1) is (1, 3, 1) of the parent's. MakeAbsolute takes it back.
+    let parent =
+        "(translation: (0.0, 0.0, 95.0), rotation: euler(0.0, 0.0, 90.0), scale: (2.0, 1.0, 1.0))";
+    let r = transform(&format!(
+        "MakeRelative(global: (translation: (0.0, 20.0, 95.0), rotation: euler(0.0, 0.0, 90.0), scale: (2.0, 3.0, 1.0)), parent: {parent})"
+    ));
+    close_v(r.translation, Vec3::new(10.0, 0.0, 0.0));
+    close_v(r.scale, Vec3::new(1.0, 3.0, 1.0));
+    assert!(r.rotation.angle_between(Quat::IDENTITY) < 1e-5);
+    let back = transform(&format!(
+        "MakeAbsolute(local: (translation: (10.0, 0.0, 0.0), scale: (1.0, 3.0, 1.0)), parent: {parent})"
+    ));
+    close_v(back.translation, Vec3::new(0.0, 20.0, 95.0));
+    close_v(back.scale, Vec3::new(2.0, 3.0, 1.0));
     let a = transform(
         "MakeAbsolute(local: (translation: (10.0, 0.0, 0.0)), parent: (translation: (0.0, 0.0, 95.0), rotation: euler(0.0, 0.0, 90.0)))",
     );

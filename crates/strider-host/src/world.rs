@@ -678,18 +678,9 @@ impl Quad {
     /// count, as in parry3d's `Aabb::intersects`), or that are unbounded.
     #[inline(always)]
     fn near(&self, reach: &Aabb) -> u32 {
-        if self.bounded {
-            self.near_bounded(reach)
-        } else {
-            self.always
+        if !self.bounded {
+            return self.always;
         }
-    }
-
-    /// [`Quad::near`] for a quad with bounded colliders. Out of line: inlined, its
-    /// broadcasts of `reach` were hoisted out of the trace's loop over the colliders and
-    /// kept on the stack, a cost every trace paid, also in a world of half-spaces only.
-    #[inline(never)]
-    fn near_bounded(&self, reach: &Aabb) -> u32 {
         let (low, high) = (reach.mins, reach.maxs);
         let meets = |axis: usize, low: f32, high: f32| {
             self.lo[axis].cmple(Vec4::splat(high)) & Vec4::splat(low).cmple(self.hi[axis])
