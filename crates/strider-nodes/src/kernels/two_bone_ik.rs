@@ -325,6 +325,18 @@ fn direction(v: Vec3A) -> Option<Vec3A> {
     }
 }
 
+/// Whether [`direction`] of `v` is `Some`, without computing it when `v`'s squared length
+/// does not overflow.
+#[inline]
+fn has_direction(v: Vec3A) -> bool {
+    let len_sq = v.length_squared();
+    if len_sq.is_finite() {
+        len_sq > LEN_EPS * LEN_EPS
+    } else {
+        direction(v).is_some()
+    }
+}
+
 /// Direction from `root` to `target`, or the chain's current direction (root → end, else
 /// root → mid) when the target sits on the root. `None` when all three coincide.
 fn chain_direction(root: Vec3A, mid: Vec3A, end: Vec3A, target: Vec3A) -> Option<Vec3A> {
@@ -456,7 +468,9 @@ fn bone_rotation(
     new_offset: Vec3A,
     normal: Vec3A,
 ) -> Quat {
-    let (Some(old_dir), Some(dir)) = (direction(old_offset), direction(new_offset)) else {
+    // The bone's current direction is needed only without a usable primary axis; with one,
+    // only whether it has a direction (no square root and division for nothing).
+    let Some(dir) = direction(new_offset).filter(|_| has_direction(old_offset)) else {
         return current;
     };
     if let Some(local_inverse) = axes.local_inverse
@@ -469,6 +483,8 @@ fn bone_rotation(
     let (primary, local_secondary) = match axes.primary {
         Some(p) => (p, axes.local_secondary),
         None => {
+            // `Some`: `has_direction(old_offset)` held.
+            let old_dir = direction(old_offset).unwrap_or(dir);
             let p = current.inverse() * old_dir;
             (p, perpendicular(axes.secondary, p))
         }
