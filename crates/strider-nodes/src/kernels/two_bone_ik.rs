@@ -476,8 +476,10 @@ fn bone_rotation(
     if let Some(local_inverse) = axes.local_inverse
         && let Some(want) = perpendicular(normal.cross(dir), dir)
     {
+        // Both frames are orthonormal, so is their product, and glam reads a unit rotation
+        // off it (to rounding): no second normalisation.
         let solved = Mat3A::from_cols(dir, want, dir.cross(want));
-        let q = unit_q(Quat::from_mat3a(&(solved * local_inverse)));
+        let q = Quat::from_mat3a(&(solved * local_inverse));
         return if q.dot(current) < 0.0 { -q } else { q };
     }
     let (primary, local_secondary) = match axes.primary {
@@ -1711,6 +1713,15 @@ mod tests {
                 let rel_before = before[2].rotation.inverse() * before[3].rotation;
                 let rel_after = after[2].rotation.inverse() * after[3].rotation;
                 assert!(rel_before.dot(rel_after).abs() >= 1.0 - 1e-5, "{ctx}");
+            }
+            // The solved rotations are unit (the frames' rotation is read off an orthonormal
+            // matrix, not normalised again).
+            for r in [after[1].rotation, after[2].rotation] {
+                assert!(
+                    (r.length() - 1.0).abs() < 1e-5,
+                    "{ctx}: |r| = {}",
+                    r.length()
+                );
             }
             // Primary axes along the bones.
             let ua = (m - root).normalize();
