@@ -339,6 +339,59 @@ mod tests {
     }
 
     #[test]
+    fn a_chain_set_at_once_leaves_the_same_bones_stale() {
+        // A leg with a toe below the foot, a twist bone beside the calf and an arm beside
+        // the leg, all current (the root moved, then every global was read) when the chain
+        // is set: the bones below the chain and beside it within the thigh's subtree must
+        // end stale, the root and the arm current.
+        let b = |name: &str, parent: &str, t: Vec3| Bone {
+            name: name.into(),
+            parent: Some(parent.into()),
+            rest_local: Transform::from_translation(t),
+        };
+        let s = Arc::new(
+            Skeleton::new(vec![
+                Bone {
+                    name: "root".into(),
+                    parent: None,
+                    rest_local: Transform::IDENTITY,
+                },
+                b("thigh", "root", Vec3::new(0.0, 0.0, 90.0)),
+                b("calf", "thigh", Vec3::new(0.0, 0.0, -45.0)),
+                b("foot", "calf", Vec3::new(0.0, 0.0, -40.0)),
+                b("toe", "foot", Vec3::new(0.0, 15.0, -5.0)),
+                b("twist", "thigh", Vec3::new(0.0, 0.0, -20.0)),
+                b("arm", "root", Vec3::new(20.0, 0.0, 140.0)),
+            ])
+            .unwrap(),
+        );
+        let [root, thigh, calf, foot] =
+            ["root", "thigh", "calf", "foot"].map(|n| s.find(n).unwrap());
+        let turn = Quat::from_rotation_y(0.4);
+        let globals = [
+            Transform::from_translation_rotation(Vec3::new(1.0, 2.0, 91.0), turn),
+            Transform::from_translation_rotation(Vec3::new(3.0, 2.0, 50.0), turn),
+            Transform::from_translation(Vec3::new(4.0, 6.0, 10.0)),
+        ];
+        let mut one_pass = Pose::new(s.clone());
+        one_pass.set_local(root, Transform::from_translation(Vec3::new(0.0, 5.0, 0.0)));
+        let _ = one_pass.globals();
+        let mut three = one_pass.clone();
+        one_pass.set_chain_globals([thigh, calf, foot], globals);
+        for (bone, g) in [thigh, calf, foot].into_iter().zip(globals) {
+            three.set_global(bone, g, true);
+        }
+        assert_eq!(one_pass.stale, three.stale);
+        let stale: Vec<bool> = (0..s.len()).map(|i| one_pass.is_stale(i)).collect();
+        let name_of = |i: usize| s.names()[i].as_str();
+        for (i, &st) in stale.iter().enumerate() {
+            let want = matches!(name_of(i), "toe" | "twist");
+            assert_eq!(st, want, "{}", name_of(i));
+        }
+        assert_eq!(bits(&mut one_pass), bits(&mut three));
+    }
+
+    #[test]
     fn bones_that_are_not_a_chain_are_set_one_by_one() {
         // Root, calf and thigh: not parent → child → grandchild in that order.
         let s = chain();

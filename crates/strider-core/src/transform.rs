@@ -134,7 +134,7 @@ impl Transform {
 
     /// `self` expressed relative to `parent` (RigVM's "Make Relative", Unreal's
     /// `GetRelativeTransform`): the local transform `l` with `parent * l == self`, for any
-    /// scale, uniform or not. Rotation `p.r⁻¹ · r` (normalised, as a product in
+    /// non-zero scale, uniform or not. Rotation `p.r⁻¹ · r` (normalised, as a product in
     /// [`Mul`](core::ops::Mul) is), scale `s / p.s`, translation `(p.r⁻¹ · (t − p.t)) / p.s`;
     /// a zero parent scale component divides by nothing and gives 0 on that axis, as in
     /// [`Transform::inverse`]. For uniform scale this is `parent.inverse() * self`, with one

@@ -1077,7 +1077,7 @@ fn build() -> Vec<NodeSpec> {
     b.pure(
         "MakeRelative",
         "`global` expressed in `parent`'s space: the `local` with `parent · local = global`, for any \
-         scale (`parent⁻¹ · global` when `parent`'s scale is uniform; see docs/conventions.md).",
+         non-zero scale (`parent⁻¹ · global` when `parent`'s scale is uniform; see docs/conventions.md).",
         r#""local": MakeRelative(global: "foot", parent: "root"),"#,
         vec![ov(
             Op::MakeRelative,
