@@ -298,6 +298,22 @@ mod tests {
         locals.into_iter().chain(globals).collect()
     }
 
+    /// `start` with `globals` set on `bones` by [`Pose::set_chain_globals`], and `start` with
+    /// them set by three [`Pose::set_global`] calls with propagation, in order.
+    fn at_once_and_one_by_one(
+        start: &Pose,
+        bones: [BoneIndex; 3],
+        globals: [Transform; 3],
+    ) -> (Pose, Pose) {
+        let mut at_once = start.clone();
+        at_once.set_chain_globals(bones, globals);
+        let mut one_by_one = start.clone();
+        for (bone, g) in bones.into_iter().zip(globals) {
+            one_by_one.set_global(bone, g, true);
+        }
+        (at_once, one_by_one)
+    }
+
     #[test]
     fn a_chain_set_at_once_is_three_set_globals() {
         // Thigh, calf and foot bent into an L: the thigh at (5, 0, 90) turned 90° about X
@@ -311,12 +327,8 @@ mod tests {
             Transform::from_translation_rotation(Vec3::new(5.0, 45.0, 90.0), turn),
             Transform::from_translation(Vec3::new(5.0, 45.0, 50.0)),
         ];
-        let mut one_pass = Pose::new(s.clone());
-        one_pass.set_chain_globals([thigh, calf, foot], globals);
-        let mut three = Pose::new(s.clone());
-        for (bone, g) in [thigh, calf, foot].into_iter().zip(globals) {
-            three.set_global(bone, g, true);
-        }
+        let (mut one_pass, mut three) =
+            at_once_and_one_by_one(&Pose::new(s.clone()), [thigh, calf, foot], globals);
         assert_eq!(bits(&mut one_pass), bits(&mut three));
         // In its parent's frame the calf is 45 cm down the thigh's −Z, unturned; the foot is
         // 40 cm along the rig's −Z, which in the calf's turned frame is its −Y: (0, −40, 0),
@@ -373,14 +385,11 @@ mod tests {
             Transform::from_translation_rotation(Vec3::new(3.0, 2.0, 50.0), turn),
             Transform::from_translation(Vec3::new(4.0, 6.0, 10.0)),
         ];
-        let mut one_pass = Pose::new(s.clone());
-        one_pass.set_local(root, Transform::from_translation(Vec3::new(0.0, 5.0, 0.0)));
-        let _ = one_pass.globals();
-        let mut three = one_pass.clone();
-        one_pass.set_chain_globals([thigh, calf, foot], globals);
-        for (bone, g) in [thigh, calf, foot].into_iter().zip(globals) {
-            three.set_global(bone, g, true);
-        }
+        let mut start = Pose::new(s.clone());
+        start.set_local(root, Transform::from_translation(Vec3::new(0.0, 5.0, 0.0)));
+        let _ = start.globals();
+        let (mut one_pass, mut three) =
+            at_once_and_one_by_one(&start, [thigh, calf, foot], globals);
         assert_eq!(one_pass.stale, three.stale);
         let stale: Vec<bool> = (0..s.len()).map(|i| one_pass.is_stale(i)).collect();
         let name_of = |i: usize| s.names()[i].as_str();
@@ -401,12 +410,8 @@ mod tests {
             Transform::from_translation(Vec3::new(2.0, 0.0, 40.0)),
             Transform::from_translation(Vec3::new(3.0, 0.0, 80.0)),
         ];
-        let mut at_once = Pose::new(s.clone());
-        at_once.set_chain_globals([root, calf, thigh], globals);
-        let mut three = Pose::new(s.clone());
-        for (bone, g) in [root, calf, thigh].into_iter().zip(globals) {
-            three.set_global(bone, g, true);
-        }
+        let (mut at_once, mut three) =
+            at_once_and_one_by_one(&Pose::new(s), [root, calf, thigh], globals);
         assert_eq!(bits(&mut at_once), bits(&mut three));
     }
 
