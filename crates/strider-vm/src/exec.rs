@@ -101,6 +101,52 @@ fn bone(pose: &Pose, value: i32) -> Option<BoneIndex> {
     (value >= 0 && (value as usize) < pose.len()).then_some(BoneIndex(value as u32))
 }
 
+/// `ArrayAt`'s element: item `index` of `array`, or `zero` (the element type's default)
+/// for a negative index or one past the end. (The item or the default is chosen by
+/// reference and copied once: a transform is not copied twice.)
+#[inline(always)]
+pub(crate) fn array_get<T: Copy>(array: &[T], index: i32, zero: &T) -> T {
+    let item = if index >= 0 {
+        array.get(index as usize)
+    } else {
+        None
+    };
+    *item.unwrap_or(zero)
+}
+
+/// `ArraySetAt`: item `index` of `array` becomes `value`; a negative index or one past the
+/// end changes nothing.
+#[inline(always)]
+pub(crate) fn array_set<T>(array: &mut [T], index: i32, value: T) {
+    if index >= 0
+        && let Some(x) = array.get_mut(index as usize)
+    {
+        *x = value;
+    }
+}
+
+/// `GetTransform`'s result: the transform of the bone held in a bone slot (`bone_slot`, an
+/// index into the pose; -1 or out of range for none), global (rig space) when `space` is
+/// 0, else local (parent space); the skeleton's rest transform when `initial`, else the
+/// pose's. The identity for no bone.
+#[inline(always)]
+pub(crate) fn bone_transform(
+    pose: &mut Pose,
+    bone_slot: i32,
+    space: i32,
+    initial: bool,
+) -> Transform {
+    match bone(pose, bone_slot) {
+        None => Transform::IDENTITY,
+        Some(bi) => match (initial, space == 0) {
+            (true, true) => pose.skeleton().rest_global(bi),
+            (true, false) => pose.skeleton().rest_local(bi),
+            (false, true) => pose.global(bi),
+            (false, false) => pose.local(bi),
+        },
+    }
+}
+
 fn color(v: Vec3) -> DebugColor {
     DebugColor([v.x, v.y, v.z, 1.0])
 }
@@ -313,19 +359,7 @@ macro_rules! execute {
         }
         macro_rules! get_transform {
             ($b:expr) => {{
-                let result = match bone($cx.pose, $s.bones[at!($b)]) {
-                    None => Transform::IDENTITY,
-                    Some(bi) => {
-                        let global = i!($b + 1) == 0;
-                        match (b!($b + 2), global) {
-                            (true, true) => $cx.pose.skeleton().rest_global(bi),
-                            (true, false) => $cx.pose.skeleton().rest_local(bi),
-                            (false, true) => $cx.pose.global(bi),
-                            (false, false) => $cx.pose.local(bi),
-                        }
-                    }
-                };
-                t!($b + 3) = result;
+                t!($b + 3) = bone_transform($cx.pose, $s.bones[at!($b)], i!($b + 1), b!($b + 2));
             }};
         }
         macro_rules! array_at {
@@ -333,12 +367,7 @@ macro_rules! execute {
                 let index = i!($b + 1);
                 macro_rules! get {
                     ($sc:ident, $ar:expr, $zero:expr) => {{
-                        let a = &$ar[at!($b)];
-                        scalar!($sc, $b + 2) = if index >= 0 {
-                            a.get(index as usize).copied().unwrap_or($zero)
-                        } else {
-                            $zero
-                        };
+                        scalar!($sc, $b + 2) = array_get(&$ar[at!($b)], index, &$zero);
                     }};
                 }
                 by_elem!($e, $s, get);
@@ -818,11 +847,7 @@ macro_rules! execute {
                 macro_rules! set {
                     ($sc:ident, $ar:expr, $zero:expr) => {{
                         let value = scalar!($sc, 2);
-                        if index >= 0 {
-                            if let Some(x) = $ar[at!(0)].get_mut(index as usize) {
-                                *x = value;
-                            }
-                        }
+                        array_set(&mut $ar[at!(0)], index, value);
                     }};
                 }
                 by_elem!(e, $s, set);
@@ -1236,6 +1261,11 @@ fn run_group<const LANES: bool>(
                 }
                 // SAFETY: an instruction of the program whose slots the lanes hold.
                 _ if unsafe { crate::lanes::run_wide(op, o, lane0, n, &dts) } => {
+                    pc += 1;
+                    continue;
+                }
+                // SAFETY: as above; `members` is the batch the lanes were loaded from.
+                _ if unsafe { crate::per_member::run_per_member(op, o, lane0, members) } => {
                     pc += 1;
                     continue;
                 }

@@ -28,6 +28,7 @@ mod fusion;
 pub mod instance;
 mod lanes;
 pub mod native;
+mod per_member;
 pub mod profile;
 pub mod program;
 mod sharing;
