@@ -154,3 +154,220 @@ pub(crate) unsafe fn run_per_member(
     }
     true
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::exec::step;
+    use crate::lanes::{Copies, Lanes};
+    use crate::slots::{ScalarLens, Slots};
+    use std::sync::Arc;
+    use strider_core::{Bone, BoneIndex, DebugDraw, Pose, Skeleton};
+    use strider_nodes::{MAX_OPERANDS, ValueType};
+
+    /// Scalar slots per type, and arrays per element type, each member has.
+    const SLOTS: usize = 8;
+
+    /// A three-bone chain whose rest pose is turned, moved and scaled at every bone.
+    fn chain() -> Arc<Skeleton> {
+        let bone = |name: &str, parent: Option<&str>, k: f32| Bone {
+            name: name.to_string(),
+            parent: parent.map(str::to_string),
+            rest_local: Transform::new(
+                Vec3::new(k, 2.0 * k, -k),
+                Quat::from_rotation_z(0.3 * k),
+                Vec3::splat(1.0 + 0.1 * k),
+            ),
+        };
+        Arc::new(
+            Skeleton::new(vec![
+                bone("root", None, 1.0),
+                bone("mid", Some("root"), 2.0),
+                bone("tip", Some("mid"), 3.0),
+            ])
+            .expect("valid skeleton"),
+        )
+    }
+
+    /// Member `m`'s slots: bone slots that name each bone, none (-1) and one past the
+    /// skeleton; indices in range, negative, one past the end and extreme; arrays of
+    /// lengths 0 to 3 that differ from member to member.
+    fn member_slots(m: usize) -> Slots {
+        let x = |i: usize| (m * 7 + i * 3) as f32 * 0.25 - 2.0;
+        let v = |i: usize| Vec3::new(x(i), x(i + 1), -x(i + 2));
+        let q = |i: usize| Quat::from_rotation_x(x(i)) * Quat::from_rotation_y(0.5);
+        let t = |i: usize| Transform::new(v(i), q(i), Vec3::splat(1.0 + i as f32));
+        const INDICES: [i32; 8] = [0, 1, -1, 2, 3, i32::MIN, i32::MAX, 0];
+        fn arrays<T>(m: usize, item: impl Fn(usize) -> T) -> Vec<Vec<T>> {
+            (0..SLOTS)
+                .map(|a| (0..(a + m) % 4).map(&item).collect())
+                .collect()
+        }
+        Slots {
+            bools: (0..SLOTS).map(|i| (m + i) % 3 == 0).collect(),
+            ints: (0..SLOTS)
+                .map(|i| INDICES[(m + i) % INDICES.len()])
+                .collect(),
+            floats: (0..SLOTS).map(x).collect(),
+            vec3s: (0..SLOTS).map(v).collect(),
+            quats: (0..SLOTS).map(q).collect(),
+            transforms: (0..SLOTS).map(|i| t(i + 10)).collect(),
+            bones: (0..SLOTS).map(|i| [0, 1, 2, -1, 3][(m + i) % 5]).collect(),
+            bool_arrays: arrays(m, |i| i % 2 == 1),
+            int_arrays: arrays(m, |i| 10 * i as i32 + m as i32),
+            float_arrays: arrays(m, x),
+            vec3_arrays: arrays(m, v),
+            quat_arrays: arrays(m, q),
+            transform_arrays: arrays(m, t),
+            ..Slots::default()
+        }
+    }
+
+    /// Member `m`'s pose: moved from rest at one bone or another, so that some globals are
+    /// stale when the op reads them.
+    fn member_pose(m: usize) -> Pose {
+        let mut pose = Pose::new(chain());
+        let moved = Transform::new(Vec3::splat(m as f32), Quat::from_rotation_y(0.2), Vec3::ONE);
+        pose.set_local(BoneIndex((m % 3) as u32), moved);
+        pose
+    }
+
+    /// Runs `f` with contexts over `slots` and `poses`.
+    fn with_contexts(slots: &mut [Slots], poses: &mut [Pose], f: impl FnOnce(&mut [Ctx<'_>])) {
+        let mut draws: Vec<DebugDraw> = slots.iter().map(|_| DebugDraw::new(false)).collect();
+        let mut cxs: Vec<Ctx<'_>> = slots
+            .iter_mut()
+            .zip(poses.iter_mut())
+            .zip(&mut draws)
+            .map(|((s, p), d)| Ctx::for_test(s, &[], p, d, 1.0 / 60.0))
+            .collect();
+        f(&mut cxs);
+    }
+
+    /// What `op` leaves in `n` members' slots and poses: run for the batch at once
+    /// (`batch`) or by the handler on each member alone; `None` when the batch path does
+    /// not take the op.
+    fn run(op: Op, o: &[u32], n: usize, batch: bool) -> Option<(Vec<Slots>, Vec<Pose>)> {
+        let mut slots: Vec<Slots> = (0..n).map(member_slots).collect();
+        let mut poses: Vec<Pose> = (0..n).map(member_pose).collect();
+        let mut ran = true;
+        with_contexts(&mut slots, &mut poses, |cxs| {
+            if batch {
+                let lens = ScalarLens([SLOTS; 6]);
+                let mut lanes = Lanes::default();
+                lanes.load(Copies::all(&lens), cxs);
+                // SAFETY: the operands are slots below `SLOTS` of the lanes loaded above,
+                // and arrays and bone slots below `SLOTS` of every member.
+                ran = unsafe { run_per_member(op, o, lanes.bases(), cxs) };
+                lanes.store(Copies::all(&lens), cxs);
+            } else {
+                for cx in cxs.iter_mut() {
+                    // SAFETY: as above.
+                    unsafe { step(op, o, cx, 1) };
+                }
+            }
+        });
+        ran.then_some((slots, poses))
+    }
+
+    /// Every local and global of two poses, bit for bit.
+    fn same_pose(a: &mut Pose, b: &mut Pose) -> bool {
+        (0..a.len() as u32).map(BoneIndex).all(|bone| {
+            a.local(bone).to_bits() == b.local(bone).to_bits()
+                && a.global(bone).to_bits() == b.global(bone).to_bits()
+        })
+    }
+
+    /// `operands` laid out with its window.
+    fn window(operands: &[u32]) -> Vec<u32> {
+        let mut o = operands.to_vec();
+        o.resize(o.len() + MAX_OPERANDS, 0);
+        o
+    }
+
+    #[test]
+    fn every_batched_op_leaves_each_member_what_its_handler_leaves() {
+        let scalar_elems = [
+            Elem::Bool,
+            Elem::Int,
+            Elem::Float,
+            Elem::Vec3,
+            Elem::Quat,
+            Elem::Transform,
+        ];
+        // Operand lists: distinct slots, and outputs sharing an input's slot as slot sharing
+        // may lay them out (the element in the index's slot for ints; the broken transform
+        // the read's result, as the compiler emits a fused pair, or another slot).
+        let mut cases: Vec<(Op, Vec<u32>)> = Vec::new();
+        for e in scalar_elems {
+            for array in [1, 3, 6] {
+                cases.push((Op::ArrayAt(e), vec![array, 2, 4]));
+                cases.push((Op::ArraySetAt(e), vec![array, 2, 4]));
+                cases.push((Op::ArraySetAt(e), vec![array, 3, 3]));
+            }
+            cases.push((Op::ArrayAt(e), vec![5, 1, 1]));
+        }
+        for array in [1, 2, 3, 6] {
+            cases.push((Op::ArrayAtBreakTransform, vec![array, 2, 4, 4, 1, 1, 2]));
+            cases.push((Op::ArrayAtBreakTransform, vec![array, 2, 4, 5, 1, 1, 2]));
+        }
+        for bone in 0..5 {
+            cases.push((Op::GetTransform, vec![bone, 2, 3, 4]));
+            cases.push((
+                Op::GetTransformBreakTransform,
+                vec![bone, 2, 3, 4, 4, 1, 1, 2],
+            ));
+            cases.push((
+                Op::GetTransformBreakTransform,
+                vec![bone, 1, 2, 6, 5, 3, 3, 4],
+            ));
+        }
+        for (op, operands) in cases {
+            // The operand types must be the op's own.
+            let layout = op.operands().expect("a layout");
+            assert_eq!(layout.len(), operands.len(), "{op:?}");
+            let o = window(&operands);
+            for n in [BATCH, 5, 1] {
+                let (mut batched, mut poses) =
+                    run(op, &o, n, true).unwrap_or_else(|| panic!("{op:?} is batched"));
+                let (alone, mut alone_poses) = run(op, &o, n, false).expect("the handler");
+                for m in 0..n {
+                    assert!(
+                        batched[m].bit_eq(&alone[m]),
+                        "{op:?} {operands:?}: member {m} of {n}: slots differ"
+                    );
+                    assert!(
+                        same_pose(&mut poses[m], &mut alone_poses[m]),
+                        "{op:?} {operands:?}: member {m} of {n}: poses differ"
+                    );
+                }
+                // The batch did something: some member's slots changed (a test that
+                // compares two runs that do nothing would pass).
+                if matches!(op, Op::ArrayAt(_) | Op::GetTransform) {
+                    let before: Vec<Slots> = (0..n).map(member_slots).collect();
+                    batched.truncate(n);
+                    let changed = batched.iter().zip(&before).any(|(a, b)| !a.bit_eq(b));
+                    assert!(changed || n == 1, "{op:?} {operands:?}: nothing changed");
+                }
+            }
+        }
+    }
+
+    #[test]
+    fn other_ops_are_left_to_the_handlers() {
+        for op in [
+            Op::ArrayAt(Elem::Bone),
+            Op::ArraySetAt(Elem::Bone),
+            Op::AddF,
+            Op::GetParent,
+            Op::SetTransform,
+            Op::Copy(ValueType::Float),
+        ] {
+            let o = window(&[1, 2, 3, 4, 5]);
+            assert!(
+                run(op, &o, BATCH, true).is_none(),
+                "{op:?} is not batched here"
+            );
+        }
+    }
+}
