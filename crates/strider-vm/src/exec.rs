@@ -102,8 +102,8 @@ fn bone(pose: &Pose, value: i32) -> Option<BoneIndex> {
 }
 
 /// `ArrayAt`'s element: item `index` of `array`, or `zero` (the element type's default)
-/// for a negative index or one past the end. (The item or the default is chosen by
-/// reference and copied once: a transform is not copied twice.)
+/// for a negative index or one at or past the end. The item or the default is chosen by
+/// reference and copied once (a transform is 48 bytes).
 #[inline(always)]
 pub(crate) fn array_get<T: Copy>(array: &[T], index: i32, zero: &T) -> T {
     let item = if index >= 0 {
@@ -114,29 +114,25 @@ pub(crate) fn array_get<T: Copy>(array: &[T], index: i32, zero: &T) -> T {
     *item.unwrap_or(zero)
 }
 
-/// `ArraySetAt`: item `index` of `array` becomes `value`; a negative index or one past the
-/// end changes nothing.
+/// `ArraySetAt`: item `index` of array variable `array` (of `arrays`, an instance's arrays
+/// of one element type) becomes `value`; a negative index, or one at or past the end,
+/// changes nothing (and a negative one does not look the array up).
 #[inline(always)]
-pub(crate) fn array_set<T>(array: &mut [T], index: i32, value: T) {
+pub(crate) fn array_set<T>(arrays: &mut [Vec<T>], array: usize, index: i32, value: T) {
     if index >= 0
-        && let Some(x) = array.get_mut(index as usize)
+        && let Some(x) = arrays[array].get_mut(index as usize)
     {
         *x = value;
     }
 }
 
-/// `GetTransform`'s result: the transform of the bone held in a bone slot (`bone_slot`, an
-/// index into the pose; -1 or out of range for none), global (rig space) when `space` is
-/// 0, else local (parent space); the skeleton's rest transform when `initial`, else the
-/// pose's. The identity for no bone.
+/// `GetTransform`'s result: the transform of bone `bone` (a bone slot's value: an index
+/// into the pose, -1 or out of range for none), global (rig space) when `space` is 0, else
+/// local (parent space); the skeleton's rest transform when `initial`, else the pose's (a
+/// stale global is computed first, hence `&mut`). The identity for no bone.
 #[inline(always)]
-pub(crate) fn bone_transform(
-    pose: &mut Pose,
-    bone_slot: i32,
-    space: i32,
-    initial: bool,
-) -> Transform {
-    match bone(pose, bone_slot) {
+pub(crate) fn bone_transform(pose: &mut Pose, bone: i32, space: i32, initial: bool) -> Transform {
+    match self::bone(pose, bone) {
         None => Transform::IDENTITY,
         Some(bi) => match (initial, space == 0) {
             (true, true) => pose.skeleton().rest_global(bi),
@@ -847,7 +843,7 @@ macro_rules! execute {
                 macro_rules! set {
                     ($sc:ident, $ar:expr, $zero:expr) => {{
                         let value = scalar!($sc, 2);
-                        array_set(&mut $ar[at!(0)], index, value);
+                        array_set(&mut $ar, at!(0), index, value);
                     }};
                 }
                 by_elem!(e, $s, set);

@@ -159,7 +159,7 @@ impl Lanes {
 
 /// The block of [`BATCH`] lanes of slot `slot` of the array at `base`.
 #[inline(always)]
-fn block<T>(base: *mut T, slot: u32) -> *mut [T; BATCH] {
+pub(crate) fn block<T>(base: *mut T, slot: u32) -> *mut [T; BATCH] {
     base.wrapping_add(slot as usize * BATCH).cast()
 }
 

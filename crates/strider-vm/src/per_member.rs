@@ -4,39 +4,43 @@
 //! While a batch is at one instruction, the executor's handlers run member by member: each
 //! member's run fetches the instruction's operands again and works out where its slots
 //! are, one slot after another. For an op with half a dozen operands that is most of the
-//! work (an `ArrayAt` of a transform then a `BreakTransform` took about 64 machine
-//! instructions per member). The ops here find every operand's block of lanes
-//! ([`crate::lanes`]) once, then visit the members, each with its own arrays and pose: the
-//! same element functions as the handlers ([`array_get`], [`array_set`],
-//! [`bone_transform`]), on the same values, in the same order, so the results are the
-//! handlers', bit for bit.
+//! work. The ops here find every operand's block of lanes ([`crate::lanes`]) once, then
+//! visit the members, each with its own arrays and pose: the same element functions as
+//! the handlers ([`array_get`], [`array_set`], [`bone_transform`]), on the same values, in
+//! the same order, so the results are the handlers', bit for bit.
+//!
+//! They run only on lanes (slot `k` of member `m` at item `k * BATCH + m`), with the whole
+//! batch at the instruction; anywhere else the handlers do the work.
 
 // Slots are read and written through the lanes' base pointers, as in `lanes`.
 #![allow(unsafe_code)]
 
 use crate::exec::{BATCH, Bases, Ctx, array_get, array_set, bone_transform};
+use crate::lanes::block;
 use glam::{Quat, Vec3};
 use strider_core::Transform;
 use strider_nodes::{Elem, Op};
 
-/// Item 0 (member 0's) of the block of [`BATCH`] lanes of slot `slot` of the array at
-/// `base`; member `m`'s item is `m` on.
+/// Member 0's item of the block of [`BATCH`] lanes of slot `slot` of the array at `base`;
+/// member `m`'s is `m` items on.
 #[inline(always)]
-fn lane0_of<T>(base: *mut T, slot: u32) -> *mut T {
-    base.wrapping_add(slot as usize * BATCH)
+fn item0<T>(base: *mut T, slot: u32) -> *mut T {
+    block(base, slot).cast()
 }
 
-/// Runs `op` (operands `o`) for every member of the batch whose member 0's lane is `lane0`,
-/// member by member in order, when it is one of the ops that read an element of a member's
-/// array (`ArrayAt` of a scalar element type, alone or followed by `BreakTransform`), write
-/// one (`ArraySetAt`), or read a bone's transform (`GetTransform`, alone or followed by
-/// `BreakTransform`); returns true. Returns false, doing nothing, for every other op.
+/// Runs `op` (operands `o`) for each of the batch's `members` in order, on the lanes whose
+/// member 0 items start at `lane0`, when it is one of the ops that read an element of a
+/// member's array (`ArrayAt` of any element type but bones, alone or followed by
+/// `BreakTransform`), write one (`ArraySetAt`, the same types), or read a bone's transform
+/// (`GetTransform`, alone or followed by `BreakTransform`); returns true. Returns false,
+/// doing nothing, for every other op.
 ///
 /// # Safety
-/// As [`crate::lanes::run_wide`]: `op` and `o` an instruction of a program built by
-/// [`ProgramBuilder::finish`](crate::ProgramBuilder::finish) (with its operand window),
-/// `lane0` the bases of lanes loaded for that program's slots, and `members` the batch
-/// (at most [`BATCH`]), each with that program's slots.
+/// `op` and `o` must be an instruction of a program built by
+/// [`ProgramBuilder::finish`](crate::ProgramBuilder::finish) (with its operand window);
+/// `lane0` the bases of [`crate::lanes::Lanes`] (stride [`BATCH`]) loaded from `members`
+/// for that program's slots; `members` the batch (at most [`BATCH`]), each with that
+/// program's slots.
 #[inline(never)]
 pub(crate) unsafe fn run_per_member(
     op: Op,
@@ -44,10 +48,11 @@ pub(crate) unsafe fn run_per_member(
     lane0: Bases,
     members: &mut [Ctx<'_>],
 ) -> bool {
+    debug_assert!(members.len() <= BATCH, "a batch has at most BATCH members");
     // Member 0's item of slot operand `$k` of scalar array `$a`.
     macro_rules! lane {
         ($a:ident, $k:expr) => {
-            lane0_of(lane0.$a, o[$k])
+            item0(lane0.$a, o[$k])
         };
     }
     // `BreakTransform` of member `$m`'s transform `$x` into `$parts` (the blocks of its
@@ -86,7 +91,7 @@ pub(crate) unsafe fn run_per_member(
             for (m, cx) in members.iter_mut().enumerate() {
                 // SAFETY: as above.
                 let (i, value) = unsafe { (*index.add(m), *value.add(m)) };
-                array_set(&mut cx.slots.$ar[array], i, value);
+                array_set(&mut cx.slots.$ar, array, i, value);
             }
         }};
     }
@@ -165,7 +170,7 @@ mod tests {
     use strider_core::{Bone, BoneIndex, DebugDraw, Pose, Skeleton};
     use strider_nodes::{MAX_OPERANDS, ValueType};
 
-    /// Scalar slots per type, and arrays per element type, each member has.
+    /// How many scalar slots of each type, and arrays of each element type, a member has.
     const SLOTS: usize = 8;
 
     /// A three-bone chain whose rest pose is turned, moved and scaled at every bone.
@@ -304,6 +309,8 @@ mod tests {
         for array in [1, 2, 3, 6] {
             cases.push((Op::ArrayAtBreakTransform, vec![array, 2, 4, 4, 1, 1, 2]));
             cases.push((Op::ArrayAtBreakTransform, vec![array, 2, 4, 5, 1, 1, 2]));
+            // Translation and scale into one slot: the scale, written last, stays.
+            cases.push((Op::ArrayAtBreakTransform, vec![array, 2, 4, 4, 1, 1, 1]));
         }
         for bone in 0..5 {
             cases.push((Op::GetTransform, vec![bone, 2, 3, 4]));
@@ -315,14 +322,18 @@ mod tests {
                 Op::GetTransformBreakTransform,
                 vec![bone, 1, 2, 6, 5, 3, 3, 4],
             ));
+            cases.push((
+                Op::GetTransformBreakTransform,
+                vec![bone, 2, 3, 4, 4, 1, 1, 1],
+            ));
         }
         for (op, operands) in cases {
-            // The operand types must be the op's own.
+            // As many operands as the op has.
             let layout = op.operands().expect("a layout");
             assert_eq!(layout.len(), operands.len(), "{op:?}");
             let o = window(&operands);
             for n in [BATCH, 5, 1] {
-                let (mut batched, mut poses) =
+                let (batched, mut poses) =
                     run(op, &o, n, true).unwrap_or_else(|| panic!("{op:?} is batched"));
                 let (alone, mut alone_poses) = run(op, &o, n, false).expect("the handler");
                 for m in 0..n {
@@ -339,7 +350,6 @@ mod tests {
                 // compares two runs that do nothing would pass).
                 if matches!(op, Op::ArrayAt(_) | Op::GetTransform) {
                     let before: Vec<Slots> = (0..n).map(member_slots).collect();
-                    batched.truncate(n);
                     let changed = batched.iter().zip(&before).any(|(a, b)| !a.bit_eq(b));
                     assert!(changed || n == 1, "{op:?} {operands:?}: nothing changed");
                 }
