@@ -55,18 +55,48 @@ pub(crate) unsafe fn run_per_member(
             item0(lane0.$a, o[$k])
         };
     }
-    // `BreakTransform` of member `$m`'s transform `$x` into `$parts` (the blocks of its
-    // translation, rotation and scale), in the handler's order.
+    // The blocks a fused `BreakTransform` reads and writes (operands from `$b`: the
+    // transform to break, its translation, rotation and scale).
+    macro_rules! break_blocks {
+        ($b:expr) => {
+            (
+                lane!(transforms, $b),
+                lane!(vec3s, $b + 1),
+                lane!(quats, $b + 2),
+                lane!(vec3s, $b + 3),
+            )
+        };
+    }
+    // `BreakTransform` of member `$m`'s transform in `$blocks` (`break_blocks!`), read
+    // after the fused read has written its result (the two may share a slot, as the
+    // compiler lays them out, or not); its parts written in the handler's order.
     macro_rules! break_transform {
-        ($m:expr, $x:expr, $parts:expr) => {{
-            let (x, (tr, rot, sc)): (Transform, _) = ($x, $parts);
+        ($m:expr, $blocks:expr) => {{
+            let (t, tr, rot, sc) = $blocks;
             // SAFETY: slots of the program's lanes (the caller's contract), `$m < BATCH`.
             unsafe {
+                let x: Transform = *t.add($m);
                 *tr.add($m) = x.translation;
                 *rot.add($m) = x.rotation;
                 *sc.add($m) = x.scale;
             }
         }};
+    }
+    // Runs `$m!(lanes, arrays, default)` for scalar element type `$e` (the lane array of its
+    // slots, the slots' field of its array variables, its default); bones, whose slots are
+    // not in the lanes, are left to the handlers.
+    macro_rules! scalar_elem {
+        ($e:expr, $m:ident) => {
+            match $e {
+                Elem::Bool => $m!(bools, bool_arrays, false),
+                Elem::Int => $m!(ints, int_arrays, 0),
+                Elem::Float => $m!(floats, float_arrays, 0.0),
+                Elem::Vec3 => $m!(vec3s, vec3_arrays, Vec3::ZERO),
+                Elem::Quat => $m!(quats, quat_arrays, Quat::IDENTITY),
+                Elem::Transform => $m!(transforms, transform_arrays, Transform::IDENTITY),
+                Elem::Bone => return false,
+            }
+        };
     }
     // `ArrayAt` (operands: array, index, element) of element type `$sc` (arrays `$ar`,
     // default `$zero`), then `$then` for each member `$m`.
@@ -84,9 +114,9 @@ pub(crate) unsafe fn run_per_member(
             array_at!($sc, $ar, $zero, |_m| {})
         };
     }
-    // `ArraySetAt` (operands: array, index, element).
+    // `ArraySetAt` (operands: array, index, element); the default is not needed.
     macro_rules! array_set_at {
-        ($sc:ident, $ar:ident) => {{
+        ($sc:ident, $ar:ident, $zero:expr) => {{
             let (array, index, value) = (o[0] as usize, lane!(ints, 1), lane!($sc, 2));
             for (m, cx) in members.iter_mut().enumerate() {
                 // SAFETY: as above.
@@ -115,46 +145,20 @@ pub(crate) unsafe fn run_per_member(
             }
         }};
     }
-    // A fused read then `BreakTransform` (operands from `$b`: the transform to break, then
-    // the blocks of its parts): `$read!(…, |m| …)`, each member's transform broken from
-    // its slot after the read has written its result (the two may share a slot, as the
-    // compiler lays them out, or not).
-    macro_rules! then_break {
-        ($read:ident!($($args:tt)*), $b:expr) => {{
-            let (t, parts) = (
-                lane!(transforms, $b),
-                (lane!(vec3s, $b + 1), lane!(quats, $b + 2), lane!(vec3s, $b + 3)),
-            );
-            // SAFETY: as above.
-            $read!($($args)* |m| break_transform!(m, unsafe { *t.add(m) }, parts))
-        }};
-    }
     match op {
-        Op::ArrayAt(e) => match e {
-            Elem::Bool => array_at!(bools, bool_arrays, false),
-            Elem::Int => array_at!(ints, int_arrays, 0),
-            Elem::Float => array_at!(floats, float_arrays, 0.0),
-            Elem::Vec3 => array_at!(vec3s, vec3_arrays, Vec3::ZERO),
-            Elem::Quat => array_at!(quats, quat_arrays, Quat::IDENTITY),
-            Elem::Transform => array_at!(transforms, transform_arrays, Transform::IDENTITY),
-            // Bone slots are not in the lanes.
-            Elem::Bone => return false,
-        },
-        Op::ArrayAtBreakTransform => then_break!(
-            array_at!(transforms, transform_arrays, Transform::IDENTITY,),
-            3
-        ),
-        Op::ArraySetAt(e) => match e {
-            Elem::Bool => array_set_at!(bools, bool_arrays),
-            Elem::Int => array_set_at!(ints, int_arrays),
-            Elem::Float => array_set_at!(floats, float_arrays),
-            Elem::Vec3 => array_set_at!(vec3s, vec3_arrays),
-            Elem::Quat => array_set_at!(quats, quat_arrays),
-            Elem::Transform => array_set_at!(transforms, transform_arrays),
-            Elem::Bone => return false,
-        },
+        Op::ArrayAt(e) => scalar_elem!(e, array_at),
+        Op::ArrayAtBreakTransform => {
+            let blocks = break_blocks!(3);
+            array_at!(transforms, transform_arrays, Transform::IDENTITY, |m| {
+                break_transform!(m, blocks)
+            });
+        }
+        Op::ArraySetAt(e) => scalar_elem!(e, array_set_at),
         Op::GetTransform => get_transform!(0, |_m| {}),
-        Op::GetTransformBreakTransform => then_break!(get_transform!(0,), 4),
+        Op::GetTransformBreakTransform => {
+            let blocks = break_blocks!(4);
+            get_transform!(0, |m| break_transform!(m, blocks));
+        }
         _ => return false,
     }
     true
