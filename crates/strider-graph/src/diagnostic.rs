@@ -22,7 +22,7 @@ struct SourceFile {
     /// `path` as shown in `path:line:col` (lossy UTF-8), made once: the compiler describes
     /// a location for every node it emits.
     shown: String,
-    text: String,
+    /// The text and where its lines start.
     lines: LineIndex,
 }
 
@@ -43,12 +43,10 @@ impl fmt::Debug for SourceMap {
 impl SourceMap {
     /// Adds a file's text.
     pub fn add(&mut self, path: &Path, text: String) -> FileId {
-        let lines = LineIndex::new(&text);
         self.files.push(SourceFile {
             path: path.to_path_buf(),
             shown: path.display().to_string(),
-            text,
-            lines,
+            lines: LineIndex::of(text),
         });
         FileId((self.files.len() - 1) as u32)
     }
@@ -62,7 +60,7 @@ impl SourceMap {
     /// A file's text.
     #[must_use]
     pub fn text(&self, file: FileId) -> &str {
-        &self.files[file.0 as usize].text
+        self.files[file.0 as usize].lines.text()
     }
 
     /// Every file, in the order read.
@@ -81,8 +79,16 @@ impl SourceMap {
     /// `path:line:col` of a location.
     #[must_use]
     pub fn describe(&self, loc: Loc) -> String {
+        // Built without `format!`: the compiler describes every node it emits.
         let (line, col) = self.line_col(loc);
-        format!("{}:{line}:{col}", self.files[loc.file.0 as usize].shown)
+        let (mut line_digits, mut col_digits) = (itoa::Buffer::new(), itoa::Buffer::new());
+        let (line, col) = (line_digits.format(line), col_digits.format(col));
+        let shown = &self.files[loc.file.0 as usize].shown;
+        let mut out = String::with_capacity(shown.len() + line.len() + col.len() + 2);
+        for part in [shown, ":", line, ":", col] {
+            out.push_str(part);
+        }
+        out
     }
 }
 

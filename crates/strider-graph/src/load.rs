@@ -75,8 +75,7 @@ struct Loader {
 
 impl Loader {
     fn parse(&mut self, file: FileId) -> Option<Graph> {
-        let text = self.sources.text(file).to_string();
-        match reader::parse(&text) {
+        match reader::parse(self.sources.text(file)) {
             Ok(root) => {
                 let mut p = Parser {
                     sources: &self.sources,

@@ -9,6 +9,7 @@
 //! It is a single recursive-descent cursor over the source text. Nesting is limited to
 //! 128 levels so hostile input yields a [`ParseError`] rather than a stack overflow.
 
+use std::borrow::Cow;
 use std::fmt;
 
 /// Deepest allowed nesting of `(`, `[` and `{`.
@@ -115,13 +116,21 @@ pub struct LineIndex {
 impl LineIndex {
     /// Indexes the line starts of `src` (keeps a copy of the text to count chars).
     pub fn new(src: &str) -> Self {
+        Self::of(src.to_string())
+    }
+
+    /// Indexes the line starts of `text`, which it keeps to count chars.
+    pub fn of(text: String) -> Self {
         let line_starts = std::iter::once(0)
-            .chain(src.match_indices('\n').map(|(i, _)| i + 1))
+            .chain(memchr::memchr_iter(b'\n', text.as_bytes()).map(|i| i + 1))
             .collect();
-        LineIndex {
-            text: src.to_string(),
-            line_starts,
-        }
+        LineIndex { text, line_starts }
+    }
+
+    /// The text indexed.
+    #[must_use]
+    pub fn text(&self) -> &str {
+        &self.text
     }
 
     /// 1-based (line, column) of a byte offset; offsets past the end map to the end.
@@ -168,6 +177,10 @@ pub fn parse(src: &str) -> Result<Spanned<Value>, ParseError> {
 }
 
 type PResult<T> = Result<T, ParseError>;
+
+fn is_space(b: u8) -> bool {
+    matches!(b, b' ' | b'\t' | b'\n' | b'\r')
+}
 
 fn is_ident_start(b: u8) -> bool {
     b.is_ascii_alphabetic() || b == b'_'
@@ -305,8 +318,11 @@ impl<'a> Parser<'a> {
     fn skip_ws(&mut self) -> PResult<()> {
         loop {
             match (self.peek(), self.peek_at(1)) {
-                (Some(b' ' | b'\t' | b'\n' | b'\r'), _) => self.pos += 1,
-                (Some(b'/'), Some(b'/')) => self.eat_while(|b| b != b'\n'),
+                (Some(b' ' | b'\t' | b'\n' | b'\r'), _) => self.eat_while(is_space),
+                (Some(b'/'), Some(b'/')) => {
+                    let rest = &self.bytes[self.pos..];
+                    self.pos += memchr::memchr(b'\n', rest).unwrap_or(rest.len());
+                }
                 (Some(b'/'), Some(b'*')) => self.block_comment()?,
                 _ => return Ok(()),
             }
@@ -468,23 +484,31 @@ impl<'a> Parser<'a> {
     /// Reads an identifier (`name` or `r#name`) if one is at the cursor.
     fn ident(&mut self) -> Option<Spanned<String>> {
         let start = self.pos;
+        let body = self.skip_ident()?;
+        Some(spanned(
+            self.slice(body, self.pos).to_string(),
+            start,
+            self.pos,
+        ))
+    }
+
+    /// Moves past an identifier (`name` or `r#name`) if one is at the cursor; returns where
+    /// its name starts (after `r#`).
+    fn skip_ident(&mut self) -> Option<usize> {
+        let start = self.pos;
         let raw = self.peek() == Some(b'r')
             && self.peek_at(1) == Some(b'#')
             && self.peek_at(2).is_some_and(is_raw_ident_byte);
         if raw {
             self.pos += 2;
             self.eat_while(is_raw_ident_byte);
+            Some(start + 2)
         } else if self.peek().is_some_and(is_ident_start) {
             self.eat_while(is_ident_byte);
+            Some(start)
         } else {
-            return None;
+            None
         }
-        let body = if raw { start + 2 } else { start };
-        Some(spanned(
-            self.slice(body, self.pos).to_string(),
-            start,
-            self.pos,
-        ))
     }
 
     /// An identifier-led value: bool, `inf`/`NaN`, a bare identifier or `Name(...)`.
@@ -538,7 +562,8 @@ impl<'a> Parser<'a> {
     /// Lookahead: does `ident :` start at the cursor?
     fn at_field(&mut self) -> bool {
         let save = self.pos;
-        let field = self.ident().is_some() && self.skip_ws().is_ok() && self.peek() == Some(b':');
+        let field =
+            self.skip_ident().is_some() && self.skip_ws().is_ok() && self.peek() == Some(b':');
         self.pos = save;
         field
     }
@@ -593,7 +618,12 @@ impl<'a> Parser<'a> {
         if self.peek().is_some_and(|b| is_ident_byte(b) || b == b'.') {
             return Err(self.invalid_number(start));
         }
-        let text = self.slice(start, self.pos).replace('_', "");
+        let text = self.slice(start, self.pos);
+        let text = if text.contains('_') {
+            Cow::Owned(text.replace('_', ""))
+        } else {
+            Cow::Borrowed(text)
+        };
         let value = if float {
             Value::Float(text.parse().map_err(|_| self.invalid_number(start))?)
         } else {
@@ -679,18 +709,21 @@ impl<'a> Parser<'a> {
         self.pos += 1;
         let mut out = String::new();
         loop {
-            let c = match self.next_char() {
-                Some('"') => break,
-                Some('\\') => self.escape()?,
-                c => c,
+            // Copies the run of plain characters up to the next quote or backslash at once.
+            let rest = &self.bytes[self.pos..];
+            let Some(run) = memchr::memchr2(b'"', b'\\', rest) else {
+                break;
             };
-            let Some(c) = c else {
-                let message = "unterminated string: this `\"` is never closed";
-                return Err(self.err(start, start + 1, message));
-            };
+            out.push_str(self.slice(self.pos, self.pos + run));
+            self.pos += run + 1;
+            if rest[run] == b'"' {
+                return Ok(spanned(Value::String(out), start, self.pos));
+            }
+            let Some(c) = self.escape()? else { break };
             out.push(c);
         }
-        Ok(spanned(Value::String(out), start, self.pos))
+        let message = "unterminated string: this `\"` is never closed";
+        Err(self.err(start, start + 1, message))
     }
 
     /// Resolves an escape; the cursor is just past the backslash. `None` at end of file.
