@@ -49,9 +49,18 @@ fn note() {
     }
 }
 
+/// Every mimalloc block is aligned to at least a machine word, so a request aligned to no
+/// more goes to the plain `mi_malloc`/`mi_realloc`, which skip the alignment path that
+/// `MiMalloc` always takes (about a third of the cost of a small allocation).
+const WORD: usize = std::mem::size_of::<usize>();
+
 unsafe impl GlobalAlloc for CountingAllocator {
     unsafe fn alloc(&self, layout: Layout) -> *mut u8 {
         note();
+        if layout.align() <= WORD {
+            // SAFETY: any size is valid for `mi_malloc`; its blocks are word-aligned.
+            return unsafe { libmimalloc_sys::mi_malloc(layout.size()) }.cast();
+        }
         // SAFETY: forwarded unchanged from the caller, who upholds `alloc`'s contract.
         unsafe { MiMalloc.alloc(layout) }
     }
@@ -64,6 +73,11 @@ unsafe impl GlobalAlloc for CountingAllocator {
 
     unsafe fn realloc(&self, ptr: *mut u8, layout: Layout, new_size: usize) -> *mut u8 {
         note();
+        if layout.align() <= WORD {
+            // SAFETY: `ptr` came from mimalloc (either entry point), and its block, like the
+            // new one, is word-aligned.
+            return unsafe { libmimalloc_sys::mi_realloc(ptr.cast(), new_size) }.cast();
+        }
         // SAFETY: as above; `ptr` was allocated by this allocator, i.e. by `MiMalloc`.
         unsafe { MiMalloc.realloc(ptr, layout, new_size) }
     }

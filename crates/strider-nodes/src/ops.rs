@@ -6,6 +6,7 @@
 //! the variant. The executor is a `match` over this enum.
 
 use crate::types::{Elem, ValueType};
+use std::borrow::Cow;
 
 /// The most operands any instruction has: the executor reads each instruction's operands
 /// as a window of this many (the program's operand list is padded at its end), so the
@@ -45,38 +46,32 @@ impl Op {
     /// The executor reads slot operands without bounds checks: a program is only built once
     /// every slot operand, read by this layout, names an existing slot of its type.
     #[must_use]
-    pub fn operands(self) -> Option<Vec<Operand>> {
+    pub fn operands(self) -> Option<Cow<'static, [Operand]>> {
         use Access::{Read, ReadWrite, Write};
         use Operand::{Slot, Target};
         use ValueType as T;
         Some(match self {
-            Op::End => Vec::new(),
-            Op::Jump => vec![Target],
-            Op::JumpIfFalse => vec![Slot(T::Bool, Read), Target],
-            Op::ForEachNext(e) => vec![
+            Op::End => Cow::Borrowed(&[]),
+            Op::Jump => Cow::Borrowed(&[Target]),
+            Op::JumpIfFalse => Cow::Borrowed(&[Slot(T::Bool, Read), Target]),
+            Op::ForEachNext(e) => Cow::Owned(vec![
                 Slot(T::Array(e), Read),
                 Slot(T::Int, ReadWrite),
                 Slot(e.scalar(), Write),
                 Slot(T::Int, Write),
                 Slot(T::Int, Write),
                 Target,
-            ],
-            Op::ForNext => vec![
+            ]),
+            Op::ForNext => Cow::Borrowed(&[
                 Slot(T::Int, ReadWrite),
                 Slot(T::Int, Read),
                 Slot(T::Int, Write),
                 Target,
-            ],
-            Op::Copy(ty) => vec![Slot(ty, Read), Slot(ty, Write)],
-            Op::IntToFloat => vec![Slot(T::Int, Read), Slot(T::Float, Write)],
-            op => match op.fused_parts() {
-                Some((first, second)) => {
-                    let mut layout = first.operands()?;
-                    layout.extend(second.operands()?);
-                    layout
-                }
-                None => crate::registry().layout(op)?.to_vec(),
-            },
+            ]),
+            Op::Copy(ty) => Cow::Owned(vec![Slot(ty, Read), Slot(ty, Write)]),
+            Op::IntToFloat => Cow::Borrowed(&[Slot(T::Int, Read), Slot(T::Float, Write)]),
+            // Node ops and fused ops: laid out once, when the registry is built.
+            op => Cow::Borrowed(crate::registry().layout(op)?),
         })
     }
 

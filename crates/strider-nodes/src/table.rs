@@ -100,7 +100,8 @@ pub struct NodeSpec {
 pub struct Registry {
     nodes: Vec<NodeSpec>,
     index: FxHashMap<&'static str, usize>,
-    /// Each node op's operands: inputs, outputs, state (see [`Op::operands`]).
+    /// Each node op's operands (inputs, outputs, state) and each fused op's (see
+    /// [`Op::operands`]).
     layouts: FxHashMap<Op, Vec<Operand>>,
 }
 
@@ -113,6 +114,13 @@ pub fn registry() -> &'static Registry {
         let mut layouts = FxHashMap::default();
         for o in nodes.iter().flat_map(|n| &n.overloads) {
             layouts.entry(o.op).or_insert_with(|| o.operands());
+        }
+        // A fused op's operands are its two parts' laid end to end.
+        for (fused, (first, second)) in Op::FUSED {
+            if let (Some(a), Some(b)) = (layouts.get(&first), layouts.get(&second)) {
+                let both = [a.as_slice(), b.as_slice()].concat();
+                layouts.insert(fused, both);
+            }
         }
         Registry {
             nodes,
@@ -129,7 +137,8 @@ impl Registry {
         self.index.get(name).map(|&i| &self.nodes[i])
     }
 
-    /// The operands of node op `op` (inputs, outputs, state), if a node compiles to it.
+    /// The operands of node op or fused op `op`, if a node compiles to it (a fused op: if
+    /// nodes compile to both its parts).
     #[must_use]
     pub(crate) fn layout(&self, op: Op) -> Option<&[Operand]> {
         self.layouts.get(&op).map(Vec::as_slice)
@@ -2058,21 +2067,21 @@ mod tests {
         // Control ops: jump targets are not slots.
         use crate::Access::{Read, ReadWrite, Write};
         use crate::Operand::{Slot, Target};
-        assert_eq!(Op::Jump.operands(), Some(vec![Target]));
+        assert_eq!(Op::Jump.operands().as_deref(), Some(&[Target][..]));
         assert_eq!(
-            Op::JumpIfFalse.operands(),
-            Some(vec![Slot(ValueType::Bool, Read), Target])
+            Op::JumpIfFalse.operands().as_deref(),
+            Some(&[Slot(ValueType::Bool, Read), Target][..])
         );
         assert_eq!(
-            Op::ForEachNext(Elem::Vec3).operands(),
-            Some(vec![
+            Op::ForEachNext(Elem::Vec3).operands().as_deref(),
+            Some(&[
                 Slot(ValueType::Array(Elem::Vec3), Read),
                 Slot(ValueType::Int, ReadWrite),
                 Slot(ValueType::Vec3, Write),
                 Slot(ValueType::Int, Write),
                 Slot(ValueType::Int, Write),
                 Target
-            ])
+            ][..])
         );
     }
 

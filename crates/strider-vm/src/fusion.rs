@@ -11,6 +11,7 @@
 //! results are bit-identical, and nothing else in the program changes but the jump targets
 //! past a removed instruction.
 
+use std::borrow::Cow;
 use crate::program::{NO_ORIGIN, Program};
 use crate::sharing::{leaders, remove_instructions};
 use fixedbitset::FixedBitSet;
@@ -21,7 +22,7 @@ use strider_nodes::{Op, Operand};
 /// second origin ([`Program::second_origin_id`]).
 pub(crate) fn fuse(program: &mut Program) {
     let n = program.code.len();
-    let layouts: Vec<Vec<Operand>> = program
+    let layouts: Vec<Cow<'static, [Operand]>> = program
         .code
         .iter()
         .map(|instr| instr.op.operands().unwrap_or_default())
@@ -180,10 +181,10 @@ mod tests {
         for (op, (first, second)) in Op::FUSED {
             assert_eq!(op.fused_parts(), Some((first, second)));
             assert_eq!((first.fused_parts(), second.fused_parts()), (None, None));
-            let mut both = first.operands().expect("a layout");
+            let mut both = first.operands().expect("a layout").into_owned();
             let first_len = both.len();
-            both.extend(second.operands().expect("a layout"));
-            assert_eq!(op.operands().as_ref(), Some(&both), "{op:?}");
+            both.extend_from_slice(&second.operands().expect("a layout"));
+            assert_eq!(op.operands().as_deref(), Some(both.as_slice()), "{op:?}");
             assert!(both.len() <= strider_nodes::MAX_OPERANDS, "{op:?}");
 
             // The two ops, then the fused op, on the same slots: inputs with distinct

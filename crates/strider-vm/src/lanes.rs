@@ -1142,7 +1142,7 @@ mod tests {
                         continue;
                     };
                     // Only ops that compute scalar slots from scalar slots may run wide.
-                    for operand in op.operands().expect("a layout") {
+                    for &operand in op.operands().expect("a layout").iter() {
                         assert!(
                             matches!(operand, Operand::Slot(ty, _) if SCALAR_TYPES.contains(&ty)),
                             "{op:?} runs wide with operand {operand:?}"

@@ -1,6 +1,7 @@
 //! [`Program`]: the compiled, immutable form of a graph, and [`ProgramBuilder`], the
 //! compiler's way of making one.
 
+use std::borrow::Cow;
 use crate::slots::{ScalarLens, Slots};
 use rustc_hash::FxHashMap;
 use std::fmt;
@@ -578,7 +579,7 @@ impl ProgramBuilder {
                 "the {name} entry {entry} is not one of the {len} instructions"
             );
         }
-        let layouts: Vec<Vec<Operand>> = p
+        let layouts: Vec<Cow<'static, [Operand]>> = p
             .code
             .iter()
             .map(|instr| {
@@ -623,7 +624,7 @@ fn written_lens(p: &Program) -> ScalarLens {
     let mut lens = ScalarLens::default();
     for instr in &p.code {
         let layout = instr.op.operands().unwrap_or_default();
-        for (k, operand) in layout.into_iter().enumerate() {
+        for (k, &operand) in layout.iter().enumerate() {
             if let Operand::Slot(ty, access) = operand
                 && access != strider_nodes::Access::Read
                 && let Some(t) = crate::slots::scalar(ty)

@@ -46,6 +46,7 @@
 //! Written here because no crate does liveness over this instruction set; the bit sets
 //! are `fixedbitset`'s.
 
+use std::borrow::Cow;
 use crate::program::{Instr, PinSlot, Program};
 use crate::slots::{SCALAR_TYPES, ScalarLens, Slots, scalar};
 use fixedbitset::FixedBitSet;
@@ -87,7 +88,7 @@ struct Accesses {
 }
 
 impl Accesses {
-    fn of(program: &Program, layouts: &[Vec<Operand>], ids: &Ids) -> Self {
+    fn of(program: &Program, layouts: &[Cow<'static, [Operand]>], ids: &Ids) -> Self {
         let mut a = Accesses {
             uses: Vec::new(),
             defs: Vec::new(),
@@ -159,7 +160,7 @@ fn successors(
 /// The first instruction of every basic block (and one past the last): the entries, the
 /// jump targets and whatever follows an instruction that does not simply fall through.
 /// `layouts` are the instructions' operand layouts.
-pub(crate) fn leaders(program: &Program, layouts: &[Vec<Operand>]) -> FixedBitSet {
+pub(crate) fn leaders(program: &Program, layouts: &[Cow<'static, [Operand]>]) -> FixedBitSet {
     let mut leader = FixedBitSet::with_capacity(program.code.len() + 1);
     leader.insert(program.construction as usize);
     leader.insert(program.forward as usize);
@@ -194,7 +195,7 @@ struct Block {
 /// operands, the initial memory image, the variables' slots and the pin table (which keeps
 /// only the values that still own their slot). `layouts` are the instructions' operand
 /// layouts ([`Op::operands`]); the program's operands must all name existing slots.
-pub(crate) fn share(program: &mut Program, layouts: &[Vec<Operand>]) {
+pub(crate) fn share(program: &mut Program, layouts: &[Cow<'static, [Operand]>]) {
     let ids = Ids::new(ScalarLens::of(&program.initial).0);
     let n_ids = ids.count();
     let n = program.code.len();
@@ -617,7 +618,7 @@ fn coalesce_copies(
 /// instruction after it. `layouts` are the instructions' operand layouts before removal.
 pub(crate) fn remove_instructions(
     program: &mut Program,
-    layouts: &[Vec<Operand>],
+    layouts: &[Cow<'static, [Operand]>],
     dropped: &FixedBitSet,
 ) {
     if dropped.is_clear() {
