@@ -511,7 +511,7 @@ struct Scope<'a, 'c> {
     function: Option<&'a FunctionDecl>,
     nodes: Vec<Slot<'a>>,
     loops: Vec<LoopDecl<'a>>,
-    names: FxHashMap<String, Name>,
+    names: FxHashMap<&'a str, Name>,
     locals: FxHashMap<String, usize>,
     /// Inline exec nodes, in walk order, so the step walk can find its node index.
     inline_index: FxHashMap<*const NodeDecl, usize>,
@@ -536,15 +536,15 @@ impl<'a, 'c> Scope<'a, 'c> {
         self.ctx.sources
     }
 
-    fn declare(&mut self, ident: &Ident, name: Name, diags: &mut Diagnostics) {
-        if self.names.contains_key(&ident.name) {
+    fn declare(&mut self, ident: &'a Ident, name: Name, diags: &mut Diagnostics) {
+        if self.names.contains_key(ident.name.as_str()) {
             diags
                 .error(self.sources(), ident.loc, format!("duplicate id `{}`: another node, input or loop name in this scope already uses it", ident.name))
                 .node(ident.name.clone())
                 .hint("ids must be unique within a graph's top level and within each function")
                 .emit();
         } else {
-            self.names.insert(ident.name.clone(), name);
+            self.names.insert(&ident.name, name);
         }
     }
 
@@ -781,9 +781,9 @@ impl<'a, 'c> Scope<'a, 'c> {
         let n = self.nodes.len();
         let mut g: DiGraph<usize, ()> = DiGraph::new();
         let v: Vec<NodeIndex> = (0..n + self.loops.len()).map(|i| g.add_node(i)).collect();
-        let link_deps = |e: &Expr, names: &FxHashMap<String, Name>| -> Option<usize> {
+        let link_deps = |e: &Expr, names: &FxHashMap<&'a str, Name>| -> Option<usize> {
             if let ExprKind::Link { source, .. } = &e.kind {
-                match names.get(source) {
+                match names.get(source.as_str()) {
                     Some(Name::Node(j)) => return Some(*j),
                     Some(Name::Loop(lp, _)) => return Some(n + lp),
                     _ => {}
@@ -940,8 +940,8 @@ impl<'a, 'c> Scope<'a, 'c> {
                 None
             }
             ExprKind::Link { source, pin } => {
-                let Some(name) = self.names.get(source) else {
-                    let mut hint = suggest(source, self.names.keys().map(String::as_str))
+                let Some(name) = self.names.get(source.as_str()) else {
+                    let mut hint = suggest(source, self.names.keys().copied())
                         .map(|s| format!("did you mean `{s}`?"));
                     if hint.is_none() && self.ctx.global_index.contains_key(source) {
                         hint = Some(format!("`{source}` is a variable: write var(\"{source}\")"));
@@ -1066,7 +1066,7 @@ impl<'a, 'c> Scope<'a, 'c> {
 
     fn resolve_node(&mut self, i: usize, diags: &mut Diagnostics) {
         let decl = self.nodes[i].decl;
-        let label = decl.label().to_string();
+        let label = decl.label();
         let kind = &decl.kind.name;
         // Sources of every pin, resolved once (errors reported once).
         let mut given: Vec<(&PinArg, Option<Result<Arg, strider_graph::Literal>>)> = Vec::new();
@@ -1137,7 +1137,7 @@ impl<'a, 'c> Scope<'a, 'c> {
                         p.name.loc,
                         format!("unknown pin `{}` on {kind}", p.name.name),
                     )
-                    .node(label.clone())
+                    .node(label)
                     .pin(p.name.name.clone())
                     .hint(hint)
                     .emit();
@@ -1153,7 +1153,7 @@ impl<'a, 'c> Scope<'a, 'c> {
                         decl.loc,
                         format!("missing required input `{}` of {kind}", pin.name),
                     )
-                    .node(label.clone())
+                    .node(label)
                     .pin(pin.name)
                     .hint(format!("add `{}: ...` ({}: {})", pin.name, pin.ty, pin.doc))
                     .emit();
@@ -1174,7 +1174,7 @@ impl<'a, 'c> Scope<'a, 'c> {
             {
                 diags
                         .error(self.sources(), p.value.loc, format!("write to a non-variable: {kind} changes its `{}` input in place, so it must be a variable", pin.name))
-                        .node(label.clone())
+                        .node(label)
                         .pin(pin.name)
                         .hint(match given_type {
                             Some(ty) => format!("write `{}: var(\"Name\")` with a {ty} variable", pin.name),
@@ -1627,7 +1627,7 @@ impl<'a, 'c> Scope<'a, 'c> {
                 } else if let Some(&i) = self.ctx.global_index.get(&var.name) {
                     (VarRef::Global(i), self.ctx.globals[i].ty)
                 } else {
-                    let what = match self.names.get(&var.name) {
+                    let what = match self.names.get(var.name.as_str()) {
                         Some(Name::Node(_)) => Some("a node"),
                         Some(Name::Input(_)) => Some("a function input"),
                         Some(Name::Loop(..)) => Some("a loop name"),
@@ -1659,8 +1659,8 @@ impl<'a, 'c> Scope<'a, 'c> {
                 })
             }
             Step::Run(id) => {
-                let Some(Name::Node(j)) = self.names.get(&id.name).copied() else {
-                    let hint = suggest(&id.name, self.names.keys().map(String::as_str))
+                let Some(Name::Node(j)) = self.names.get(id.name.as_str()).copied() else {
+                    let hint = suggest(&id.name, self.names.keys().copied())
                         .map(|s| format!("did you mean `{s}`?"));
                     diags
                         .error(

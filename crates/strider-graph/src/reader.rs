@@ -315,15 +315,24 @@ impl<'a> Parser<'a> {
     }
 
     /// Skips whitespace, `//` line comments and nested `/* */` block comments.
+    #[inline]
     fn skip_ws(&mut self) -> PResult<()> {
+        // Most calls find a token at the cursor at once.
+        match self.peek() {
+            Some(b' ' | b'\t' | b'\n' | b'\r' | b'/') => self.skip_ws_run(),
+            _ => Ok(()),
+        }
+    }
+
+    fn skip_ws_run(&mut self) -> PResult<()> {
         loop {
-            match (self.peek(), self.peek_at(1)) {
-                (Some(b' ' | b'\t' | b'\n' | b'\r'), _) => self.eat_while(is_space),
-                (Some(b'/'), Some(b'/')) => {
-                    let rest = &self.bytes[self.pos..];
-                    self.pos += memchr::memchr(b'\n', rest).unwrap_or(rest.len());
+            let rest = &self.bytes[self.pos..];
+            match rest {
+                [b' ' | b'\t' | b'\n' | b'\r', ..] => {
+                    self.pos += rest.iter().position(|&b| !is_space(b)).unwrap_or(rest.len());
                 }
-                (Some(b'/'), Some(b'*')) => self.block_comment()?,
+                [b'/', b'/', ..] => self.pos += memchr::memchr(b'\n', rest).unwrap_or(rest.len()),
+                [b'/', b'*', ..] => self.block_comment()?,
                 _ => return Ok(()),
             }
         }
