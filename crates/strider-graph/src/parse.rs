@@ -18,7 +18,7 @@ pub(crate) struct Parser<'a> {
     pub file: FileId,
 }
 
-type Fields<'v> = [(Spanned<String>, Spanned<Value>)];
+type Fields<'v> = [(Spanned<&'v str>, Spanned<Value<'v>>)];
 
 impl Parser<'_> {
     fn loc(&self, span: Span) -> Loc {
@@ -34,7 +34,7 @@ impl Parser<'_> {
     }
 
     /// Fields of a struct value (named `name` if given), or an error.
-    fn fields<'v>(&mut self, v: &'v Spanned<Value>, what: &str) -> Option<&'v Fields<'v>> {
+    fn fields<'v>(&mut self, v: &'v Spanned<Value<'v>>, what: &str) -> Option<&'v Fields<'v>> {
         match &v.value {
             Value::Struct(_, fields) => Some(fields),
             Value::Tuple(_, items) if items.is_empty() => Some(&[]),
@@ -55,7 +55,7 @@ impl Parser<'_> {
     fn check_fields(&mut self, fields: &Fields<'_>, known: &[&str], what: &str) {
         let mut seen: Vec<&str> = Vec::new();
         for (name, _) in fields {
-            if seen.contains(&name.value.as_str()) {
+            if seen.contains(&name.value) {
                 self.err(
                     name.span,
                     format!("field `{}` is given twice in {what}", name.value),
@@ -64,7 +64,7 @@ impl Parser<'_> {
                 .emit();
             }
             seen.push(&name.value);
-            if !known.contains(&name.value.as_str()) {
+            if !known.contains(&name.value) {
                 let hint = suggest(&name.value, known.iter().copied())
                     .map(|s| format!("did you mean `{s}`?"))
                     .unwrap_or_else(|| format!("{what} has the fields: {}", known.join(", ")));
@@ -78,10 +78,10 @@ impl Parser<'_> {
         }
     }
 
-    fn string(&mut self, v: &Spanned<Value>, what: &str) -> Option<Ident> {
+    fn string(&mut self, v: &Spanned<Value<'_>>, what: &str) -> Option<Ident> {
         match &v.value {
             Value::String(s) => Some(Ident {
-                name: s.clone(),
+                name: s.to_string(),
                 loc: self.loc(v.span),
             }),
             other => {
@@ -98,9 +98,9 @@ impl Parser<'_> {
 
     fn map_entries<'v>(
         &mut self,
-        v: &'v Spanned<Value>,
+        v: &'v Spanned<Value<'v>>,
         what: &str,
-    ) -> &'v [(Spanned<Value>, Spanned<Value>)] {
+    ) -> &'v [(Spanned<Value<'v>>, Spanned<Value<'v>>)] {
         match &v.value {
             Value::Map(entries) => entries,
             other => {
@@ -115,7 +115,7 @@ impl Parser<'_> {
         }
     }
 
-    fn list<'v>(&mut self, v: &'v Spanned<Value>, what: &str) -> &'v [Spanned<Value>] {
+    fn list<'v>(&mut self, v: &'v Spanned<Value<'v>>, what: &str) -> &'v [Spanned<Value<'v>>] {
         match &v.value {
             Value::List(items) => items,
             other => {
@@ -130,7 +130,7 @@ impl Parser<'_> {
         }
     }
 
-    fn number(&mut self, v: &Spanned<Value>, what: &str) -> Option<f64> {
+    fn number(&mut self, v: &Spanned<Value<'_>>, what: &str) -> Option<f64> {
         match v.value {
             Value::Int(i) => Some(i as f64),
             Value::Float(f) => Some(f),
@@ -146,7 +146,7 @@ impl Parser<'_> {
         }
     }
 
-    fn value_type(&mut self, v: &Spanned<Value>) -> Option<ValueType> {
+    fn value_type(&mut self, v: &Spanned<Value<'_>>) -> Option<ValueType> {
         let names: Vec<&str> = ValueType::ALL.iter().map(|t| t.name()).collect();
         match &v.value {
             Value::Ident(name) => match ValueType::from_name(name) {
@@ -175,7 +175,7 @@ impl Parser<'_> {
     }
 
     /// The whole graph file.
-    pub fn graph(&mut self, root: &Spanned<Value>) -> Graph {
+    pub fn graph(&mut self, root: &Spanned<Value<'_>>) -> Graph {
         let mut g = Graph {
             file: self.file,
             ..Graph::default()
@@ -215,7 +215,7 @@ impl Parser<'_> {
         self.check_fields(fields, KNOWN, "Graph");
         let mut version_seen = false;
         for (name, v) in fields {
-            match name.value.as_str() {
+            match name.value {
                 "version" => {
                     version_seen = true;
                     match v.value {
@@ -272,7 +272,7 @@ impl Parser<'_> {
         g
     }
 
-    fn conventions(&mut self, v: &Spanned<Value>) {
+    fn conventions(&mut self, v: &Spanned<Value<'_>>) {
         let Some(fields) = self.fields(v, "conventions") else {
             return;
         };
@@ -298,7 +298,7 @@ impl Parser<'_> {
         }
     }
 
-    fn variables(&mut self, v: &Spanned<Value>, what: &str) -> Vec<VariableDecl> {
+    fn variables(&mut self, v: &Spanned<Value<'_>>, what: &str) -> Vec<VariableDecl> {
         let mut out = Vec::new();
         for (k, decl) in self.map_entries(v, what) {
             let Some(name) = self.string(k, "a variable name") else {
@@ -313,7 +313,7 @@ impl Parser<'_> {
             let mut default = None;
             let mut tunable = None;
             for (f, fv) in fields {
-                match f.value.as_str() {
+                match f.value {
                     "type" => {
                         ty = self.value_type(fv);
                         ty_loc = self.loc(fv.span);
@@ -343,7 +343,7 @@ impl Parser<'_> {
         out
     }
 
-    fn tunable(&mut self, v: &Spanned<Value>) -> Option<Tunable> {
+    fn tunable(&mut self, v: &Spanned<Value<'_>>) -> Option<Tunable> {
         match &v.value {
             Value::Bool(true) => Some(Tunable::default()),
             Value::Bool(false) => None,
@@ -352,7 +352,7 @@ impl Parser<'_> {
                 self.check_fields(fields, &["min", "max"], "a tunable range");
                 let mut t = Tunable::default();
                 for (f, fv) in fields {
-                    match f.value.as_str() {
+                    match f.value {
                         "min" => t.min = self.number(fv, "the minimum"),
                         "max" => t.max = self.number(fv, "the maximum"),
                         _ => {}
@@ -372,7 +372,7 @@ impl Parser<'_> {
         }
     }
 
-    fn params(&mut self, v: &Spanned<Value>, what: &str, allow_default: bool) -> Vec<Param> {
+    fn params(&mut self, v: &Spanned<Value<'_>>, what: &str, allow_default: bool) -> Vec<Param> {
         let mut out = Vec::new();
         for (k, decl) in self.map_entries(v, what) {
             let Some(name) = self.string(k, "a parameter name") else {
@@ -403,7 +403,7 @@ impl Parser<'_> {
                     let mut ty = None;
                     let mut default = None;
                     for (f, fv) in fields {
-                        match f.value.as_str() {
+                        match f.value {
                             "type" => ty = self.value_type(fv),
                             "default" if allow_default => default = self.literal(fv),
                             _ => {}
@@ -423,7 +423,7 @@ impl Parser<'_> {
         out
     }
 
-    fn function(&mut self, name: Ident, v: &Spanned<Value>) -> Option<FunctionDecl> {
+    fn function(&mut self, name: Ident, v: &Spanned<Value<'_>>) -> Option<FunctionDecl> {
         if STATEMENTS.contains(&name.name.as_str())
             || strider_nodes::registry().get(&name.name).is_some()
         {
@@ -453,7 +453,7 @@ impl Parser<'_> {
             loc: self.loc(v.span),
         };
         for (k, fv) in fields {
-            match k.value.as_str() {
+            match k.value {
                 "inputs" => f.inputs = self.params(fv, "inputs", true),
                 "outputs" => f.outputs = self.params(fv, "outputs", false),
                 "locals" => f.locals = self.variables(fv, "locals"),
@@ -465,7 +465,7 @@ impl Parser<'_> {
         Some(f)
     }
 
-    fn nodes(&mut self, v: &Spanned<Value>) -> Vec<NodeDecl> {
+    fn nodes(&mut self, v: &Spanned<Value<'_>>) -> Vec<NodeDecl> {
         let mut out = Vec::new();
         for (k, nv) in self.map_entries(v, "nodes") {
             let Some(id) = self.string(k, "a node id") else {
@@ -488,25 +488,25 @@ impl Parser<'_> {
 
     /// `Type(pin: value, ...)`, `Type()` or `Type`; an `id:` field is allowed when
     /// `id` is `None` (inline exec nodes).
-    fn node(&mut self, v: &Spanned<Value>, id: Option<Ident>) -> Option<NodeDecl> {
+    fn node(&mut self, v: &Spanned<Value<'_>>, id: Option<Ident>) -> Option<NodeDecl> {
         let (kind, fields): (Ident, &Fields<'_>) = match &v.value {
             Value::Struct(Some(name), fields) => (
                 Ident {
-                    name: name.value.clone(),
+                    name: name.value.to_string(),
                     loc: self.loc(name.span),
                 },
                 fields,
             ),
             Value::Tuple(Some(name), items) if items.is_empty() => (
                 Ident {
-                    name: name.value.clone(),
+                    name: name.value.to_string(),
                     loc: self.loc(name.span),
                 },
                 &[],
             ),
             Value::Ident(name) => (
                 Ident {
-                    name: name.clone(),
+                    name: name.to_string(),
                     loc: self.loc(v.span),
                 },
                 &[],
@@ -538,7 +538,7 @@ impl Parser<'_> {
         };
         let mut seen: Vec<&str> = Vec::new();
         for (pin, pv) in fields {
-            if seen.contains(&pin.value.as_str()) {
+            if seen.contains(&pin.value) {
                 self.err(pin.span, format!("pin `{}` is given twice", pin.value))
                     .node(node.label().to_string())
                     .emit();
@@ -561,7 +561,7 @@ impl Parser<'_> {
             if let Some(value) = self.expr(pv) {
                 node.pins.push(PinArg {
                     name: Ident {
-                        name: pin.value.clone(),
+                        name: pin.value.to_string(),
                         loc: self.loc(pin.span),
                     },
                     value,
@@ -572,13 +572,13 @@ impl Parser<'_> {
     }
 
     /// A pin value: link, variable or literal.
-    pub fn expr(&mut self, v: &Spanned<Value>) -> Option<Expr> {
+    pub fn expr(&mut self, v: &Spanned<Value<'_>>) -> Option<Expr> {
         let loc = self.loc(v.span);
         match &v.value {
             Value::String(s) => {
                 let (source, pin) = match s.split_once('.') {
                     Some((a, b)) => (a.to_string(), Some(b.to_string())),
-                    None => (s.clone(), None),
+                    None => (s.to_string(), None),
                 };
                 Some(Expr {
                     kind: ExprKind::Link { source, pin },
@@ -592,7 +592,7 @@ impl Parser<'_> {
                         ..
                     },
                 ] => Some(Expr {
-                    kind: ExprKind::Var(s.clone()),
+                    kind: ExprKind::Var(s.to_string()),
                     loc,
                 }),
                 _ => {
@@ -612,14 +612,14 @@ impl Parser<'_> {
     }
 
     /// A constant.
-    pub fn literal(&mut self, v: &Spanned<Value>) -> Option<Literal> {
+    pub fn literal(&mut self, v: &Spanned<Value<'_>>) -> Option<Literal> {
         let loc = self.loc(v.span);
         let kind = match &v.value {
             Value::Bool(b) => LiteralKind::Bool(*b),
             Value::Int(i) => LiteralKind::Int(*i),
             Value::Float(f) => LiteralKind::Float(*f),
-            Value::Ident(w) if w == "None" => LiteralKind::NoBone,
-            Value::Ident(w) => LiteralKind::Word(w.clone()),
+            Value::Ident(w) if *w == "None" => LiteralKind::NoBone,
+            Value::Ident(w) => LiteralKind::Word(w.to_string()),
             Value::List(items) => {
                 let mut out = Vec::new();
                 for item in items {
@@ -645,7 +645,7 @@ impl Parser<'_> {
                 }
                 LiteralKind::Numbers(nums)
             }
-            Value::Tuple(Some(name), items) => match (name.value.as_str(), items.as_slice()) {
+            Value::Tuple(Some(name), items) => match (name.value, items.as_slice()) {
                 (
                     "bone",
                     [
@@ -654,7 +654,7 @@ impl Parser<'_> {
                             ..
                         },
                     ],
-                ) => LiteralKind::Bone(s.clone()),
+                ) => LiteralKind::Bone(s.to_string()),
                 (
                     "name",
                     [
@@ -663,7 +663,7 @@ impl Parser<'_> {
                             ..
                         },
                     ],
-                ) => LiteralKind::Name(s.clone()),
+                ) => LiteralKind::Name(s.to_string()),
                 ("euler", [x, y, z]) => {
                     let x = self.number(x, "an angle")?;
                     let y = self.number(y, "an angle")?;
@@ -715,7 +715,7 @@ impl Parser<'_> {
                 let mut t = (None, None, None);
                 for (f, fv) in fields {
                     let lit = self.literal(fv).map(Box::new);
-                    match f.value.as_str() {
+                    match f.value {
                         "translation" => t.0 = lit,
                         "rotation" => t.1 = lit,
                         "scale" => t.2 = lit,
@@ -742,7 +742,7 @@ impl Parser<'_> {
         Some(Literal { kind, loc })
     }
 
-    fn steps(&mut self, v: &Spanned<Value>) -> Vec<Step> {
+    fn steps(&mut self, v: &Spanned<Value<'_>>) -> Vec<Step> {
         let mut out = Vec::new();
         for item in self.list(v, "an exec list") {
             if let Some(s) = self.step(item) {
@@ -752,11 +752,11 @@ impl Parser<'_> {
         out
     }
 
-    fn step(&mut self, v: &Spanned<Value>) -> Option<Step> {
+    fn step(&mut self, v: &Spanned<Value<'_>>) -> Option<Step> {
         let loc = self.loc(v.span);
         let name = match &v.value {
-            Value::Struct(Some(n), _) | Value::Tuple(Some(n), _) => n.value.as_str(),
-            Value::Ident(n) => n.as_str(),
+            Value::Struct(Some(n), _) | Value::Tuple(Some(n), _) => n.value,
+            Value::Ident(n) => *n,
             other => {
                 let found = other.describe();
                 self.err(v.span, format!("expected an exec step such as `Set(\"Var\", \"node\")` or `SetTransform(...)`, found {found}"))
@@ -802,7 +802,7 @@ impl Parser<'_> {
                     if let Some(value) = self.expr(fv) {
                         values.push(PinArg {
                             name: Ident {
-                                name: f.value.clone(),
+                                name: f.value.to_string(),
                                 loc: self.loc(f.span),
                             },
                             value,
@@ -816,7 +816,7 @@ impl Parser<'_> {
                 let mut condition = None;
                 let (mut then, mut otherwise) = (Vec::new(), Vec::new());
                 for (f, fv) in fields {
-                    match f.value.as_str() {
+                    match f.value {
                         "condition" => condition = self.expr(fv),
                         "then" => then = self.steps(fv),
                         "else" => otherwise = self.steps(fv),
@@ -843,7 +843,7 @@ impl Parser<'_> {
                 let (mut items, mut element, mut index, mut count, mut body) =
                     (None, None, None, None, Vec::new());
                 for (f, fv) in fields {
-                    match f.value.as_str() {
+                    match f.value {
                         "items" => items = self.expr(fv),
                         "element" => element = self.string(fv, "the element's name"),
                         "index" => index = self.string(fv, "the index's name"),
@@ -871,7 +871,7 @@ impl Parser<'_> {
                 self.check_fields(fields, &["count", "index", "body"], "For");
                 let (mut count, mut index, mut body) = (None, None, Vec::new());
                 for (f, fv) in fields {
-                    match f.value.as_str() {
+                    match f.value {
                         "count" => count = self.expr(fv),
                         "index" => index = self.string(fv, "the index's name"),
                         "body" => body = self.steps(fv),
@@ -909,14 +909,21 @@ impl Parser<'_> {
         }
     }
 
-    fn events(&mut self, v: &Spanned<Value>) -> Vec<EventDecl> {
-        let entries: Vec<(Spanned<String>, &Spanned<Value>)> = match &v.value {
+    fn events(&mut self, v: &Spanned<Value<'_>>) -> Vec<EventDecl> {
+        let entries: Vec<(Spanned<&str>, &Spanned<Value<'_>>)> = match &v.value {
             Value::Map(entries) => entries
                 .iter()
                 .filter_map(|(k, v)| match &k.value {
-                    Value::Ident(s) | Value::String(s) => Some((
+                    Value::Ident(s) => Some((
                         Spanned {
-                            value: s.clone(),
+                            value: *s,
+                            span: k.span,
+                        },
+                        v,
+                    )),
+                    Value::String(s) => Some((
+                        Spanned {
+                            value: &**s,
                             span: k.span,
                         },
                         v,
@@ -934,7 +941,7 @@ impl Parser<'_> {
         };
         let mut out: Vec<EventDecl> = Vec::new();
         for (k, body) in entries {
-            let kind = match k.value.as_str() {
+            let kind = match k.value {
                 "construction" => EventKind::Construction,
                 "forward" => EventKind::Forward,
                 other => {
@@ -962,14 +969,14 @@ impl Parser<'_> {
         out
     }
 
-    fn editor(&mut self, v: &Spanned<Value>) -> Editor {
+    fn editor(&mut self, v: &Spanned<Value<'_>>) -> Editor {
         let mut e = Editor::default();
         let Some(fields) = self.fields(v, "the editor section") else {
             return e;
         };
         self.check_fields(fields, &["positions", "comments"], "the editor section");
         for (f, fv) in fields {
-            match f.value.as_str() {
+            match f.value {
                 "positions" => {
                     for (k, pv) in self.map_entries(fv, "positions") {
                         let Some(id) = self.string(k, "a node id") else {
@@ -999,7 +1006,7 @@ impl Parser<'_> {
                             nodes: Vec::new(),
                         };
                         for (k, kv) in cf {
-                            match k.value.as_str() {
+                            match k.value {
                                 "title" => {
                                     comment.title = self
                                         .string(kv, "the title")

@@ -6,6 +6,10 @@
 //! [`Spanned<Value>`] tree instead; the loader turns that tree into document types and
 //! uses the spans (through [`LineIndex`]) for its own messages.
 //!
+//! The tree borrows from the source text: identifiers, field names and strings without
+//! escapes are slices of it, so reading a graph allocates only for the lists and for
+//! strings that hold an escape.
+//!
 //! It is a single recursive-descent cursor over the source text. Nesting is limited to
 //! 128 levels so hostile input yields a [`ParseError`] rather than a stack overflow.
 
@@ -33,39 +37,40 @@ pub struct Spanned<T> {
     pub span: Span,
 }
 
-/// One RON value; children carry their own spans.
+/// One RON value, borrowing its names and strings from the source text `'a`; children
+/// carry their own spans.
 #[derive(Clone, Debug, PartialEq)]
-pub enum Value {
+pub enum Value<'a> {
     /// `true` or `false`.
     Bool(bool),
     /// An integer literal (decimal, `0x`, `0b` or `0o`) that fits in an `i64`.
     Int(i64),
     /// A float literal, including `inf`, `-inf` and `NaN`.
     Float(f64),
-    /// A string literal (escapes resolved) or a raw string.
-    String(String),
+    /// A string literal or a raw string: borrowed, or owned when an escape was resolved.
+    String(Cow<'a, str>),
     /// A character literal such as `'a'`.
     Char(char),
     /// `()`
     Unit,
     /// A bare identifier that is not `true`/`false` and is not followed by `(`:
     /// `None`, `Z`, `Float`.
-    Ident(String),
+    Ident(&'a str),
     /// `[a, b, c]`
-    List(Vec<Spanned<Value>>),
+    List(Vec<Spanned<Value<'a>>>),
     /// `{ key: value, ... }` in source order; duplicate keys are kept (the caller reports them).
-    Map(Vec<(Spanned<Value>, Spanned<Value>)>),
+    Map(Vec<(Spanned<Value<'a>>, Spanned<Value<'a>>)>),
     /// `Name(a, b)` or `(a, b)`; name is None for an anonymous tuple. `Some(x)` is
     /// `Tuple(Some("Some"), [x])`. `Name()` is `Tuple(Some("Name"), [])`.
-    Tuple(Option<Spanned<String>>, Vec<Spanned<Value>>),
+    Tuple(Option<Spanned<&'a str>>, Vec<Spanned<Value<'a>>>),
     /// `Name(field: v, ...)` or `(field: v, ...)` in source order; duplicate fields kept.
     Struct(
-        Option<Spanned<String>>,
-        Vec<(Spanned<String>, Spanned<Value>)>,
+        Option<Spanned<&'a str>>,
+        Vec<(Spanned<&'a str>, Spanned<Value<'a>>)>,
     ),
 }
 
-impl Value {
+impl Value<'_> {
     /// Short description of the kind for error messages: "a float", "a list",
     /// "struct `Foo`", "identifier `Z`", ...
     pub fn describe(&self) -> String {
@@ -154,7 +159,7 @@ impl LineIndex {
 }
 
 /// Parses one RON value (the whole document), allowing trailing whitespace/comments only.
-pub fn parse(src: &str) -> Result<Spanned<Value>, ParseError> {
+pub fn parse(src: &str) -> Result<Spanned<Value<'_>>, ParseError> {
     let pos = if src.starts_with('\u{feff}') { 3 } else { 0 };
     let mut p = Parser {
         src,
@@ -385,7 +390,7 @@ impl<'a> Parser<'a> {
     // ----- values ------------------------------------------------------------------------
 
     /// Parses one value at the cursor (leading whitespace already skipped).
-    fn value(&mut self) -> PResult<Spanned<Value>> {
+    fn value(&mut self) -> PResult<Spanned<Value<'a>>> {
         let start = self.pos;
         match self.peek() {
             Some(b'(') => self.parenthesised(None, start),
@@ -468,7 +473,7 @@ impl<'a> Parser<'a> {
         err
     }
 
-    fn map_entry(&mut self) -> PResult<(Spanned<Value>, Spanned<Value>)> {
+    fn map_entry(&mut self) -> PResult<(Spanned<Value<'a>>, Spanned<Value<'a>>)> {
         let key = self.value()?;
         self.skip_ws()?;
         if !self.eat(b':') {
@@ -478,7 +483,7 @@ impl<'a> Parser<'a> {
         Ok((key, self.value()?))
     }
 
-    fn field(&mut self) -> PResult<(Spanned<String>, Spanned<Value>)> {
+    fn field(&mut self) -> PResult<(Spanned<&'a str>, Spanned<Value<'a>>)> {
         let Some(name) = self.ident() else {
             return Err(self.expected("a field name (`name: value`) or `)`"));
         };
@@ -491,14 +496,10 @@ impl<'a> Parser<'a> {
     }
 
     /// Reads an identifier (`name` or `r#name`) if one is at the cursor.
-    fn ident(&mut self) -> Option<Spanned<String>> {
+    fn ident(&mut self) -> Option<Spanned<&'a str>> {
         let start = self.pos;
         let body = self.skip_ident()?;
-        Some(spanned(
-            self.slice(body, self.pos).to_string(),
-            start,
-            self.pos,
-        ))
+        Some(spanned(self.slice(body, self.pos), start, self.pos))
     }
 
     /// Moves past an identifier (`name` or `r#name`) if one is at the cursor; returns where
@@ -521,13 +522,13 @@ impl<'a> Parser<'a> {
     }
 
     /// An identifier-led value: bool, `inf`/`NaN`, a bare identifier or `Name(...)`.
-    fn word(&mut self) -> PResult<Spanned<Value>> {
+    fn word(&mut self) -> PResult<Spanned<Value<'a>>> {
         let start = self.pos;
         let Some(name) = self.ident() else {
             return Err(self.expected("a value"));
         };
         let raw = name.span.end - name.span.start != name.value.len();
-        let keyword = match name.value.as_str() {
+        let keyword = match name.value {
             _ if raw => None,
             "true" => Some(Value::Bool(true)),
             "false" => Some(Value::Bool(false)),
@@ -552,9 +553,9 @@ impl<'a> Parser<'a> {
     /// `(...)` after an optional name: unit, tuple or struct. The cursor is on `(`.
     fn parenthesised(
         &mut self,
-        name: Option<Spanned<String>>,
+        name: Option<Spanned<&'a str>>,
         start: usize,
-    ) -> PResult<Spanned<Value>> {
+    ) -> PResult<Spanned<Value<'a>>> {
         self.enter(b'(')?;
         self.skip_ws()?;
         let value = if name.is_none() && self.eat(b')') {
@@ -579,7 +580,7 @@ impl<'a> Parser<'a> {
 
     // ----- literals ----------------------------------------------------------------------
 
-    fn number(&mut self) -> PResult<Spanned<Value>> {
+    fn number(&mut self) -> PResult<Spanned<Value<'a>>> {
         let start = self.pos;
         let negative = self.peek() == Some(b'-');
         self.pos += usize::from(matches!(self.peek(), Some(b'+' | b'-')));
@@ -673,7 +674,7 @@ impl<'a> Parser<'a> {
         neg: bool,
         radix: u32,
         name: &str,
-    ) -> PResult<Spanned<Value>> {
+    ) -> PResult<Spanned<Value<'a>>> {
         let digits_start = self.pos;
         self.eat_while(is_ident_byte);
         let raw = self.slice(digits_start, self.pos);
@@ -713,23 +714,29 @@ impl<'a> Parser<'a> {
         self.err(start, self.pos, message)
     }
 
-    fn string(&mut self) -> PResult<Spanned<Value>> {
+    fn string(&mut self) -> PResult<Spanned<Value<'a>>> {
         let start = self.pos;
         self.pos += 1;
-        let mut out = String::new();
+        // Borrowed from the source unless an escape needs resolving.
+        let mut out = Cow::Borrowed("");
         loop {
-            // Copies the run of plain characters up to the next quote or backslash at once.
+            // Takes the run of plain characters up to the next quote or backslash at once.
             let rest = &self.bytes[self.pos..];
             let Some(run) = memchr::memchr2(b'"', b'\\', rest) else {
                 break;
             };
-            out.push_str(self.slice(self.pos, self.pos + run));
+            let plain = self.slice(self.pos, self.pos + run);
+            if out.is_empty() {
+                out = Cow::Borrowed(plain);
+            } else {
+                out.to_mut().push_str(plain);
+            }
             self.pos += run + 1;
             if rest[run] == b'"' {
                 return Ok(spanned(Value::String(out), start, self.pos));
             }
             let Some(c) = self.escape()? else { break };
-            out.push(c);
+            out.to_mut().push(c);
         }
         let message = "unterminated string: this `\"` is never closed";
         Err(self.err(start, start + 1, message))
@@ -795,7 +802,7 @@ impl<'a> Parser<'a> {
     }
 
     /// `r"..."`, `r#"..."#`, ...; the cursor is on the `r`.
-    fn raw_string(&mut self, hashes: usize) -> PResult<Spanned<Value>> {
+    fn raw_string(&mut self, hashes: usize) -> PResult<Spanned<Value<'a>>> {
         let start = self.pos;
         let body = start + hashes + 2;
         let mut quote = body;
@@ -814,7 +821,7 @@ impl<'a> Parser<'a> {
             {
                 self.pos = end;
                 return Ok(spanned(
-                    Value::String(self.slice(body, quote).into()),
+                    Value::String(Cow::Borrowed(self.slice(body, quote))),
                     start,
                     end,
                 ));
@@ -823,7 +830,7 @@ impl<'a> Parser<'a> {
         }
     }
 
-    fn char_literal(&mut self) -> PResult<Spanned<Value>> {
+    fn char_literal(&mut self) -> PResult<Spanned<Value<'a>>> {
         let start = self.pos;
         self.pos += 1;
         let c = match self.next_char() {
@@ -854,7 +861,7 @@ mod tests {
     fn show(v: &Value) -> String {
         let join = |items: Vec<String>| items.join(", ");
         let list = |items: &[Spanned<Value>]| join(items.iter().map(|i| show(&i.value)).collect());
-        let name = |n: &Option<Spanned<String>>| n.as_ref().map_or("", |n| &n.value).to_string();
+        let name = |n: &Option<Spanned<&str>>| n.as_ref().map_or("", |n| n.value).to_string();
         match v {
             Value::Bool(b) => b.to_string(),
             Value::Int(i) => i.to_string(),
@@ -862,7 +869,7 @@ mod tests {
             Value::String(s) => format!("{s:?}"),
             Value::Char(c) => format!("{c:?}"),
             Value::Unit => "()".to_string(),
-            Value::Ident(s) => s.clone(),
+            Value::Ident(s) => s.to_string(),
             Value::List(items) => format!("[{}]", list(items)),
             Value::Map(entries) => {
                 let e = entries
@@ -970,6 +977,13 @@ Graph(
             "\"a\\n\\t\\\\\\\"'\\0😀Aé\""
         );
         assert_eq!(ok("\"multi\nline é\""), "\"multi\\nline é\"");
+        // Escapes first, between and last, around plain runs; the empty string.
+        assert_eq!(ok(r#""\tab\"c\\""#), r#""\tab\"c\\""#);
+        assert_eq!(ok("\"\""), "\"\"");
+        let Ok(Spanned { value: Value::String(s), .. }) = parse(r#""no escapes""#) else {
+            panic!("a string");
+        };
+        assert!(matches!(s, Cow::Borrowed("no escapes")), "borrowed: {s:?}");
         assert_eq!(ok(r#"r"C:\path""#), r#""C:\\path""#);
         assert_eq!(ok(r###"r##"a "# b"##"###), r##""a \"# b""##);
         assert_eq!(ok("r#\"\"#"), "\"\"");
@@ -1186,7 +1200,7 @@ Graph(
             panic!("{doc:?}")
         };
         assert_eq!(name.value, "Graph");
-        let names: Vec<_> = fields.iter().map(|(k, _)| k.value.as_str()).collect();
+        let names: Vec<_> = fields.iter().map(|(k, _)| k.value).collect();
         assert_eq!(
             names,
             [

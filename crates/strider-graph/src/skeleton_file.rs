@@ -184,7 +184,7 @@ impl SkelReader<'_> {
         let mut contacts = Vec::new();
         let mut contact_spans = Vec::new();
         for (f, fv) in fields {
-            match f.value.as_str() {
+            match f.value {
                 "version" => {
                     if !matches!(fv.value, Value::Int(1)) {
                         self.err(fv.span, "unsupported skeleton format version")
@@ -194,7 +194,7 @@ impl SkelReader<'_> {
                 }
                 "name" => {
                     if let Value::String(s) = &fv.value {
-                        skel_name = s.clone();
+                        skel_name = s.to_string();
                     }
                 }
                 "bones" => {
@@ -276,10 +276,10 @@ impl SkelReader<'_> {
         let mut parent = None;
         let mut t = Transform::IDENTITY;
         for (f, fv) in fields {
-            match (f.value.as_str(), &fv.value) {
-                ("name", Value::String(s)) => name = Some(s.clone()),
-                ("parent", Value::String(s)) => parent = Some(s.clone()),
-                ("parent", Value::Ident(s)) if s == "None" => parent = None,
+            match (f.value, &fv.value) {
+                ("name", Value::String(s)) => name = Some(s.to_string()),
+                ("parent", Value::String(s)) => parent = Some(s.to_string()),
+                ("parent", Value::Ident(s)) if *s == "None" => parent = None,
                 ("translation", _) => {
                     t.translation = Vec3::from_array(self.numbers::<3>(fv, "a translation (cm)")?)
                 }
@@ -331,9 +331,9 @@ impl SkelReader<'_> {
         };
         let (mut name, mut bone, mut offset) = (None, None, Vec3::ZERO);
         for (f, fv) in fields {
-            match (f.value.as_str(), &fv.value) {
-                ("name", Value::String(s)) => name = Some(s.clone()),
-                ("bone", Value::String(s)) => bone = Some(s.clone()),
+            match (f.value, &fv.value) {
+                ("name", Value::String(s)) => name = Some(s.to_string()),
+                ("bone", Value::String(s)) => bone = Some(s.to_string()),
                 ("offset", _) => {
                     offset = Vec3::from_array(self.numbers::<3>(fv, "an offset (cm)")?)
                 }
