@@ -6,6 +6,7 @@ use crate::literal::{self, Fit};
 use petgraph::algo::{kosaraju_scc, toposort};
 use petgraph::graph::{DiGraph, NodeIndex};
 use rustc_hash::{FxHashMap, FxHashSet};
+use smallvec::SmallVec;
 use strider_graph::diagnostic::{Diagnostics, Loc, SourceMap};
 use strider_graph::{
     Diagnostic, EventKind, Expr, ExprKind, FunctionDecl, Graph, Ident, LoadedGraph, NodeDecl,
@@ -1069,7 +1070,8 @@ impl<'a, 'c> Scope<'a, 'c> {
         let label = decl.label();
         let kind = &decl.kind.name;
         // Sources of every pin, resolved once (errors reported once).
-        let mut given: Vec<(&PinArg, Option<Result<Arg, strider_graph::Literal>>)> = Vec::new();
+        let mut given: Vec<(&PinArg, Option<Result<Arg, strider_graph::Literal>>)> =
+            Vec::with_capacity(decl.pins.len());
         let mut failed_source = false;
         for p in &decl.pins {
             let before = diags.len();
@@ -1188,10 +1190,26 @@ impl<'a, 'c> Scope<'a, 'c> {
             self.nodes[i].failed = true;
             return;
         }
-        // Overload resolution: first best fit (fewest promotions).
+        // Overload resolution: first best fit (fewest promotions). An overload whose inputs
+        // cannot take the types linked to them is passed over before anything is bound
+        // (overloads name their pins alike and in one order).
+        let linked: SmallVec<[(usize, ValueType); 8]> = first
+            .inputs
+            .iter()
+            .enumerate()
+            .filter_map(|(pi, pin)| match given.iter().find(|(p, _)| p.name.name == pin.name) {
+                Some((_, Some(Ok(a)))) => Some((pi, a.ty)),
+                _ => None,
+            })
+            .collect();
         let mut best: Option<(usize, usize, Vec<Arg>)> = None;
         for (oi, o) in spec.overloads.iter().enumerate() {
-            if let Ok((args, promotions)) = self.bind(o.inputs.as_slice(), &given)
+            let takes = |&(pi, ty): &(usize, ValueType)| {
+                let want = o.inputs[pi].ty;
+                ty == want || ty.converts_to(want)
+            };
+            if linked.iter().all(takes)
+                && let Ok((args, promotions)) = self.bind(o.inputs.as_slice(), &given)
                 && best.as_ref().is_none_or(|(_, p, _)| promotions < *p)
             {
                 best = Some((oi, promotions, args));

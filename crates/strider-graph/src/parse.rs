@@ -466,8 +466,9 @@ impl Parser<'_> {
     }
 
     fn nodes(&mut self, v: &Spanned<Value<'_>>) -> Vec<NodeDecl> {
-        let mut out = Vec::new();
-        for (k, nv) in self.map_entries(v, "nodes") {
+        let entries = self.map_entries(v, "nodes");
+        let mut out = Vec::with_capacity(entries.len());
+        for (k, nv) in entries {
             let Some(id) = self.string(k, "a node id") else {
                 continue;
             };
@@ -533,10 +534,10 @@ impl Parser<'_> {
         let mut node = NodeDecl {
             id,
             kind,
-            pins: Vec::new(),
+            pins: Vec::with_capacity(fields.len()),
             loc: self.loc(v.span),
         };
-        let mut seen: Vec<&str> = Vec::new();
+        let mut seen: Vec<&str> = Vec::with_capacity(fields.len());
         for (pin, pv) in fields {
             if seen.contains(&pin.value) {
                 self.err(pin.span, format!("pin `{}` is given twice", pin.value))
