@@ -804,6 +804,14 @@ impl<'a, 'c> Scope<'a, 'c> {
                 g.update_edge(v[d], v[n + lp], ());
             }
         }
+        // One pass orders an acyclic body (the usual case); the cycles are only looked for
+        // when it fails.
+        if let Ok(order) = toposort(&g, None) {
+            for x in order {
+                self.resolve_one(g[x], diags);
+            }
+            return;
+        }
         let mut in_cycle = vec![false; n + self.loops.len()];
         for scc in kosaraju_scc(&g) {
             let self_loop = scc.len() == 1 && g.contains_edge(scc[0], scc[0]);
@@ -836,17 +844,22 @@ impl<'a, 'c> Scope<'a, 'c> {
         acyclic.retain_nodes(|gr, x| !in_cycle[gr[x]]);
         let order = toposort(&acyclic, None).unwrap_or_default();
         for x in order {
-            let i = acyclic[x];
-            if i < n {
-                self.resolve_node(i, diags);
-            } else {
-                self.resolve_loop(i - n, diags);
-            }
+            self.resolve_one(acyclic[x], diags);
         }
         for (i, c) in in_cycle.iter().enumerate() {
             if *c && i < n {
                 self.nodes[i].failed = true;
             }
+        }
+    }
+
+    /// Resolves node `i`, or loop `i - n` for `i` past the `n` nodes.
+    fn resolve_one(&mut self, i: usize, diags: &mut Diagnostics) {
+        let n = self.nodes.len();
+        if i < n {
+            self.resolve_node(i, diags);
+        } else {
+            self.resolve_loop(i - n, diags);
         }
     }
 
