@@ -1089,7 +1089,7 @@ impl<'a, 'c> Scope<'a, 'c> {
         for p in &decl.pins {
             let before = diags.len();
             let s = self.source(&p.value, diags);
-            diags.annotate_since(before, &label, &p.name.name);
+            diags.annotate_since(before, label, &p.name.name);
             if s.is_none() {
                 failed_source = true;
             }
@@ -1210,10 +1210,12 @@ impl<'a, 'c> Scope<'a, 'c> {
             .inputs
             .iter()
             .enumerate()
-            .filter_map(|(pi, pin)| match given.iter().find(|(p, _)| p.name.name == pin.name) {
-                Some((_, Some(Ok(a)))) => Some((pi, a.ty)),
-                _ => None,
-            })
+            .filter_map(
+                |(pi, pin)| match given.iter().find(|(p, _)| p.name.name == pin.name) {
+                    Some((_, Some(Ok(a)))) => Some((pi, a.ty)),
+                    _ => None,
+                },
+            )
             .collect();
         let mut best: Option<(usize, usize, Vec<Arg>)> = None;
         for (oi, o) in spec.overloads.iter().enumerate() {
@@ -1240,7 +1242,7 @@ impl<'a, 'c> Scope<'a, 'c> {
                 });
             }
             None => {
-                self.report_mismatch(spec, &given, &label, decl, diags);
+                self.report_mismatch(spec, &given, label, decl, diags);
                 self.nodes[i].failed = true;
             }
         }

@@ -63,9 +63,9 @@ impl Parser<'_> {
                 .hint("remove one of them")
                 .emit();
             }
-            seen.push(&name.value);
+            seen.push(name.value);
             if !known.contains(&name.value) {
-                let hint = suggest(&name.value, known.iter().copied())
+                let hint = suggest(name.value, known.iter().copied())
                     .map(|s| format!("did you mean `{s}`?"))
                     .unwrap_or_else(|| format!("{what} has the fields: {}", known.join(", ")));
                 self.err(
@@ -545,7 +545,7 @@ impl Parser<'_> {
                     .emit();
                 continue;
             }
-            seen.push(&pin.value);
+            seen.push(pin.value);
             if pin.value == "id" {
                 if node.id.is_some() {
                     self.err(

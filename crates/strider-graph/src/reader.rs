@@ -334,7 +334,10 @@ impl<'a> Parser<'a> {
             let rest = &self.bytes[self.pos..];
             match rest {
                 [b' ' | b'\t' | b'\n' | b'\r', ..] => {
-                    self.pos += rest.iter().position(|&b| !is_space(b)).unwrap_or(rest.len());
+                    self.pos += rest
+                        .iter()
+                        .position(|&b| !is_space(b))
+                        .unwrap_or(rest.len());
                 }
                 [b'/', b'/', ..] => self.pos += memchr::memchr(b'\n', rest).unwrap_or(rest.len()),
                 [b'/', b'*', ..] => self.block_comment()?,
@@ -949,7 +952,7 @@ Graph(
         assert_eq!(ok("[None, r#type, r#true, _x1]"), "[None, type, true, _x1]");
         assert_eq!(
             parse("r#true").map(|v| v.value),
-            Ok(Value::Ident("true".into()))
+            Ok(Value::Ident("true"))
         );
     }
 
@@ -980,7 +983,11 @@ Graph(
         // Escapes first, between and last, around plain runs; the empty string.
         assert_eq!(ok(r#""\tab\"c\\""#), r#""\tab\"c\\""#);
         assert_eq!(ok("\"\""), "\"\"");
-        let Ok(Spanned { value: Value::String(s), .. }) = parse(r#""no escapes""#) else {
+        let Ok(Spanned {
+            value: Value::String(s),
+            ..
+        }) = parse(r#""no escapes""#)
+        else {
             panic!("a string");
         };
         assert!(matches!(s, Cow::Borrowed("no escapes")), "borrowed: {s:?}");

@@ -2074,14 +2074,16 @@ mod tests {
         );
         assert_eq!(
             Op::ForEachNext(Elem::Vec3).operands().as_deref(),
-            Some(&[
-                Slot(ValueType::Array(Elem::Vec3), Read),
-                Slot(ValueType::Int, ReadWrite),
-                Slot(ValueType::Vec3, Write),
-                Slot(ValueType::Int, Write),
-                Slot(ValueType::Int, Write),
-                Target
-            ][..])
+            Some(
+                &[
+                    Slot(ValueType::Array(Elem::Vec3), Read),
+                    Slot(ValueType::Int, ReadWrite),
+                    Slot(ValueType::Vec3, Write),
+                    Slot(ValueType::Int, Write),
+                    Slot(ValueType::Int, Write),
+                    Target
+                ][..]
+            )
         );
     }
 

@@ -11,10 +11,10 @@
 //! results are bit-identical, and nothing else in the program changes but the jump targets
 //! past a removed instruction.
 
-use std::borrow::Cow;
 use crate::program::{NO_ORIGIN, Program};
 use crate::sharing::{leaders, remove_instructions};
 use fixedbitset::FixedBitSet;
+use std::borrow::Cow;
 use strider_nodes::{Op, Operand};
 
 /// Fuses every pair of adjacent instructions that has a fused op, left to right; the

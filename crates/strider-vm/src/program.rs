@@ -1,9 +1,9 @@
 //! [`Program`]: the compiled, immutable form of a graph, and [`ProgramBuilder`], the
 //! compiler's way of making one.
 
-use std::borrow::Cow;
 use crate::slots::{ScalarLens, Slots};
 use rustc_hash::FxHashMap;
+use std::borrow::Cow;
 use std::fmt;
 use strider_nodes::{Op, Operand, Value, ValueType};
 

@@ -46,10 +46,10 @@
 //! Written here because no crate does liveness over this instruction set; the bit sets
 //! are `fixedbitset`'s.
 
-use std::borrow::Cow;
 use crate::program::{Instr, PinSlot, Program};
 use crate::slots::{SCALAR_TYPES, ScalarLens, Slots, scalar};
 use fixedbitset::FixedBitSet;
+use std::borrow::Cow;
 use std::cmp::Reverse;
 use std::collections::BinaryHeap;
 use strider_nodes::{Access, Op, Operand, ValueType};
