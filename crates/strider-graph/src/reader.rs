@@ -950,10 +950,7 @@ Graph(
         assert_eq!(ok("# ! [ enable(a, b,) ]\n#![enable(c)] true"), "true");
         assert_eq!(ok("\u{feff}false"), "false");
         assert_eq!(ok("[None, r#type, r#true, _x1]"), "[None, type, true, _x1]");
-        assert_eq!(
-            parse("r#true").map(|v| v.value),
-            Ok(Value::Ident("true"))
-        );
+        assert_eq!(parse("r#true").map(|v| v.value), Ok(Value::Ident("true")));
     }
 
     #[test]
