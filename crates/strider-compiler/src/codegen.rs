@@ -18,6 +18,7 @@
 use crate::Options;
 use crate::check::{Arg, Body, CStep, Checked, LoopPart, NodeKind, Src, VarRef};
 use crate::reads::{ReadsTable, Writes, each_step, pulled_by};
+use fixedbitset::FixedBitSet;
 use rustc_hash::{FxHashMap, FxHashSet};
 use smallvec::SmallVec;
 use strider_graph::{EventKind, FunctionDecl, LoadedGraph, Loc, NodeDecl, Step};
@@ -231,7 +232,7 @@ struct Gen<'a> {
     node_origins: FxHashMap<(Option<usize>, usize, Option<Event>), OriginId>,
     /// Per frame: the pure nodes whose output slots hold their current value at the point
     /// being emitted.
-    avail: Vec<FxHashSet<usize>>,
+    avail: Vec<FixedBitSet>,
     /// What each pure node's value depends on.
     reads: ReadsTable,
     /// Per function (as `checked.functions`): what its calls may leave out.
@@ -314,7 +315,9 @@ pub(crate) fn generate(loaded: &LoadedGraph, checked: &Checked, options: Options
         });
     }
     let top = g.frame(None, Vec::new());
-    g.avail = vec![FxHashSet::default(); g.frames.len()];
+    g.avail = (0..g.frames.len())
+        .map(|f| FixedBitSet::with_capacity(g.body(f).nodes.len()))
+        .collect();
     for (steps, doc, event) in [
         (
             &checked.graph.construction,
@@ -324,7 +327,7 @@ pub(crate) fn generate(loaded: &LoadedGraph, checked: &Checked, options: Options
         (&checked.graph.forward, &forward_doc, Event::Forward),
     ] {
         g.event = event;
-        g.avail.iter_mut().for_each(FxHashSet::clear);
+        g.avail.iter_mut().for_each(FixedBitSet::clear);
         let entry = g.pb.here();
         if event == Event::Construction {
             g.pb.set_construction_entry(entry);
@@ -629,13 +632,13 @@ impl<'a> Gen<'a> {
                 self.node(frame, n);
                 continue;
             }
-            if !self.body(frame).nodes[n].pure || !self.avail[frame].insert(n) {
+            if !self.body(frame).nodes[n].pure || self.avail[frame].put(n) {
                 continue;
             }
             stack.push((n, true));
             for a in self.body(frame).nodes[n].inputs.iter().rev() {
                 if let Src::Node { node, .. } = a.src
-                    && !self.avail[frame].contains(&node)
+                    && !self.avail[frame].contains(node)
                 {
                     stack.push((node, false));
                 }
@@ -649,7 +652,7 @@ impl<'a> Gen<'a> {
     /// only the values the body cannot change. Returns those values: they hold in every
     /// iteration and after the loop, however many times it runs. `writes` is what the body
     /// may change ([`Gen::writes_of`]).
-    fn enter_loop(&mut self, frame: usize, body: &[CStep], writes: &Writes) -> FxHashSet<usize> {
+    fn enter_loop(&mut self, frame: usize, body: &[CStep], writes: &Writes) -> FixedBitSet {
         let checked = self.checked;
         let function = self.frames[frame].body;
         let frame_body = match function {
@@ -699,8 +702,14 @@ impl<'a> Gen<'a> {
     /// Forgets the kept values of `frame` that `writes` may change.
     fn forget(&mut self, frame: usize, writes: &Writes) {
         let (checked, body) = (self.checked, self.frames[frame].body);
-        let reads = &mut self.reads;
-        self.avail[frame].retain(|&n| !writes.touch(reads.node(checked, body, n)));
+        let (reads, avail) = (&mut self.reads, &mut self.avail[frame]);
+        let changed: SmallVec<[usize; 16]> = avail
+            .ones()
+            .filter(|&n| writes.touch(reads.node(checked, body, n)))
+            .collect();
+        for n in changed {
+            avail.set(n, false);
+        }
     }
 
     /// Forgets the kept values of `frame` that `step`, just emitted, may have changed: the
@@ -859,7 +868,7 @@ impl<'a> Gen<'a> {
                 if let Some(j) = j {
                     self.pb.patch(j, 0, end);
                 }
-                self.avail[frame].retain(|n| after_then.contains(n));
+                self.avail[frame].intersect_with(&after_then);
             }
             CStep::ForEach { items, lp, body } => {
                 let source = self.pull(frame, std::slice::from_ref(items))[0];

@@ -207,8 +207,9 @@ pub(crate) fn pulled_by(body: &Body, steps: &[CStep]) -> Vec<usize> {
 /// Memoised [`Reads`] of every node of every body, and of whole pure function bodies.
 #[derive(Default)]
 pub(crate) struct ReadsTable {
-    /// `(function or None for the graph, node)` → reads.
-    nodes: FxHashMap<(Option<usize>, usize), Reads>,
+    /// Per body (the graph first, then each function), per node: its reads, once known.
+    /// Indexed rather than hashed: code generation asks after every step it emits.
+    nodes: Vec<Vec<Option<Reads>>>,
     /// Function → the globals and pose its whole body reads (for calls of it).
     functions: FxHashMap<usize, Reads>,
 }
@@ -217,13 +218,27 @@ impl ReadsTable {
     /// What node `n` of `body` (`None`: the graph) reads. Iterative, so long chains of pure
     /// nodes cannot overflow the stack; the checker guarantees they are acyclic.
     pub(crate) fn node(&mut self, checked: &Checked, body: Option<usize>, n: usize) -> &Reads {
-        if self.nodes.contains_key(&(body, n)) {
-            return &self.nodes[&(body, n)];
-        }
         let b = body_of(checked, body);
+        let at = body.map_or(0, |f| f + 1);
+        if self.nodes.len() <= at {
+            self.nodes.resize_with(at + 1, Vec::new);
+        }
+        if self.nodes[at].is_empty() {
+            self.nodes[at].resize_with(b.nodes.len(), || None);
+        }
+        if self.nodes[at][n].is_none() {
+            self.fill(checked, body, n);
+        }
+        self.nodes[at][n].as_ref().expect("filled")
+    }
+
+    /// Works out the reads of node `n` of `body` and of the pure nodes it pulls.
+    fn fill(&mut self, checked: &Checked, body: Option<usize>, n: usize) {
+        let b = body_of(checked, body);
+        let at = body.map_or(0, |f| f + 1);
         let mut stack = vec![(n, false)];
         while let Some((m, inputs_done)) = stack.pop() {
-            if self.nodes.contains_key(&(body, m)) {
+            if self.nodes[at][m].is_some() {
                 continue;
             }
             let node = &b.nodes[m];
@@ -232,7 +247,7 @@ impl ReadsTable {
                 for a in &node.inputs {
                     if let Src::Node { node: dep, .. } = a.src
                         && b.nodes[dep].pure
-                        && !self.nodes.contains_key(&(body, dep))
+                        && self.nodes[at][dep].is_none()
                     {
                         stack.push((dep, false));
                     }
@@ -245,7 +260,7 @@ impl ReadsTable {
                     Src::Global(g) => reads.globals.push(g),
                     Src::Local(l) => reads.locals.push(l),
                     Src::Node { node: dep, .. } if b.nodes[dep].pure => {
-                        if let Some(r) = self.nodes.get(&(body, dep)) {
+                        if let Some(r) = &self.nodes[at][dep] {
                             reads.merge(r);
                         }
                     }
@@ -266,9 +281,8 @@ impl ReadsTable {
                 }
             }
             reads.normalise();
-            self.nodes.insert((body, m), reads);
+            self.nodes[at][m] = Some(reads);
         }
-        &self.nodes[&(body, n)]
     }
 
     /// The graph variables and pose anything in function `f`'s body reads (its locals and
