@@ -216,6 +216,14 @@ fn unknown_pin() {
 }
 
 #[test]
+fn pin_given_twice() {
+    check_graph(
+        "tests/malformed/pin_given_twice.ron",
+        &[at(10, 36, "pin `a` is given twice").node("sum")],
+    );
+}
+
+#[test]
 fn missing_required_input() {
     check_graph(
         "tests/malformed/missing_required_input.ron",

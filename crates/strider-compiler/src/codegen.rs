@@ -469,10 +469,9 @@ impl<'a> Gen<'a> {
         for n in 0..self.frames[frame].node_out.len() {
             let names = self.output_names(body, n);
             let types = &self.body(frame).nodes[n].outputs;
-            for (o, &slot) in self.frames[frame].node_out[n].iter().enumerate() {
-                if let (Some(name), Some(&ty)) = (names.get(o), types.get(o)) {
-                    entries.push((PinOwner::NodeOutput(n as u32), name.clone(), ty, slot));
-                }
+            let slots = &self.frames[frame].node_out[n];
+            for (name, (&slot, &ty)) in names.into_iter().zip(slots.iter().zip(types)) {
+                entries.push((PinOwner::NodeOutput(n as u32), name, ty, slot));
             }
         }
         for (owner, pin, ty, slot) in entries {

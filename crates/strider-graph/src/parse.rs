@@ -537,15 +537,17 @@ impl Parser<'_> {
             pins: Vec::with_capacity(fields.len()),
             loc: self.loc(v.span),
         };
-        let mut seen: Vec<&str> = Vec::with_capacity(fields.len());
-        for (pin, pv) in fields {
-            if seen.contains(&pin.value) {
+        for (i, (pin, pv)) in fields.iter().enumerate() {
+            // A node has a handful of pins: the earlier ones are searched in place.
+            if fields[..i]
+                .iter()
+                .any(|(earlier, _)| earlier.value == pin.value)
+            {
                 self.err(pin.span, format!("pin `{}` is given twice", pin.value))
                     .node(node.label().to_string())
                     .emit();
                 continue;
             }
-            seen.push(pin.value);
             if pin.value == "id" {
                 if node.id.is_some() {
                     self.err(
