@@ -899,11 +899,11 @@ impl<'a, 'c> Scope<'a, 'c> {
 
     /// The type of a link or variable expression (`Ok`), or the literal to be typed by
     /// its pin (`Err`); `None` after reporting an error (or when the source failed).
-    fn expr_type(
+    fn expr_type<'e>(
         &self,
-        e: &Expr,
+        e: &'e Expr,
         diags: &mut Diagnostics,
-    ) -> Option<Result<ValueType, strider_graph::Literal>> {
+    ) -> Option<Result<ValueType, &'e strider_graph::Literal>> {
         match self.source(e, diags)? {
             Ok(arg) => Some(Ok(arg.ty)),
             Err(lit) => Some(Err(lit)),
@@ -912,13 +912,13 @@ impl<'a, 'c> Scope<'a, 'c> {
 
     /// Resolves an expression to a typed source, or hands back a literal to be typed by the
     /// pin. `None` after reporting an error, or silently when it depends on a failed node.
-    fn source(
+    fn source<'e>(
         &self,
-        e: &Expr,
+        e: &'e Expr,
         diags: &mut Diagnostics,
-    ) -> Option<Result<Arg, strider_graph::Literal>> {
+    ) -> Option<Result<Arg, &'e strider_graph::Literal>> {
         match &e.kind {
-            ExprKind::Literal(l) => Some(Err(l.clone())),
+            ExprKind::Literal(l) => Some(Err(l)),
             ExprKind::Var(name) => {
                 if let Some(&i) = self.locals.get(name) {
                     let f = self.function?;
@@ -1083,7 +1083,7 @@ impl<'a, 'c> Scope<'a, 'c> {
         let label = decl.label();
         let kind = &decl.kind.name;
         // Sources of every pin, resolved once (errors reported once).
-        let mut given: Vec<(&PinArg, Option<Result<Arg, strider_graph::Literal>>)> =
+        let mut given: Vec<(&PinArg, Option<Result<Arg, &strider_graph::Literal>>)> =
             Vec::with_capacity(decl.pins.len());
         let mut failed_source = false;
         for p in &decl.pins {
@@ -1253,7 +1253,7 @@ impl<'a, 'c> Scope<'a, 'c> {
     fn bind(
         &self,
         pins: &[PinSpec],
-        given: &[(&PinArg, Option<Result<Arg, strider_graph::Literal>>)],
+        given: &[(&PinArg, Option<Result<Arg, &strider_graph::Literal>>)],
     ) -> Result<(Vec<Arg>, usize), (usize, Mismatch)> {
         let mut args = Vec::with_capacity(pins.len());
         let mut promotions = 0;
@@ -1303,7 +1303,7 @@ impl<'a, 'c> Scope<'a, 'c> {
     fn report_mismatch(
         &self,
         spec: &strider_nodes::NodeSpec,
-        given: &[(&PinArg, Option<Result<Arg, strider_graph::Literal>>)],
+        given: &[(&PinArg, Option<Result<Arg, &strider_graph::Literal>>)],
         label: &str,
         decl: &NodeDecl,
         diags: &mut Diagnostics,
@@ -1415,7 +1415,7 @@ impl<'a, 'c> Scope<'a, 'c> {
         &mut self,
         i: usize,
         f: usize,
-        given: &[(&PinArg, Option<Result<Arg, strider_graph::Literal>>)],
+        given: &[(&PinArg, Option<Result<Arg, &strider_graph::Literal>>)],
         failed_source: bool,
         diags: &mut Diagnostics,
     ) {
@@ -1914,7 +1914,7 @@ fn parse_statement(kind: &str) -> bool {
 
 fn conversion_hint(
     expected: ValueType,
-    found: Option<&Result<Arg, strider_graph::Literal>>,
+    found: Option<&Result<Arg, &strider_graph::Literal>>,
 ) -> Option<String> {
     let found_ty = match found? {
         Ok(a) => a.ty,

@@ -162,10 +162,48 @@ struct LoopSlots {
     snapshot: u32,
 }
 
+/// Rows of slot indices laid end to end, one per node of a body (its output slots, or its
+/// state slots): one allocation for the body instead of one per node.
+#[derive(Default)]
+struct Rows {
+    slots: Vec<u32>,
+    /// Row `n` ends at `slots[ends[n]]` and starts where row `n - 1` ends (row 0 at 0).
+    ends: Vec<u32>,
+}
+
+impl Rows {
+    fn with_capacity(rows: usize) -> Self {
+        Rows {
+            slots: Vec::with_capacity(rows),
+            ends: Vec::with_capacity(rows),
+        }
+    }
+
+    fn push(&mut self, row: impl IntoIterator<Item = u32>) {
+        self.slots.extend(row);
+        self.ends.push(self.slots.len() as u32);
+    }
+
+    fn len(&self) -> usize {
+        self.ends.len()
+    }
+}
+
+impl std::ops::Index<usize> for Rows {
+    type Output = [u32];
+
+    fn index(&self, n: usize) -> &[u32] {
+        let start = n.checked_sub(1).map_or(0, |p| self.ends[p] as usize);
+        &self.slots[start..self.ends[n] as usize]
+    }
+}
+
 struct Frame {
     body: Option<usize>,
-    node_out: Vec<Vec<u32>>,
-    node_state: Vec<Vec<u32>>,
+    /// Each node's output slots.
+    node_out: Rows,
+    /// Each node's state slots.
+    node_state: Rows,
     /// Where the body reads each input: its own slot, or the argument's slot at the call
     /// being emitted (see [`Gen::node_code`]).
     inputs: Vec<u32>,
@@ -243,6 +281,8 @@ struct Gen<'a> {
     variable_slots: FxHashSet<(ValueType, u32)>,
     /// The `Return` being emitted is its body's last step (see [`Gen::exec_list`]).
     tail_return: bool,
+    /// [`Gen::pure_closure`]'s work stack, kept for the next call.
+    closure_stack: Vec<(usize, bool)>,
 }
 
 pub(crate) fn generate(loaded: &LoadedGraph, checked: &Checked, options: Options) -> Program {
@@ -299,6 +339,7 @@ pub(crate) fn generate(loaded: &LoadedGraph, checked: &Checked, options: Options
         call_facts: checked.functions.iter().map(CallFacts::of).collect(),
         variable_slots: FxHashSet::default(),
         tail_return: false,
+        closure_stack: Vec::new(),
     };
     for v in &checked.globals {
         let slot = g.pb.alloc(v.ty);
@@ -526,8 +567,8 @@ impl<'a> Gen<'a> {
         let id = self.frames.len();
         self.frames.push(Frame {
             body: function,
-            node_out: Vec::new(),
-            node_state: Vec::new(),
+            node_out: Rows::default(),
+            node_state: Rows::default(),
             own_inputs: inputs.clone(),
             inputs,
             outputs,
@@ -537,24 +578,24 @@ impl<'a> Gen<'a> {
             pins: Vec::new(),
         });
         let node_count = body.nodes.len();
-        let mut node_out = Vec::with_capacity(node_count);
-        let mut node_state = Vec::with_capacity(node_count);
+        let mut node_out = Rows::with_capacity(node_count);
+        let mut node_state = Rows::with_capacity(node_count);
         for n in 0..node_count {
             let node = &self.body(id).nodes[n];
             let kind = node.kind;
             let out_types = &node.outputs;
             let state_types = &node.state;
-            node_state.push(state_types.iter().map(|&t| self.pb.alloc(t)).collect());
+            node_state.push(state_types.iter().map(|&t| self.pb.alloc(t)));
             match kind {
                 NodeKind::Call(f) => {
                     let mut callee_path = path.clone();
                     callee_path.push(n as u32);
                     let callee = self.frame(Some(f), callee_path);
                     self.frames[id].callees.insert(n, callee);
-                    node_out.push(self.frames[callee].outputs.clone());
+                    node_out.push(self.frames[callee].outputs.iter().copied());
                 }
                 NodeKind::Builtin(_) => {
-                    node_out.push(out_types.iter().map(|&t| self.pb.alloc(t)).collect())
+                    node_out.push(out_types.iter().map(|&t| self.pb.alloc(t)))
                 }
             }
         }
@@ -625,7 +666,9 @@ impl<'a> Gen<'a> {
     /// (post-order with an explicit stack), so long data-flow chains cannot overflow the
     /// stack; the checker guarantees the dependencies are acyclic.
     fn pure_closure(&mut self, frame: usize, root: usize) {
-        let mut stack = vec![(root, false)];
+        // The stack is reused across calls; a call nested in `node` takes a new one.
+        let mut stack = std::mem::take(&mut self.closure_stack);
+        stack.push((root, false));
         while let Some((n, inputs_done)) = stack.pop() {
             if inputs_done {
                 self.node(frame, n);
@@ -643,6 +686,7 @@ impl<'a> Gen<'a> {
                 }
             }
         }
+        self.closure_stack = stack;
     }
 
     /// Before a loop over `body` in `frame`: emits the pure nodes the body pulls that no
