@@ -21,6 +21,8 @@ use crate::reads::{ReadsTable, Writes, each_step, pulled_by};
 use fixedbitset::FixedBitSet;
 use rustc_hash::{FxHashMap, FxHashSet};
 use smallvec::SmallVec;
+use std::borrow::Cow;
+use std::sync::Arc;
 use strider_graph::{EventKind, FunctionDecl, LoadedGraph, Loc, NodeDecl, Step};
 use strider_nodes::{Elem, Op, Value, ValueType, registry};
 use strider_vm::{
@@ -29,16 +31,16 @@ use strider_vm::{
 };
 
 /// What the document says about one node of a checked body (same index), for origins.
-struct NodeSource {
-    id: Option<String>,
-    kind: String,
+struct NodeSource<'d> {
+    id: Option<&'d str>,
+    kind: &'d str,
     /// Described as `path:line:col` only when an origin is made for the node.
     loc: Loc,
 }
 
 /// The nodes of a body in the checker's order: declared nodes in file order, then inline
 /// nodes of the exec lists in the order the lists are walked (depth first).
-fn body_node_sources(nodes: &[NodeDecl], lists: &[&[Step]]) -> Vec<NodeSource> {
+fn body_node_sources<'d>(nodes: &'d [NodeDecl], lists: &[&'d [Step]]) -> Vec<NodeSource<'d>> {
     fn walk<'d>(steps: &'d [Step], out: &mut Vec<&'d NodeDecl>) {
         for s in steps {
             match s {
@@ -66,8 +68,8 @@ fn body_node_sources(nodes: &[NodeDecl], lists: &[&[Step]]) -> Vec<NodeSource> {
     decls
         .into_iter()
         .map(|d| NodeSource {
-            id: d.id.as_ref().map(|i| i.name.clone()),
-            kind: d.kind.name.clone(),
+            id: d.id.as_ref().map(|i| i.name.as_str()),
+            kind: &d.kind.name,
             loc: d.loc,
         })
         .collect()
@@ -262,8 +264,10 @@ struct Gen<'a> {
     loaded: &'a LoadedGraph,
     /// For origins: the function declarations, indexed as `checked.functions`.
     fn_decls: Vec<&'a FunctionDecl>,
+    /// Each function's name (as `fn_decls`), shared by its pin table entries.
+    fn_names: Vec<Arc<str>>,
     /// For origins: each function's nodes, then the graph's (last).
-    node_sources: Vec<Vec<NodeSource>>,
+    node_sources: Vec<Vec<NodeSource<'a>>>,
     /// The event being generated.
     event: Event,
     /// Origin of node `n` of body `f` (`None`: the graph) in an event (`None` in functions).
@@ -315,7 +319,11 @@ pub(crate) fn generate(loaded: &LoadedGraph, checked: &Checked, options: Options
         event_steps(EventKind::Construction),
         event_steps(EventKind::Forward),
     );
-    let mut node_sources: Vec<Vec<NodeSource>> = fn_decls
+    let fn_names = fn_decls
+        .iter()
+        .map(|f| Arc::from(f.name.name.as_str()))
+        .collect();
+    let mut node_sources: Vec<Vec<NodeSource<'_>>> = fn_decls
         .iter()
         .map(|f| body_node_sources(&f.nodes, &[&f.exec]))
         .collect();
@@ -330,6 +338,7 @@ pub(crate) fn generate(loaded: &LoadedGraph, checked: &Checked, options: Options
         consts: FxHashMap::default(),
         frames: Vec::new(),
         loaded,
+        fn_names,
         fn_decls,
         node_sources,
         event: Event::Construction,
@@ -413,8 +422,8 @@ impl<'a> Gen<'a> {
         let sources = &self.node_sources[body.unwrap_or(self.node_sources.len() - 1)];
         let (node_id, node_type, location) = match sources.get(n) {
             Some(src) => (
-                src.id.clone(),
-                src.kind.clone(),
+                src.id.map(str::to_string),
+                src.kind.to_string(),
                 self.loaded.sources.describe(src.loc),
             ),
             None => (None, "?".to_string(), String::new()),
@@ -458,7 +467,7 @@ impl<'a> Gen<'a> {
     }
 
     /// Output pin names of node `n` of body `body` (`None`: the graph), for the pin table.
-    fn output_names(&self, body: Option<usize>, n: usize) -> Vec<String> {
+    fn output_names(&self, body: Option<usize>, n: usize) -> Vec<Cow<'static, str>> {
         let node = match body {
             None => &self.checked.graph.nodes[n],
             Some(f) => &self.checked.functions[f].nodes[n],
@@ -467,15 +476,15 @@ impl<'a> Gen<'a> {
             NodeKind::Call(f) => self.fn_decls[f]
                 .outputs
                 .iter()
-                .map(|p| p.name.name.clone())
+                .map(|p| Cow::Owned(p.name.name.clone()))
                 .collect(),
             NodeKind::Builtin(op) => {
                 let sources = &self.node_sources[body.unwrap_or(self.node_sources.len() - 1)];
                 sources
                     .get(n)
-                    .and_then(|src| registry().get(&src.kind))
+                    .and_then(|src| registry().get(src.kind))
                     .and_then(|spec| spec.overloads.iter().find(|o| o.op == op))
-                    .map(|o| o.outputs.iter().map(|p| p.name.to_string()).collect())
+                    .map(|o| o.outputs.iter().map(|p| Cow::Borrowed(p.name)).collect())
                     .unwrap_or_default()
             }
         }
@@ -485,15 +494,15 @@ impl<'a> Gen<'a> {
     /// outputs in the program's pin table.
     fn record_pins(&mut self, frame: usize, path: &[u32]) {
         let body = self.frames[frame].body;
-        let function = body.map(|f| self.fn_decls[f].name.name.clone());
-        let mut entries = Vec::new();
+        let function = body.map(|f| self.fn_names[f].clone());
+        let mut entries: Vec<(PinOwner, Cow<'static, str>, ValueType, u32)> = Vec::new();
         if let Some(f) = body {
             let decl = self.fn_decls[f];
             let b = &self.checked.functions[f];
             for (i, p) in decl.inputs.iter().enumerate() {
                 entries.push((
                     PinOwner::FunctionInput,
-                    p.name.name.clone(),
+                    Cow::Owned(p.name.name.clone()),
                     b.inputs[i],
                     self.frames[frame].inputs[i],
                 ));
@@ -501,7 +510,7 @@ impl<'a> Gen<'a> {
             for (i, l) in decl.locals.iter().enumerate() {
                 entries.push((
                     PinOwner::Local,
-                    l.name.name.clone(),
+                    Cow::Owned(l.name.name.clone()),
                     b.locals[i].0,
                     self.frames[frame].locals[i],
                 ));
@@ -594,9 +603,7 @@ impl<'a> Gen<'a> {
                     self.frames[id].callees.insert(n, callee);
                     node_out.push(self.frames[callee].outputs.iter().copied());
                 }
-                NodeKind::Builtin(_) => {
-                    node_out.push(out_types.iter().map(|&t| self.pb.alloc(t)))
-                }
+                NodeKind::Builtin(_) => node_out.push(out_types.iter().map(|&t| self.pb.alloc(t))),
             }
         }
         self.frames[id].node_out = node_out;

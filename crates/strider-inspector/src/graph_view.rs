@@ -732,10 +732,10 @@ impl GraphViewState {
         for p in program.pin_slots().iter().filter(|p| p.call_path == path) {
             match p.owner {
                 PinOwner::NodeOutput(n) => {
-                    self.outputs.insert((n, p.pin.clone()), (p.ty, p.slot));
+                    self.outputs.insert((n, p.pin.to_string()), (p.ty, p.slot));
                 }
                 PinOwner::FunctionInput | PinOwner::Local => {
-                    self.locals.insert(p.pin.clone(), (p.ty, p.slot));
+                    self.locals.insert(p.pin.to_string(), (p.ty, p.slot));
                 }
             }
         }

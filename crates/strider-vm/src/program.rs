@@ -5,6 +5,7 @@ use crate::slots::{ScalarLens, Slots};
 use rustc_hash::FxHashMap;
 use std::borrow::Cow;
 use std::fmt;
+use std::sync::Arc;
 use strider_nodes::{Op, Operand, Value, ValueType};
 
 /// One instruction: an op and where its operands start in [`Program::operands`].
@@ -182,12 +183,14 @@ pub struct PinSlot {
     /// the graph's top level), numbered as [`PinOwner::NodeOutput`]. Empty for the top
     /// level.
     pub call_path: Vec<u32>,
-    /// The function whose body holds the value; `None` for the graph's top level.
-    pub function: Option<String>,
+    /// The function whose body holds the value; `None` for the graph's top level. Shared by
+    /// every entry of the function's bodies.
+    pub function: Option<Arc<str>>,
     /// Which element of that body.
     pub owner: PinOwner,
-    /// The pin, function input or local variable name.
-    pub pin: String,
+    /// The pin, function input or local variable name: the node table's own for a
+    /// built-in node's output, owned otherwise.
+    pub pin: Cow<'static, str>,
     /// Its type.
     pub ty: ValueType,
     /// The slot of `ty` holding it.
