@@ -1596,9 +1596,11 @@ impl<'a, 'c> Scope<'a, 'c> {
     }
 
     /// Checks that the pure nodes an argument pulls read loop names only inside their loop.
-    /// Checks that the pure nodes an argument pulls read loop names only inside their loop.
     /// Iterative, so arbitrarily long data-flow chains cannot overflow the stack.
     fn check_scope(&self, arg: &Arg, active: &[usize], at: Loc, diags: &mut Diagnostics) {
+        if self.loops.is_empty() {
+            return; // no loop names to misuse
+        }
         let mut seen = FxHashSet::default();
         let mut stack: Vec<(&Arg, Loc)> = vec![(arg, at)];
         while let Some((arg, at)) = stack.pop() {
