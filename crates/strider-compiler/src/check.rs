@@ -880,7 +880,7 @@ impl<'a, 'c> Scope<'a, 'c> {
                 .pin("items")
                 .emit(),
             Some(Err(lit)) => {
-                if let Some(ValueType::Array(e)) = literal::natural_type(&lit) {
+                if let Some(ValueType::Array(e)) = literal::natural_type(lit) {
                     self.loops[lp].element = Some(e.scalar());
                 } else {
                     diags
@@ -1579,7 +1579,7 @@ impl<'a, 'c> Scope<'a, 'c> {
                     .emit();
                 None
             }
-            Err(lit) => match literal::convert(&lit, ty, &[]) {
+            Err(lit) => match literal::convert(lit, ty, &[]) {
                 Ok((value, _)) => Some(Arg::constant(value, ty, Some(lit.loc))),
                 Err(m) => {
                     diags
@@ -1763,8 +1763,8 @@ impl<'a, 'c> Scope<'a, 'c> {
                 let items_arg = match self.source(items, diags) {
                     Some(Ok(a)) => Some(a),
                     Some(Err(lit)) => {
-                        let ty = literal::natural_type(&lit).filter(|t| t.is_array());
-                        match ty.map(|t| literal::convert(&lit, t, &[])) {
+                        let ty = literal::natural_type(lit).filter(|t| t.is_array());
+                        match ty.map(|t| literal::convert(lit, t, &[])) {
                             Some(Ok((value, _))) => Some(Arg::constant(value, ty?, Some(lit.loc))),
                             _ => None,
                         }
