@@ -7,7 +7,7 @@
 //! reallocation on every thread (the benchmark's worker threads included);
 //! [`allocations_on_this_thread`] only the calling thread's, so a test harness running
 //! other tests meanwhile does not disturb it. Off, the cost is one relaxed atomic load per
-//! allocation, and no call.
+//! allocation, and no call into the counting code.
 
 // Implementing `GlobalAlloc` is an `unsafe impl`; each method only forwards the caller's
 // arguments, unchanged, to mimalloc, whose contract the caller upholds. No
@@ -18,13 +18,14 @@
 use mimalloc::MiMalloc;
 use std::alloc::{GlobalAlloc, Layout};
 use std::cell::Cell;
-use std::sync::atomic::{AtomicBool, AtomicU64, AtomicUsize, Ordering};
+use std::sync::atomic::{AtomicU64, AtomicUsize, Ordering};
 
 /// mimalloc, counting allocations while `strider bench` times frames. Install it as the
 /// binary's `#[global_allocator]`.
 pub struct CountingAllocator;
 
-static COUNTING: AtomicBool = AtomicBool::new(false);
+/// How many `count` calls run (each counts every thread's allocations).
+static COUNTING: AtomicUsize = AtomicUsize::new(0);
 static ALLOCATIONS: AtomicU64 = AtomicU64::new(0);
 /// How many threads are inside [`allocations_on_this_thread`].
 static THREADS_COUNTING: AtomicUsize = AtomicUsize::new(0);
@@ -41,7 +42,7 @@ thread_local! {
 /// Counts an allocation while some counting function runs.
 #[inline(always)]
 fn note_watched() {
-    if COUNTING.load(Ordering::Relaxed) {
+    if COUNTING.load(Ordering::Relaxed) > 0 {
         ALLOCATIONS.fetch_add(1, Ordering::Relaxed);
     }
     if THREADS_COUNTING.load(Ordering::Relaxed) > 0 {
@@ -147,14 +148,14 @@ unsafe impl GlobalAlloc for CountingAllocator {
 /// the global allocator (a library user's binary).
 pub(crate) fn count<T>(f: impl FnOnce() -> T) -> (T, Option<u64>) {
     WATCHERS.fetch_add(1, Ordering::SeqCst);
-    COUNTING.store(true, Ordering::SeqCst);
+    COUNTING.fetch_add(1, Ordering::SeqCst);
     // An allocation of our own: counted only if this allocator is the global one.
     let probe = ALLOCATIONS.load(Ordering::SeqCst);
     drop(std::hint::black_box(Box::new(0u8)));
     let before = ALLOCATIONS.load(Ordering::SeqCst);
     let installed = before > probe;
     let out = f();
-    COUNTING.store(false, Ordering::SeqCst);
+    COUNTING.fetch_sub(1, Ordering::SeqCst);
     WATCHERS.fetch_sub(1, Ordering::SeqCst);
     let counted = ALLOCATIONS.load(Ordering::SeqCst) - before;
     (out, installed.then_some(counted))

@@ -7,8 +7,8 @@
 //! uses the spans (through [`LineIndex`]) for its own messages.
 //!
 //! The tree borrows from the source text: identifiers, field names and strings without
-//! escapes are slices of it, so reading a graph allocates only for the lists and for
-//! strings that hold an escape.
+//! escapes are slices of it, so reading a graph allocates mainly for the lists (and for a
+//! string with an escape, a number with `_` separators).
 //!
 //! It is a single recursive-descent cursor over the source text. Nesting is limited to
 //! 128 levels so hostile input yields a [`ParseError`] rather than a stack overflow.

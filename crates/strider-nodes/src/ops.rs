@@ -40,8 +40,9 @@ pub enum Access {
 
 impl Op {
     /// This op's operands, in order: for node ops the overload's inputs, outputs and state
-    /// (from the node table), for control ops the layout documented on the variant. `None`
-    /// for an op that no node compiles to and the compiler never emits.
+    /// (from the node table), for fused ops their two parts' laid end to end (also from the
+    /// node table), for control ops the layout documented on the variant. `None` for an op
+    /// that no node compiles to and the compiler never emits.
     ///
     /// The executor reads slot operands without bounds checks: a program is only built once
     /// every slot operand, read by this layout, names an existing slot of its type.

@@ -2134,8 +2134,9 @@ mod tests {
 
     #[test]
     fn overloads_of_a_node_share_pin_names() {
-        // The compiler reports "unknown pin" against the first overload's pins, so all
-        // overloads must name their pins alike.
+        // The compiler reports "unknown pin" against the first overload's pins and passes
+        // over overloads by the types at the first overload's pin positions, so all
+        // overloads must name their pins alike, in one order.
         for n in registry().nodes() {
             let names = |o: &Overload| o.inputs.iter().map(|p| p.name).collect::<Vec<_>>();
             let first = names(&n.overloads[0]);
