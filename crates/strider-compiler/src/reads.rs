@@ -227,15 +227,14 @@ impl ReadsTable {
             self.nodes[at].resize_with(b.nodes.len(), || None);
         }
         if self.nodes[at][n].is_none() {
-            self.fill(checked, body, n);
+            self.fill(checked, b, at, n);
         }
         self.nodes[at][n].as_ref().expect("filled")
     }
 
-    /// Works out the reads of node `n` of `body` and of the pure nodes it pulls.
-    fn fill(&mut self, checked: &Checked, body: Option<usize>, n: usize) {
-        let b = body_of(checked, body);
-        let at = body.map_or(0, |f| f + 1);
+    /// Works out the reads of node `n` of body `b` (table `at`, see [`ReadsTable::node`])
+    /// and of the pure nodes it pulls.
+    fn fill(&mut self, checked: &Checked, b: &Body, at: usize, n: usize) {
         let mut stack = vec![(n, false)];
         while let Some((m, inputs_done)) = stack.pop() {
             if self.nodes[at][m].is_some() {

@@ -20,6 +20,14 @@ pub(crate) struct Parser<'a> {
 
 type Fields<'v> = [(Spanned<&'v str>, Spanned<Value<'v>>)];
 
+/// Whether field `i`'s name is also given before it (a struct or node has a handful of
+/// fields: the earlier ones are searched in place).
+fn given_before(fields: &Fields<'_>, i: usize) -> bool {
+    fields[..i]
+        .iter()
+        .any(|(earlier, _)| earlier.value == fields[i].0.value)
+}
+
 impl Parser<'_> {
     fn loc(&self, span: Span) -> Loc {
         Loc {
@@ -53,9 +61,8 @@ impl Parser<'_> {
 
     /// Reports fields not in `known` (with a suggestion) and duplicates.
     fn check_fields(&mut self, fields: &Fields<'_>, known: &[&str], what: &str) {
-        let mut seen: Vec<&str> = Vec::new();
-        for (name, _) in fields {
-            if seen.contains(&name.value) {
+        for (i, (name, _)) in fields.iter().enumerate() {
+            if given_before(fields, i) {
                 self.err(
                     name.span,
                     format!("field `{}` is given twice in {what}", name.value),
@@ -63,7 +70,6 @@ impl Parser<'_> {
                 .hint("remove one of them")
                 .emit();
             }
-            seen.push(name.value);
             if !known.contains(&name.value) {
                 let hint = suggest(name.value, known.iter().copied())
                     .map(|s| format!("did you mean `{s}`?"))
@@ -538,11 +544,7 @@ impl Parser<'_> {
             loc: self.loc(v.span),
         };
         for (i, (pin, pv)) in fields.iter().enumerate() {
-            // A node has a handful of pins: the earlier ones are searched in place.
-            if fields[..i]
-                .iter()
-                .any(|(earlier, _)| earlier.value == pin.value)
-            {
+            if given_before(fields, i) {
                 self.err(pin.span, format!("pin `{}` is given twice", pin.value))
                     .node(node.label().to_string())
                     .emit();
@@ -916,22 +918,17 @@ impl Parser<'_> {
         let entries: Vec<(Spanned<&str>, &Spanned<Value<'_>>)> = match &v.value {
             Value::Map(entries) => entries
                 .iter()
-                .filter_map(|(k, v)| match &k.value {
-                    Value::Ident(s) => Some((
-                        Spanned {
-                            value: *s,
-                            span: k.span,
-                        },
-                        v,
-                    )),
-                    Value::String(s) => Some((
-                        Spanned {
-                            value: &**s,
-                            span: k.span,
-                        },
-                        v,
-                    )),
-                    _ => None,
+                .filter_map(|(k, v)| {
+                    let name: &str = match &k.value {
+                        Value::Ident(s) => s,
+                        Value::String(s) => s,
+                        _ => return None,
+                    };
+                    let name = Spanned {
+                        value: name,
+                        span: k.span,
+                    };
+                    Some((name, v))
                 })
                 .collect(),
             Value::Struct(None, fields) => fields.iter().map(|(k, v)| (k.clone(), v)).collect(),

@@ -324,7 +324,7 @@ impl<'a> Parser<'a> {
     fn skip_ws(&mut self) -> PResult<()> {
         // Most calls find a token at the cursor at once.
         match self.peek() {
-            Some(b' ' | b'\t' | b'\n' | b'\r' | b'/') => self.skip_ws_run(),
+            Some(b) if is_space(b) || b == b'/' => self.skip_ws_run(),
             _ => Ok(()),
         }
     }
@@ -333,7 +333,7 @@ impl<'a> Parser<'a> {
         loop {
             let rest = &self.bytes[self.pos..];
             match rest {
-                [b' ' | b'\t' | b'\n' | b'\r', ..] => {
+                [b, ..] if is_space(*b) => {
                     self.pos += rest
                         .iter()
                         .position(|&b| !is_space(b))
