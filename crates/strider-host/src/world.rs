@@ -653,6 +653,18 @@ pub struct World {
     quads: Vec<Quad>,
     /// Whether any collider has bounds: else a trace need not compute its own.
     bounded: bool,
+    /// The half-spaces among the colliders (the ground under most traces), with their
+    /// indices: what a sphere trace tests first, in closed form.
+    half_spaces: Vec<HalfSpace>,
+}
+
+/// A half-space collider: a point on its plane and its unit outward normal (world space),
+/// and its index among the world's colliders.
+#[derive(Clone, Copy, Debug)]
+struct HalfSpace {
+    point: Vec3,
+    normal: Vec3,
+    index: usize,
 }
 
 /// The bounds of four consecutive colliders laid out by axis, so that testing a box
@@ -700,7 +712,8 @@ struct Collider {
     form: Form,
 }
 
-/// The colliders of a [`World`] whose bounds meet a box, in the colliders' order.
+/// The colliders of a [`World`] whose bounds meet a box, with their indices, in the
+/// colliders' order.
 struct Near<'a> {
     world: &'a World,
     reach: Aabb,
@@ -711,17 +724,17 @@ struct Near<'a> {
 }
 
 impl<'a> Iterator for Near<'a> {
-    type Item = &'a Collider;
+    type Item = (usize, &'a Collider);
 
     #[inline(always)]
-    fn next(&mut self) -> Option<&'a Collider> {
+    fn next(&mut self) -> Option<(usize, &'a Collider)> {
         while self.bits == 0 {
             self.bits = self.world.quads.get(self.quad)?.near(&self.reach);
             self.quad += 1;
         }
-        let k = self.bits.trailing_zeros() as usize;
+        let k = (self.quad - 1) * 4 + self.bits.trailing_zeros() as usize;
         self.bits &= self.bits - 1;
-        self.world.colliders.get((self.quad - 1) * 4 + k)
+        Some((k, self.world.colliders.get(k)?))
     }
 }
 
@@ -875,13 +888,7 @@ impl Collider {
     #[inline]
     fn ray(&self, ray: &Ray, length: f32) -> Option<(f32, Vec3)> {
         if let Form::HalfSpace { point, normal } = self.form {
-            // Height of the start above the plane; below it, the ray starts inside.
-            let height = normal.dot(ray.origin - point);
-            if height < 0.0 {
-                return Some((0.0, Vec3::ZERO));
-            }
-            let t = height / -normal.dot(ray.dir);
-            return (t >= 0.0 && t <= length).then_some((t, normal));
+            return ray_half_space(ray, length, point, normal);
         }
         self.shape
             .cast_ray_and_get_normal(&self.pose, ray, length, true)
@@ -1153,11 +1160,22 @@ impl World {
                 }
             })
             .collect();
+        let half_spaces = (colliders.iter().enumerate())
+            .filter_map(|(index, c)| match c.form {
+                Form::HalfSpace { point, normal } => Some(HalfSpace {
+                    point,
+                    normal,
+                    index,
+                }),
+                _ => None,
+            })
+            .collect();
         World {
             desc,
             colliders,
             bounded: quads.iter().any(|q| q.bounded),
             quads,
+            half_spaces,
         }
     }
 
@@ -1295,7 +1313,7 @@ impl World {
                 .loosened(skin.max(0.0))
         };
         let mut best: Option<SweepHit> = None;
-        for collider in self.near(reach) {
+        for (_, collider) in self.near(reach) {
             let closed_form = ball_radius
                 .and_then(|r| collider.ball_sweep(start, dir, length, r, stop_at_penetration));
             let found = match closed_form {
@@ -1310,6 +1328,102 @@ impl World {
         }
         best
     }
+
+    /// The bounded colliders' part of a line trace from `ray`'s origin to `end` (`length`
+    /// apart): each near the segment offered to `best` (distance, normal and collider
+    /// index), which wins ties by the lower index. Out of line: the ground answers most
+    /// traces alone.
+    #[inline(never)]
+    fn ray_bounded(
+        &self,
+        ray: &Ray,
+        end: Vec3,
+        length: f32,
+        best: &mut Option<(f32, Vec3, usize)>,
+    ) {
+        let reach = Aabb::new(ray.origin.min(end), ray.origin.max(end));
+        for (k, collider) in self.near(reach) {
+            if matches!(collider.form, Form::HalfSpace { .. }) {
+                continue;
+            }
+            if let Some((d, normal)) = collider.ray(ray, length)
+                && best.is_none_or(|(b, _, bk)| d < b || (d == b && k < bk))
+            {
+                *best = Some((d, normal, k));
+            }
+        }
+    }
+
+    /// A sphere trace's sweep ([`World::sweep_along`] of `ball`, stopping at penetration):
+    /// the half-spaces first, each in closed form, then the bounded colliders near the
+    /// sweep. Of equal distances the collider listed first wins, as when every collider is
+    /// tested in order.
+    #[inline(always)]
+    fn ball_trace(&self, ball: &Ball, start: Vec3, along: Along) -> Option<SweepHit> {
+        let (dir, length, radius) = (along.dir, along.length, ball.radius);
+        let mut best: Option<(SweepHit, usize)> = None;
+        for h in &self.half_spaces {
+            if let Some(distance) =
+                ball_half_space_sweep(start, dir, length, radius, h.point, h.normal, true)
+                && best.is_none_or(|(b, _)| distance < b.distance)
+            {
+                let hit = SweepHit {
+                    distance,
+                    normal: h.normal,
+                };
+                best = Some((hit, h.index));
+            }
+        }
+        if self.bounded {
+            self.ball_trace_bounded(ball, start, along, &mut best);
+        }
+        best.map(|(hit, _)| hit)
+    }
+
+    /// The bounded colliders' part of [`World::ball_trace`]: each near the sweep offered
+    /// to `best` (a hit and its collider's index). Out of line: the ground answers most
+    /// traces alone.
+    #[inline(never)]
+    fn ball_trace_bounded(
+        &self,
+        ball: &Ball,
+        start: Vec3,
+        along: Along,
+        best: &mut Option<(SweepHit, usize)>,
+    ) {
+        let (dir, length, radius) = (along.dir, along.length, ball.radius);
+        let reach = ball_reach(start, start + along.delta, radius);
+        for (k, collider) in self.near(reach) {
+            if matches!(collider.form, Form::HalfSpace { .. }) {
+                continue;
+            }
+            let found = match collider.ball_sweep(start, dir, length, radius, true) {
+                Some(found) => found,
+                None => collider.cast(ball, start, along, 0.0, true),
+            };
+            if let Some(hit) = found
+                && best.is_none_or(|(b, bk)| {
+                    hit.distance < b.distance || (hit.distance == b.distance && k < bk)
+                })
+            {
+                *best = Some((hit, k));
+            }
+        }
+    }
+}
+
+/// Where a ray (`length` long) meets the half-space through `point` with unit outward
+/// `normal`: the distance and the normal, `(0, 0)` for a ray starting inside, `None` for a
+/// miss.
+#[inline(always)]
+fn ray_half_space(ray: &Ray, length: f32, point: Vec3, normal: Vec3) -> Option<(f32, Vec3)> {
+    // Height of the start above the plane; below it, the ray starts inside.
+    let height = normal.dot(ray.origin - point);
+    if height < 0.0 {
+        return Some((0.0, Vec3::ZERO));
+    }
+    let t = height / -normal.dot(ray.dir);
+    (t >= 0.0 && t <= length).then_some((t, normal))
 }
 
 /// The options every RON file of the host is read with (`Some(...)` may be left out).
@@ -1358,20 +1472,20 @@ impl WorldQuery for World {
         }
         let dir = delta / length;
         let ray = Ray::new(start, dir);
-        let reach = if self.bounded {
-            Aabb::new(start.min(end), start.max(end))
-        } else {
-            Aabb::new_invalid()
-        };
-        let mut best: Option<(f32, Vec3)> = None;
-        for collider in self.near(reach) {
-            if let Some((d, normal)) = collider.ray(&ray, length)
-                && best.is_none_or(|(b, _)| d < b)
+        // The half-spaces first, in closed form, then the bounded colliders near the
+        // segment (out of line); of equal distances the collider listed first wins.
+        let mut best: Option<(f32, Vec3, usize)> = None;
+        for h in &self.half_spaces {
+            if let Some((d, normal)) = ray_half_space(&ray, length, h.point, h.normal)
+                && best.is_none_or(|(b, _, _)| d < b)
             {
-                best = Some((d, normal));
+                best = Some((d, normal, h.index));
             }
         }
-        let (distance, normal) = best?;
+        if self.bounded {
+            self.ray_bounded(&ray, end, length, &mut best);
+        }
+        let (distance, normal, _) = best?;
         let distance = distance.max(0.0);
         let mut normal = if distance > 0.0 && normal.is_finite() {
             normal.normalize_or_zero()
@@ -1423,7 +1537,7 @@ impl WorldQuery for World {
                 dir: dir.into(),
                 length,
             };
-            let hit = self.sweep_along(&ball, Some(radius), start, along, 0.0, true)?;
+            let hit = self.ball_trace(&ball, start, along)?;
             (dir, hit)
         } else {
             return None;

@@ -130,6 +130,82 @@ fn every_shape_of_a_crowded_world_is_found() {
 }
 
 #[test]
+fn the_nearest_shape_answers_whatever_the_order() {
+    // A world answers a trace with the nearest of its shapes' hits, the shape listed first
+    // on equal distances. Reference: each shape in a world of its own, the nearest hit
+    // picked by hand. Two grounds (one under the other: only the upper is ever hit), a box
+    // flush with the upper ground (equal distances on its top), a pillar, stairs and a
+    // ramp, with the grounds listed among and after the bounded shapes, so that a trace
+    // that tests the half-spaces apart must still rank their hits among the others'.
+    let shapes = [
+        "Box(center: (0.0, 0.0, -10.0), half_extents: (30.0, 30.0, 10.0))",
+        "Ground(height: -25.0)",
+        "Box(center: (60.0, 20.0, 40.0), half_extents: (15.0, 15.0, 40.0), yaw: 20.0)",
+        "Stairs(start: (-80.0, -40.0, 0.0), rise: 15.0, run: 25.0, steps: 4, width: 60.0)",
+        "Ground(height: 0.0)",
+        "Ramp(start: (20.0, -90.0, 0.0), angle: 25.0, length: 80.0, width: 50.0)",
+    ];
+    let w = world(&format!("(shapes: [{}])", shapes.join(", ")));
+    let alone: Vec<World> = shapes
+        .iter()
+        .map(|s| world(&format!("(shapes: [{s}])")))
+        .collect();
+    let nearest = |each: &dyn Fn(&World) -> Option<strider_core::TraceHit>| {
+        let mut best: Option<strider_core::TraceHit> = None;
+        for hit in alone.iter().filter_map(each) {
+            if best.is_none_or(|b| hit.distance < b.distance) {
+                best = Some(hit);
+            }
+        }
+        best
+    };
+    let same = |a: Option<strider_core::TraceHit>, b: Option<strider_core::TraceHit>| match (a, b) {
+        (Some(a), Some(b)) => {
+            a.distance.to_bits() == b.distance.to_bits()
+                && a.point.to_array().map(f32::to_bits) == b.point.to_array().map(f32::to_bits)
+                && a.normal.to_array().map(f32::to_bits) == b.normal.to_array().map(f32::to_bits)
+        }
+        (None, None) => true,
+        _ => false,
+    };
+    let mut next = uniform(7);
+    let (mut hits, mut ground_hits) = (0, 0);
+    for k in 0..3000 {
+        let mut r = || next() * 2.0 - 1.0;
+        let start = Vec3::new(r() * 120.0, r() * 120.0, 40.0 + r() * 60.0);
+        let end = start + Vec3::new(r() * 40.0, r() * 40.0, -120.0 + r() * 40.0);
+        // Every fourth trace straight down onto the flush box's top or the ground by it.
+        let (start, end) = if k % 4 == 0 {
+            let at = Vec3::new(r() * 40.0, r() * 40.0, 50.0);
+            (at, at - Vec3::Z * 100.0)
+        } else {
+            (start, end)
+        };
+        let radius = 3.5 + r() * 3.0;
+        let ours = w.sphere_trace(start, end, radius);
+        let reference = nearest(&|one: &World| one.sphere_trace(start, end, radius));
+        assert!(
+            same(ours, reference),
+            "sphere {start} -> {end} r {radius}: {ours:?} vs {reference:?}"
+        );
+        let ours = w.line_trace(start, end);
+        let reference = nearest(&|one: &World| one.line_trace(start, end));
+        assert!(
+            same(ours, reference),
+            "line {start} -> {end}: {ours:?} vs {reference:?}"
+        );
+        if let Some(hit) = ours {
+            hits += 1;
+            ground_hits += usize::from(hit.point.z.abs() < 1e-3 && hit.normal == Vec3::Z);
+        }
+    }
+    assert!(
+        hits > 2000 && ground_hits > 300,
+        "{hits} hits, {ground_hits} on the ground or flush tops"
+    );
+}
+
+#[test]
 fn rotated_box_face() {
     // Half extents (10, 50, 10) turned by 90°: the long axis lies along X, the box spans
     // y ∈ [−10, 10].
