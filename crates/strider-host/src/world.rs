@@ -1331,9 +1331,8 @@ impl World {
 
     /// The bounded colliders' part of a line trace from `ray`'s origin to `end` (`length`
     /// apart): each near the segment offered to `best` (distance, normal and collider
-    /// index), which wins ties by the lower index. Out of line: the ground answers most
-    /// traces alone.
-    #[inline(never)]
+    /// index), which wins ties by the lower index.
+    #[inline]
     fn ray_bounded(
         &self,
         ray: &Ray,
@@ -1381,9 +1380,8 @@ impl World {
     }
 
     /// The bounded colliders' part of [`World::ball_trace`]: each near the sweep offered
-    /// to `best` (a hit and its collider's index). Out of line: the ground answers most
-    /// traces alone.
-    #[inline(never)]
+    /// to `best` (a hit and its collider's index), which wins ties by the lower index.
+    #[inline]
     fn ball_trace_bounded(
         &self,
         ball: &Ball,
