@@ -151,3 +151,62 @@ fn a_mixed_crowd_batches_each_program_and_refuses_none() {
     // An empty crowd is a no-op.
     Instance::run_forward_batch(&mut [], |_| FrameInput::default(), &EmptyWorld, false);
 }
+
+#[test]
+fn a_batch_solves_each_character_with_its_own_ik_axes() {
+    // A batch prepares two-bone IK axes once for the characters that share them: characters
+    // with axes of their own (a flipped primary axis, a tilted secondary axis, one given
+    // with -0.0 where its neighbour has 0.0) between characters with the same ones must
+    // each still solve as they would alone.
+    use strider::nodes::Value;
+    let program = compile("tests/graphs/ik_axes.ron");
+    let skeleton = mannequin();
+    let primary = program.variable_id("Primary").expect("Primary");
+    let secondary = program.variable_id("Secondary").expect("Secondary");
+    let axes = [
+        ([-1.0, 0.0, 0.0], [0.0, 1.0, 0.0]),
+        ([-1.0, 0.0, 0.0], [0.0, 1.0, 0.0]),
+        ([1.0, 0.0, 0.0], [0.0, 1.0, 0.0]),
+        ([-1.0, 0.0, 0.0], [0.0, 1.0, 0.0]),
+        ([-1.0, 0.0, 0.0], [0.0, 0.8, 0.6]),
+        ([-1.0, -0.0, 0.0], [0.0, 0.8, 0.6]),
+        ([-1.0, 0.0, 0.0], [0.0, 0.8, 0.6]),
+        ([-2.0, 0.0, 0.0], [0.0, 1.0, 0.0]),
+        ([0.0, 0.0, 0.0], [0.0, 1.0, 0.0]),
+    ];
+    let make = || -> Vec<Instance> {
+        axes.iter()
+            .map(|&(p, s)| {
+                let mut instance =
+                    Instance::new(Arc::clone(&program), Arc::clone(&skeleton)).unwrap();
+                instance
+                    .set_variable(primary, &Value::Vec3(p.into()))
+                    .unwrap();
+                instance
+                    .set_variable(secondary, &Value::Vec3(s.into()))
+                    .unwrap();
+                instance
+            })
+            .collect()
+    };
+    let (mut batched, mut alone) = (make(), make());
+    for f in 0..30 {
+        let input = |_: usize| FrameInput {
+            dt: 1.0 / 30.0,
+            ..FrameInput::default()
+        };
+        Instance::run_forward_batch(&mut batched, input, &EmptyWorld, false);
+        for (k, instance) in alone.iter_mut().enumerate() {
+            instance.run_forward(&input(k), &EmptyWorld, false);
+        }
+        for (k, (a, b)) in batched.iter().zip(&alone).enumerate() {
+            assert!(same_pose(a, b), "character {k} differs at frame {f}");
+        }
+    }
+    // The axes matter: characters 0, 2 and 4 end in different poses.
+    let foot = |k: usize| batched[k].pose().locals().to_vec();
+    let differ = |a: &[strider::core::Transform], b: &[strider::core::Transform]| {
+        a.iter().zip(b).any(|(x, y)| !x.bit_eq(y))
+    };
+    assert!(differ(&foot(0), &foot(2)) && differ(&foot(0), &foot(4)));
+}

@@ -40,7 +40,7 @@ use strider_core::{
 use strider_nodes::kernels as k;
 use strider_nodes::kernels::locomotion as loco;
 use strider_nodes::kernels::spline::{self, SplineMode};
-use strider_nodes::kernels::two_bone_ik::{Pole, TwoBoneIk};
+use strider_nodes::kernels::two_bone_ik::{BoneAxes, Pole, TwoBoneIk};
 use strider_nodes::{Elem, MAX_OPERANDS, Op, ValueType};
 
 /// What one run of an event works on.
@@ -207,6 +207,28 @@ fn read_hit(hit: &Option<TraceHit>) -> Option<(Vec3A, Vec3A, f32)> {
     let h = hit.as_ref()?;
     let (point, normal) = (load_vec3(&h.point), load_vec3(&h.normal));
     all_finite([point, normal, Vec3A::splat(h.distance)]).then_some((point, normal, h.distance))
+}
+
+/// The bone axes of a two-bone IK instruction's last solve, kept while it runs for a
+/// batch's members: the next member with the same axes, bit for bit (a crowd's legs, whose
+/// axes are the graph's constants), solves with them instead of preparing its own.
+#[derive(Default)]
+struct PreparedAxes(Option<([[u32; 3]; 2], BoneAxes)>);
+
+impl PreparedAxes {
+    /// [`BoneAxes::new`] of `primary` and `secondary` (local bone axes).
+    #[inline(always)]
+    fn get(&mut self, primary: Vec3, secondary: Vec3) -> BoneAxes {
+        let key = [primary, secondary].map(|v| v.to_array().map(f32::to_bits));
+        match self.0 {
+            Some((k, axes)) if k == key => axes,
+            _ => {
+                let axes = BoneAxes::new(primary, secondary);
+                self.0 = Some((key, axes));
+                axes
+            }
+        }
+    }
 }
 
 /// The "next instruction" of an `End`: the event is over.
@@ -603,7 +625,9 @@ macro_rules! execute {
                     None => out.clear(),
                 }
             }),
-            Op::TwoBoneIK => $each!({
+            Op::TwoBoneIK => {
+                let mut prepared = PreparedAxes::default();
+                $each!({
                 let chain = (
                     bone($cx.pose, $s.bones[at!(0)]),
                     bone($cx.pose, $s.bones[at!(1)]),
@@ -616,22 +640,25 @@ macro_rules! execute {
                         } else {
                             Pole::Direction(v!(6))
                         };
+                        let (primary_axis, secondary_axis) = (v!(4), v!(5));
+                        let axes = prepared.get(primary_axis, secondary_axis);
                         let ik = TwoBoneIk {
-                            primary_axis: v!(4),
-                            secondary_axis: v!(5),
+                            primary_axis,
+                            secondary_axis,
                             pole,
                             weight: f!(8),
                             stretch: b!(9).then_some((f!(10), f!(11))),
                             set_effector_rotation: b!(12),
                         };
-                        let report = ik.solve($cx.pose, a, b, c, t!(3));
+                        let report = ik.solve_with_axes(&axes, $cx.pose, a, b, c, t!(3));
                         (report.reached, report.distance_to_target)
                     }
                     _ => (false, f32::INFINITY),
                 };
                 b!(13) = reached;
                 f!(14) = distance;
-            }),
+                })
+            }
             Op::DeltaTime => $each!(f!(0) = $cx.dt),
             Op::WorldTransform => $each!(t!(0) = $cx.to_world),
             Op::LineTrace | Op::SphereTrace => $each!({

@@ -144,6 +144,24 @@ impl TwoBoneIk {
         effector: BoneIndex,
         target: Transform,
     ) -> IkReport {
+        let axes = BoneAxes::new(self.primary_axis, self.secondary_axis);
+        self.solve_with_axes(&axes, pose, a, b, effector, target)
+    }
+
+    /// [`TwoBoneIk::solve`] with the bone axes prepared beforehand: `axes` stands for
+    /// [`primary_axis`](Self::primary_axis) and [`secondary_axis`](Self::secondary_axis)
+    /// (which this call does not read). With `axes` =
+    /// `BoneAxes::new(self.primary_axis, self.secondary_axis)` the result is `solve`'s, bit
+    /// for bit; solves that share their axes (a crowd's legs) can prepare them once.
+    pub fn solve_with_axes(
+        &self,
+        axes: &BoneAxes,
+        pose: &mut Pose,
+        a: BoneIndex,
+        b: BoneIndex,
+        effector: BoneIndex,
+        target: Transform,
+    ) -> IkReport {
         let n = pose.len();
         if a.get() >= n
             || b.get() >= n
@@ -178,8 +196,7 @@ impl TwoBoneIk {
             Pole::Direction(v) => v.into(),
             Pole::Location(p) => Vec3A::from(p) - root,
         };
-        let secondary = Vec3A::from(self.secondary_axis);
-        let side = bend_side(dir, [pole, mid - root, ga.rotation * secondary]);
+        let side = bend_side(dir, [pole, mid - root, ga.rotation * axes.secondary]);
         let Some((new_mid, new_end)) = place_joints(root, mid, end, goal, dir, side, self.stretch)
         else {
             return IkReport::measure(end, goal);
@@ -196,9 +213,8 @@ impl TwoBoneIk {
         }
 
         let normal = dir.cross(side);
-        let axes = BoneAxes::new(self.primary_axis.into(), secondary);
-        let qa_solved = bone_rotation(ga.rotation, &axes, mid - root, new_mid - root, normal);
-        let qb_solved = bone_rotation(gb.rotation, &axes, end - mid, new_end - new_mid, normal);
+        let qa_solved = bone_rotation(ga.rotation, axes, mid - root, new_mid - root, normal);
+        let qb_solved = bone_rotation(gb.rotation, axes, end - mid, new_end - new_mid, normal);
         let (qa, qb, mid_w, end_w) = if w >= 1.0 {
             (qa_solved, qb_solved, new_mid, new_end)
         } else {
@@ -419,9 +435,12 @@ fn place_joints(
     Some((new_mid, new_end))
 }
 
-/// A solve's local bone axes, normalised once for both bones.
-#[derive(Clone, Copy)]
-struct BoneAxes {
+/// A solve's local bone axes (see [`TwoBoneIk::primary_axis`] and
+/// [`TwoBoneIk::secondary_axis`], in the bones' local frames), normalised once for both
+/// bones of a solve, or for every solve with the same axes
+/// ([`TwoBoneIk::solve_with_axes`]).
+#[derive(Clone, Copy, Debug)]
+pub struct BoneAxes {
     /// The secondary axis as given (made perpendicular to each bone's own direction when
     /// the primary axis is unusable).
     secondary: Vec3A,
@@ -437,7 +456,12 @@ struct BoneAxes {
 }
 
 impl BoneAxes {
-    fn new(primary: Vec3A, secondary: Vec3A) -> Self {
+    /// The axes of a solve with these [`TwoBoneIk::primary_axis`] and
+    /// [`TwoBoneIk::secondary_axis`] (any length; zero, non-finite or parallel axes fall back
+    /// as those fields' docs say).
+    #[must_use]
+    pub fn new(primary: Vec3, secondary: Vec3) -> Self {
+        let (primary, secondary) = (Vec3A::from(primary), Vec3A::from(secondary));
         let primary = direction(primary);
         let local_secondary = primary.and_then(|p| perpendicular(secondary, p));
         let local_inverse = primary
