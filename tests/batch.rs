@@ -28,6 +28,24 @@ fn same_pose(a: &Instance, b: &Instance) -> bool {
     a.len() == b.len() && a.iter().zip(b).all(|(x, y)| x.bit_eq(y))
 }
 
+/// Runs frame `f` of `batched` as one crowd and of `alone` one by one (`input(k)` for
+/// character `k`, no world) and asserts that every character's pose is the same both ways.
+fn run_both<'i>(
+    batched: &mut [Instance],
+    alone: &mut [Instance],
+    input: impl Fn(usize) -> FrameInput<'i>,
+    debug: bool,
+    f: usize,
+) {
+    Instance::run_forward_batch(batched, &input, &EmptyWorld, debug);
+    for (k, instance) in alone.iter_mut().enumerate() {
+        instance.run_forward(&input(k), &EmptyWorld, debug);
+    }
+    for (k, (a, b)) in batched.iter().zip(alone.iter()).enumerate() {
+        assert!(same_pose(a, b), "character {k} differs at frame {f}");
+    }
+}
+
 /// Runs `characters` instances of `graph` through `scenario` at `hz`, character `k` offset
 /// by `7 k` frames into it (so they are at different points of their cycles), `frames`
 /// frames, once batched and once each alone, and compares them after every frame.
@@ -139,12 +157,8 @@ fn a_mixed_crowd_batches_each_program_and_refuses_none() {
             dt: dts[(f + k) % dts.len()],
             ..FrameInput::default()
         };
-        Instance::run_forward_batch(&mut batched, input, &EmptyWorld, true);
-        for (k, instance) in alone.iter_mut().enumerate() {
-            instance.run_forward(&input(k), &EmptyWorld, true);
-        }
+        run_both(&mut batched, &mut alone, input, true, f);
         for (k, (a, b)) in batched.iter().zip(&alone).enumerate() {
-            assert!(same_pose(a, b), "character {k} differs at frame {f}");
             assert!(a.slots().bit_eq(b.slots()), "character {k} at frame {f}");
         }
     }
@@ -195,13 +209,7 @@ fn a_batch_solves_each_character_with_its_own_ik_axes() {
             dt: 1.0 / 30.0,
             ..FrameInput::default()
         };
-        Instance::run_forward_batch(&mut batched, input, &EmptyWorld, false);
-        for (k, instance) in alone.iter_mut().enumerate() {
-            instance.run_forward(&input(k), &EmptyWorld, false);
-        }
-        for (k, (a, b)) in batched.iter().zip(&alone).enumerate() {
-            assert!(same_pose(a, b), "character {k} differs at frame {f}");
-        }
+        run_both(&mut batched, &mut alone, input, false, f);
     }
     // The axes matter: characters 0, 2 and 4 end in different poses.
     let foot = |k: usize| batched[k].pose().locals().to_vec();
