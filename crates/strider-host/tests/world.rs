@@ -133,10 +133,12 @@ fn every_shape_of_a_crowded_world_is_found() {
 fn the_nearest_shape_answers_whatever_the_order() {
     // A world answers a trace with the nearest of its shapes' hits, the shape listed first
     // on equal distances. Reference: each shape in a world of its own, the nearest hit
-    // picked by hand. Two grounds (one under the other: only the upper is ever hit), a box
-    // flush with the upper ground (equal distances on its top), a pillar, stairs and a
-    // ramp, with the grounds listed among and after the bounded shapes, so that a trace
-    // that tests the half-spaces apart must still rank their hits among the others'.
+    // picked by hand. Two grounds (one under the other), a box flush with the upper ground
+    // (equal distances on its top), a pillar, stairs, a ramp, and turned stairs whose first
+    // step is flush with the upper ground too (equal distances, but the step's normal is
+    // (0, −0, 1) where the ground's is (0, 0, 1): the order shows in the bits), with the
+    // grounds listed among and after the bounded shapes, so that a trace that tests the
+    // half-spaces apart must still rank their hits among the others'.
     let shapes = [
         "Box(center: (0.0, 0.0, -10.0), half_extents: (30.0, 30.0, 10.0))",
         "Ground(height: -25.0)",
@@ -144,6 +146,7 @@ fn the_nearest_shape_answers_whatever_the_order() {
         "Stairs(start: (-80.0, -40.0, 0.0), rise: 15.0, run: 25.0, steps: 4, width: 60.0)",
         "Ground(height: 0.0)",
         "Ramp(start: (20.0, -90.0, 0.0), angle: 25.0, length: 80.0, width: 50.0)",
+        "Stairs(start: (90.0, 80.0, -15.0), rise: 15.0, run: 20.0, steps: 2, width: 40.0, yaw: -135.0)",
     ];
     let w = world(&format!("(shapes: [{}])", shapes.join(", ")));
     let alone: Vec<World> = shapes
@@ -174,12 +177,22 @@ fn the_nearest_shape_answers_whatever_the_order() {
         let mut r = || next() * 2.0 - 1.0;
         let start = Vec3::new(r() * 120.0, r() * 120.0, 40.0 + r() * 60.0);
         let end = start + Vec3::new(r() * 40.0, r() * 40.0, -120.0 + r() * 40.0);
-        // Every fourth trace straight down onto the flush box's top or the ground by it.
-        let (start, end) = if k % 4 == 0 {
-            let at = Vec3::new(r() * 40.0, r() * 40.0, 50.0);
-            (at, at - Vec3::Z * 100.0)
-        } else {
-            (start, end)
+        // Every fourth trace straight down onto the flush box's top or the ground by it,
+        // and every fourth from whole centimetres onto the turned stairs' flush step.
+        let (start, end) = match k % 4 {
+            0 => {
+                let at = Vec3::new(r() * 40.0, r() * 40.0, 50.0);
+                (at, at - Vec3::Z * 100.0)
+            }
+            2 => {
+                let at = Vec3::new(
+                    (90.0 + r() * 30.0).round(),
+                    (80.0 + r() * 30.0).round(),
+                    50.0,
+                );
+                (at, at - Vec3::Z * 100.0)
+            }
+            _ => (start, end),
         };
         let radius = 3.5 + r() * 3.0;
         let ours = w.sphere_trace(start, end, radius);

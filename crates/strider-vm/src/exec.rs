@@ -218,16 +218,15 @@ struct PreparedAxes(Option<([[u32; 3]; 2], BoneAxes)>);
 impl PreparedAxes {
     /// [`BoneAxes::new`] of `primary` and `secondary` (local bone axes).
     #[inline(always)]
-    fn get(&mut self, primary: Vec3, secondary: Vec3) -> BoneAxes {
+    fn get(&mut self, primary: Vec3, secondary: Vec3) -> &BoneAxes {
         let key = [primary, secondary].map(|v| v.to_array().map(f32::to_bits));
-        match self.0 {
-            Some((k, axes)) if k == key => axes,
-            _ => {
-                let axes = BoneAxes::new(primary, secondary);
-                self.0 = Some((key, axes));
-                axes
-            }
+        if self.0.as_ref().is_some_and(|(kept, _)| *kept != key) {
+            self.0 = None;
         }
+        &self
+            .0
+            .get_or_insert_with(|| (key, BoneAxes::new(primary, secondary)))
+            .1
     }
 }
 
@@ -628,35 +627,35 @@ macro_rules! execute {
             Op::TwoBoneIK => {
                 let mut prepared = PreparedAxes::default();
                 $each!({
-                let chain = (
-                    bone($cx.pose, $s.bones[at!(0)]),
-                    bone($cx.pose, $s.bones[at!(1)]),
-                    bone($cx.pose, $s.bones[at!(2)]),
-                );
-                let (reached, distance) = match chain {
-                    (Some(a), Some(b), Some(c)) => {
-                        let pole = if i!(7) == 1 {
-                            Pole::Location(v!(6))
-                        } else {
-                            Pole::Direction(v!(6))
-                        };
-                        let (primary_axis, secondary_axis) = (v!(4), v!(5));
-                        let axes = prepared.get(primary_axis, secondary_axis);
-                        let ik = TwoBoneIk {
-                            primary_axis,
-                            secondary_axis,
-                            pole,
-                            weight: f!(8),
-                            stretch: b!(9).then_some((f!(10), f!(11))),
-                            set_effector_rotation: b!(12),
-                        };
-                        let report = ik.solve_with_axes(&axes, $cx.pose, a, b, c, t!(3));
-                        (report.reached, report.distance_to_target)
-                    }
-                    _ => (false, f32::INFINITY),
-                };
-                b!(13) = reached;
-                f!(14) = distance;
+                    let chain = (
+                        bone($cx.pose, $s.bones[at!(0)]),
+                        bone($cx.pose, $s.bones[at!(1)]),
+                        bone($cx.pose, $s.bones[at!(2)]),
+                    );
+                    let (reached, distance) = match chain {
+                        (Some(a), Some(b), Some(c)) => {
+                            let pole = if i!(7) == 1 {
+                                Pole::Location(v!(6))
+                            } else {
+                                Pole::Direction(v!(6))
+                            };
+                            let (primary_axis, secondary_axis) = (v!(4), v!(5));
+                            let axes = prepared.get(primary_axis, secondary_axis);
+                            let ik = TwoBoneIk {
+                                primary_axis,
+                                secondary_axis,
+                                pole,
+                                weight: f!(8),
+                                stretch: b!(9).then_some((f!(10), f!(11))),
+                                set_effector_rotation: b!(12),
+                            };
+                            let report = ik.solve_with_axes(axes, $cx.pose, a, b, c, t!(3));
+                            (report.reached, report.distance_to_target)
+                        }
+                        _ => (false, f32::INFINITY),
+                    };
+                    b!(13) = reached;
+                    f!(14) = distance;
                 })
             }
             Op::DeltaTime => $each!(f!(0) = $cx.dt),
