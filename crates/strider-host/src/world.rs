@@ -676,29 +676,22 @@ struct Quad {
     /// Minimum corner per axis (x, y, z), one lane per collider. A missing collider (past
     /// the last) has `+∞`, so nothing is near it.
     lo: [Vec4; 3],
-    /// Maximum corner per axis, one lane per collider (`−∞` for a missing one).
+    /// Maximum corner per axis, one lane per collider (`−∞` for a missing one or a
+    /// half-space, which the traces test on their own).
     hi: [Vec4; 3],
-    /// Colliders without bounds (half-spaces), near every trace: bit `k` for collider `k`
-    /// of the four.
-    always: u32,
-    /// Whether any of the four has bounds (else there is nothing to compare).
-    bounded: bool,
 }
 
 impl Quad {
     /// Bits `k` of the four colliders whose bounds meet `reach` (boxes touching on a face
-    /// count, as in parry3d's `Aabb::intersects`), or that are unbounded.
+    /// count, as in parry3d's `Aabb::intersects`). A half-space is never near.
     #[inline(always)]
     fn near(&self, reach: &Aabb) -> u32 {
-        if !self.bounded {
-            return self.always;
-        }
         let (low, high) = (reach.mins, reach.maxs);
         let meets = |axis: usize, low: f32, high: f32| {
             self.lo[axis].cmple(Vec4::splat(high)) & Vec4::splat(low).cmple(self.hi[axis])
         };
         let all = meets(0, low.x, high.x) & meets(1, low.y, high.y) & meets(2, low.z, high.z);
-        all.bitmask() | self.always
+        all.bitmask()
     }
 }
 
@@ -712,8 +705,8 @@ struct Collider {
     form: Form,
 }
 
-/// The colliders of a [`World`] whose bounds meet a box, with their indices, in the
-/// colliders' order.
+/// The bounded colliders of a [`World`] whose bounds meet a box, with their indices, in
+/// the colliders' order.
 struct Near<'a> {
     world: &'a World,
     reach: Aabb,
@@ -882,14 +875,11 @@ impl Collider {
     }
 
     /// The ray from `ray.origin` along the unit `ray.dir` for `length` against this solid
-    /// shape (world space): the distance to the first hit and the normal there, zero for a
-    /// ray starting inside. A half-space is answered in closed form (parry3d's formula, in
-    /// world space), the rest by parry3d.
+    /// bounded shape (world space), by parry3d: the distance to the first hit and the
+    /// normal there, zero for a ray starting inside. (Line traces test the half-spaces on
+    /// their own, with [`ray_half_space`].)
     #[inline]
     fn ray(&self, ray: &Ray, length: f32) -> Option<(f32, Vec3)> {
-        if let Form::HalfSpace { point, normal } = self.form {
-            return ray_half_space(ray, length, point, normal);
-        }
         self.shape
             .cast_ray_and_get_normal(&self.pose, ray, length, true)
             .map(|hit| (hit.time_of_impact, hit.normal))
@@ -1104,7 +1094,7 @@ impl World {
     /// A world of built shapes and the description they came from.
     fn with_shapes(desc: WorldDesc, shapes: Vec<(Pose, SharedShape, Option<Grid>)>) -> World {
         // Each collider with its world-space bounding box, loosened by `CULL_MARGIN`;
-        // `None` for a half-space (unbounded), which every trace tests.
+        // `None` for a half-space (unbounded), which every trace tests on its own.
         let built = shapes
             .into_iter()
             .map(|(pose, shape, grid)| {
@@ -1140,23 +1130,17 @@ impl World {
             .map(|four| {
                 let mut lo = [[f32::INFINITY; 4]; 3];
                 let mut hi = [[f32::NEG_INFINITY; 4]; 3];
-                let mut always = 0;
-                for (k, bounds) in four.iter().enumerate() {
-                    match bounds {
-                        Some(b) => {
-                            for axis in 0..3 {
-                                lo[axis][k] = b.mins[axis];
-                                hi[axis][k] = b.maxs[axis];
-                            }
+                for (k, b) in four.iter().enumerate() {
+                    if let Some(b) = b {
+                        for axis in 0..3 {
+                            lo[axis][k] = b.mins[axis];
+                            hi[axis][k] = b.maxs[axis];
                         }
-                        None => always |= 1 << k,
                     }
                 }
                 Quad {
                     lo: lo.map(Vec4::from_array),
                     hi: hi.map(Vec4::from_array),
-                    always,
-                    bounded: four.iter().any(Option::is_some),
                 }
             })
             .collect();
@@ -1173,13 +1157,13 @@ impl World {
         World {
             desc,
             colliders,
-            bounded: quads.iter().any(|q| q.bounded),
+            bounded: bounds.iter().any(Option::is_some),
             quads,
             half_spaces,
         }
     }
 
-    /// The colliders whose bounds meet `reach` (and the unbounded ones), in order.
+    /// The bounded colliders whose bounds meet `reach`, in order.
     #[inline(always)]
     fn near(&self, reach: Aabb) -> Near<'_> {
         Near {
@@ -1300,20 +1284,25 @@ impl World {
         stop_at_penetration: bool,
     ) -> Option<SweepHit> {
         let Along { delta, dir, length } = along;
-        let end = start + delta;
-        let reach = if !self.bounded {
-            // Only half-spaces: nothing to compare the sweep's box with.
-            Aabb::new_invalid()
-        } else if let Some(radius) = ball_radius {
-            ball_reach(start, end, radius)
-        } else {
-            let local = shape.compute_local_aabb();
-            Aabb::new(start + local.mins, start + local.maxs)
-                .merged(&Aabb::new(end + local.mins, end + local.maxs))
-                .loosened(skin.max(0.0))
-        };
-        let mut best: Option<SweepHit> = None;
-        for (_, collider) in self.near(reach) {
+        // The half-spaces first, then the bounded colliders near the sweep.
+        let half_spaces =
+            (self.half_spaces.iter()).filter_map(|h| Some((h.index, self.colliders.get(h.index)?)));
+        let bounded = self.bounded.then(|| {
+            let end = start + delta;
+            let reach = if let Some(radius) = ball_radius {
+                ball_reach(start, end, radius)
+            } else {
+                let local = shape.compute_local_aabb();
+                Aabb::new(start + local.mins, start + local.maxs)
+                    .merged(&Aabb::new(end + local.mins, end + local.maxs))
+                    .loosened(skin.max(0.0))
+            };
+            self.near(reach)
+        });
+        // The nearest hit so far and its collider's index: of equal distances the collider
+        // listed first wins, as when every collider is tested in order.
+        let mut best: Option<(SweepHit, usize)> = None;
+        for (k, collider) in half_spaces.chain(bounded.into_iter().flatten()) {
             let closed_form = ball_radius
                 .and_then(|r| collider.ball_sweep(start, dir, length, r, stop_at_penetration));
             let found = match closed_form {
@@ -1321,12 +1310,14 @@ impl World {
                 None => collider.cast(shape, start, along, skin, stop_at_penetration),
             };
             if let Some(hit) = found
-                && best.is_none_or(|b| hit.distance < b.distance)
+                && best.is_none_or(|(b, bk)| {
+                    hit.distance < b.distance || (hit.distance == b.distance && k < bk)
+                })
             {
-                best = Some(hit);
+                best = Some((hit, k));
             }
         }
-        best
+        best.map(|(hit, _)| hit)
     }
 
     /// The bounded colliders' part of a line trace from `ray`'s origin to `end` (`length`
@@ -1342,9 +1333,6 @@ impl World {
     ) {
         let reach = Aabb::new(ray.origin.min(end), ray.origin.max(end));
         for (k, collider) in self.near(reach) {
-            if matches!(collider.form, Form::HalfSpace { .. }) {
-                continue;
-            }
             if let Some((d, normal)) = collider.ray(ray, length)
                 && best.is_none_or(|(b, _, bk)| d < b || (d == b && k < bk))
             {
@@ -1392,10 +1380,7 @@ impl World {
         let (dir, length, radius) = (along.dir, along.length, ball.radius);
         let reach = ball_reach(start, start + along.delta, radius);
         for (k, collider) in self.near(reach) {
-            if matches!(collider.form, Form::HalfSpace { .. }) {
-                continue;
-            }
-            let found = match collider.ball_sweep(start, dir, length, radius, true) {
+            let found = match collider.ball_sweep_bounded(start, dir, length, radius) {
                 Some(found) => found,
                 None => collider.cast(ball, start, along, 0.0, true),
             };
@@ -1547,5 +1532,69 @@ impl WorldQuery for World {
             normal: hit.normal,
             distance: hit.distance,
         })
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use parry3d::shape::Capsule;
+
+    #[test]
+    fn a_capsule_sweep_answers_the_nearest_shape_whatever_the_order() {
+        // The mover's sweeps (a capsule, with skin, not stopping at penetration) test the
+        // half-spaces apart from the bounded shapes found near the sweep, like the traces.
+        // Reference: every collider cast in the order listed, without the broad phase, the
+        // nearest hit kept, the collider listed first on equal distances. The box's top is
+        // flush with the upper ground, listed after it.
+        let shapes = [
+            "Box(center: (0.0, 0.0, -10.0), half_extents: (30.0, 30.0, 10.0))",
+            "Ground(height: -25.0)",
+            "Box(center: (60.0, 20.0, 40.0), half_extents: (15.0, 15.0, 40.0), yaw: 20.0)",
+            "Stairs(start: (-80.0, -40.0, 0.0), rise: 15.0, run: 25.0, steps: 4, width: 60.0)",
+            "Ground(height: 0.0)",
+        ];
+        let w = World::from_str(&format!("(shapes: [{}])", shapes.join(", ")))
+            .unwrap_or_else(|e| panic!("{e}"));
+        let capsule = Capsule::new_z(30.0, 20.0);
+        let bits = |h: SweepHit| (h.distance.to_bits(), h.normal.to_array().map(f32::to_bits));
+        let mut seed = 11u32;
+        let mut r = || {
+            seed = seed.wrapping_mul(1_664_525).wrapping_add(1_013_904_223);
+            (seed >> 8) as f32 / (1u32 << 24) as f32 * 2.0 - 1.0
+        };
+        let mut hits = 0;
+        for k in 0..400 {
+            // Every other sweep from high above (the capsule's box at the start far from
+            // anything) straight down onto the flush top or the ground by it.
+            let (start, delta) = if k % 2 == 0 {
+                let start = Vec3::new(r() * 100.0, r() * 100.0, 110.0 + r() * 10.0);
+                (start, Vec3::new(0.0, 0.0, -140.0))
+            } else {
+                let start = Vec3::new(r() * 100.0, r() * 100.0, 55.0 + r() * 30.0);
+                (start, Vec3::new(r() * 60.0, r() * 60.0, -60.0 + r() * 20.0))
+            };
+            let ours = w.sweep(&capsule, start, delta, 0.05, false);
+            let along = Along {
+                delta,
+                dir: delta / delta.length(),
+                length: delta.length(),
+            };
+            let mut reference: Option<SweepHit> = None;
+            for hit in
+                (w.colliders.iter()).filter_map(|c| c.cast(&capsule, start, along, 0.05, false))
+            {
+                if reference.is_none_or(|b| hit.distance < b.distance) {
+                    reference = Some(hit);
+                }
+            }
+            assert_eq!(
+                ours.map(bits),
+                reference.map(bits),
+                "{start} by {delta}: {ours:?} vs {reference:?}"
+            );
+            hits += usize::from(ours.is_some());
+        }
+        assert!(hits > 300, "{hits} hits");
     }
 }

@@ -172,7 +172,7 @@ fn the_nearest_shape_answers_whatever_the_order() {
         _ => false,
     };
     let mut next = uniform(7);
-    let (mut hits, mut ground_hits) = (0, 0);
+    let (mut hits, mut ground_hits, mut overlaps) = (0, 0, 0);
     for k in 0..3000 {
         let mut r = || next() * 2.0 - 1.0;
         let start = Vec3::new(r() * 120.0, r() * 120.0, 40.0 + r() * 60.0);
@@ -211,10 +211,20 @@ fn the_nearest_shape_answers_whatever_the_order() {
             hits += 1;
             ground_hits += usize::from(hit.point.z.abs() < 1e-3 && hit.normal == Vec3::Z);
         }
+        // A sphere that does not move: the overlap at its start, often with two shapes at
+        // distance 0 (a ball on the flush box's edge touches the box and the ground).
+        let at = Vec3::new(start.x, start.y, r() * 8.0);
+        let ours = w.sphere_trace(at, at, radius);
+        let reference = nearest(&|one: &World| one.sphere_trace(at, at, radius));
+        assert!(
+            same(ours, reference),
+            "overlap at {at} r {radius}: {ours:?} vs {reference:?}"
+        );
+        overlaps += usize::from(ours.is_some());
     }
     assert!(
-        hits > 2000 && ground_hits > 300,
-        "{hits} hits, {ground_hits} on the ground or flush tops"
+        hits > 2000 && ground_hits > 300 && overlaps > 1000,
+        "{hits} hits, {ground_hits} on the ground or flush tops, {overlaps} overlaps"
     );
 }
 
