@@ -138,7 +138,9 @@ fn the_nearest_shape_answers_whatever_the_order() {
     // step is flush with the upper ground too (equal distances, but the step's normal is
     // (0, −0, 1) where the ground's is (0, 0, 1): the order shows in the bits), with the
     // grounds listed among and after the bounded shapes, so that a trace that tests the
-    // half-spaces apart must still rank their hits among the others'.
+    // half-spaces apart must still rank their hits among the others'. Each trace's start
+    // is also traced by a sphere that does not move (the overlap test, through the general
+    // sweep), often touching two shapes at distance 0.
     let shapes = [
         "Box(center: (0.0, 0.0, -10.0), half_extents: (30.0, 30.0, 10.0))",
         "Ground(height: -25.0)",
