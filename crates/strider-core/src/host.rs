@@ -18,6 +18,18 @@ pub struct TraceHit {
     pub distance: f32,
 }
 
+/// One sphere trace of a batch ([`WorldQuery::sphere_traces`]): a sphere of `radius`
+/// centimetres swept from `start` to `end` (world space, centimetres).
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct SphereQuery {
+    /// Where the sphere's centre starts.
+    pub start: Vec3,
+    /// Where the sphere's centre would end.
+    pub end: Vec3,
+    /// The sphere's radius.
+    pub radius: f32,
+}
+
 /// Geometry queries a host answers for the rig. Implementations must be deterministic
 /// (same query, same answer) for replays to be bit-identical.
 pub trait WorldQuery {
@@ -27,6 +39,17 @@ pub trait WorldQuery {
     /// First hit of a sphere of `radius` swept from `start` to `end`, or `None`.
     /// `distance` is how far the sphere's centre travelled.
     fn sphere_trace(&self, start: Vec3, end: Vec3, radius: f32) -> Option<TraceHit>;
+
+    /// Several sphere traces at once (a batch of characters tracing together): `hits[k]`
+    /// becomes the answer to `queries[k]`, which must be [`WorldQuery::sphere_trace`]'s
+    /// answer to it, bit for bit; entries of the longer slice past the shorter are left
+    /// as they are. The default asks [`WorldQuery::sphere_trace`] one query at a time; a
+    /// world can answer a batch faster.
+    fn sphere_traces(&self, queries: &[SphereQuery], hits: &mut [Option<TraceHit>]) {
+        for (query, hit) in queries.iter().zip(hits) {
+            *hit = self.sphere_trace(query.start, query.end, query.radius);
+        }
+    }
 }
 
 /// A world with no geometry: every trace misses.

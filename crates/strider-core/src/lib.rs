@@ -30,7 +30,9 @@ pub mod transform;
 
 pub use euler::EulerOrder;
 pub use glam::{Quat, Vec3};
-pub use host::{DebugColor, DebugDraw, DebugPrimitive, EmptyWorld, TraceHit, WorldQuery};
+pub use host::{
+    DebugColor, DebugDraw, DebugPrimitive, EmptyWorld, SphereQuery, TraceHit, WorldQuery,
+};
 pub use pose::Pose;
 pub use skeleton::{Bone, BoneIndex, Skeleton, SkeletonError};
 pub use transform::{Transform, all_finite, load_vec3};

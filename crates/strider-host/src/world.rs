@@ -48,7 +48,7 @@ use parry3d::query::{Ray, ShapeCastOptions, cast_shapes};
 use parry3d::shape::{Ball, Shape, SharedShape, TriMesh};
 use serde::Deserialize;
 use serde::de::{self, Deserializer, SeqAccess, Visitor};
-use strider_core::{TraceHit, WorldQuery, all_finite, load_vec3};
+use strider_core::{SphereQuery, TraceHit, WorldQuery, all_finite, load_vec3};
 
 use crate::sweep::{
     BallSweep, ball_box_sweep, ball_half_space_sweep, ball_hull_sweep, ball_reach,
@@ -1494,6 +1494,37 @@ impl WorldQuery for World {
     /// is a line trace; a negative or non-finite radius, or non-finite ends, miss. A
     /// zero-length sweep reports an overlap at the start, if any.
     fn sphere_trace(&self, start: Vec3, end: Vec3, radius: f32) -> Option<TraceHit> {
+        self.trace_ball(start, end, radius)
+    }
+
+    /// Each query as [`World::sphere_trace`] answers it, bit for bit. In a world of one
+    /// half-space and nothing else (flat ground), eight queries at a time, one array per
+    /// coordinate, which the compiler computes several queries per instruction; otherwise
+    /// one at a time.
+    fn sphere_traces(&self, queries: &[SphereQuery], hits: &mut [Option<TraceHit>]) {
+        match (self.bounded, &self.half_spaces[..]) {
+            (false, [plane]) => {
+                for (queries, hits) in queries.chunks(COLUMN).zip(hits.chunks_mut(COLUMN)) {
+                    self.plane_sphere_traces(plane, queries, hits);
+                }
+            }
+            _ => {
+                for (query, hit) in queries.iter().zip(hits) {
+                    *hit = self.trace_ball(query.start, query.end, query.radius);
+                }
+            }
+        }
+    }
+}
+
+/// How many sphere traces a flat world answers side by side ([`World::sphere_traces`]).
+const COLUMN: usize = 8;
+
+impl World {
+    /// [`WorldQuery::sphere_trace`], inlined where it is called: once for that method and
+    /// once in the loop of [`WorldQuery::sphere_traces`].
+    #[inline(always)]
+    fn trace_ball(&self, start: Vec3, end: Vec3, radius: f32) -> Option<TraceHit> {
         // Read as the caller stored them (see `load_vec3`).
         let (a, b) = (load_vec3(&start), load_vec3(&end));
         if !(all_finite([a, b, Vec3A::splat(radius)]) && radius >= 0.0) {
@@ -1532,6 +1563,84 @@ impl WorldQuery for World {
             normal: hit.normal,
             distance: hit.distance,
         })
+    }
+
+    /// Up to [`COLUMN`] sphere traces against the world's only collider, the half-space
+    /// `plane`: what [`WorldQuery::sphere_trace`] computes for each, with the same
+    /// operations in the same order (so bit for bit the same answers), laid out one array
+    /// per coordinate so that the compiler computes several queries per instruction. A
+    /// query off the common path (not finite, a radius of 0 or less, a sphere that does not
+    /// move) is answered by `sphere_trace` itself.
+    fn plane_sphere_traces(
+        &self,
+        plane: &HalfSpace,
+        queries: &[SphereQuery],
+        hits: &mut [Option<TraceHit>],
+    ) {
+        let n = queries.len().min(hits.len()).min(COLUMN);
+        // Start, delta (end − start) and radius, by coordinate; unused lanes stay zero.
+        let (mut start, mut delta, mut radius) =
+            ([[0.0; COLUMN]; 3], [[0.0; COLUMN]; 3], [0.0; COLUMN]);
+        for k in 0..n {
+            let SphereQuery {
+                start: s,
+                end: e,
+                radius: r,
+            } = queries[k];
+            (start[0][k], start[1][k], start[2][k]) = (s.x, s.y, s.z);
+            (delta[0][k], delta[1][k], delta[2][k]) = (e.x - s.x, e.y - s.y, e.z - s.z);
+            radius[k] = r;
+        }
+        let (p, nrm) = (plane.point.to_array(), plane.normal.to_array());
+        let [sx, sy, sz] = start;
+        let [dx, dy, dz] = delta;
+        let mut dir = [[0.0; COLUMN]; 3];
+        let (mut distance, mut hit, mut common) = ([0.0; COLUMN], [false; COLUMN], [false; COLUMN]);
+        for k in 0..COLUMN {
+            // `Vec3A::length`: (x² + y²) + z², then the square root.
+            let length = ((dx[k] * dx[k] + dy[k] * dy[k]) + dz[k] * dz[k]).sqrt();
+            let (ux, uy, uz) = (dx[k] / length, dy[k] / length, dz[k] / length);
+            (dir[0][k], dir[1][k], dir[2][k]) = (ux, uy, uz);
+            // `ball_half_space_sweep`, stopping at penetration.
+            let gap = ((nrm[0] * (sx[k] - p[0]) + nrm[1] * (sy[k] - p[1]))
+                + nrm[2] * (sz[k] - p[2]))
+                - radius[k];
+            let approach = -((nrm[0] * ux + nrm[1] * uy) + nrm[2] * uz);
+            let along = gap / approach;
+            let touching = gap <= 0.0;
+            // Without short-circuits, so that the loop has no branches to keep it from
+            // computing several lanes at once. (`ball_half_space_sweep` returns a miss for
+            // `approach <= 0`; a NaN approach misses here too, its `along` being NaN.)
+            hit[k] = touching | ((approach > 0.0) & (along <= length));
+            distance[k] = if touching { 0.0 } else { along };
+            // `sphere_trace`'s own tests: a finite start and radius, a radius above 0, and a
+            // finite length above 1e-7 (so a finite end).
+            common[k] = all_finite([sx[k], sy[k], sz[k], radius[k], length])
+                & (radius[k] > 0.0)
+                & (length > 1e-7);
+        }
+        for k in 0..n {
+            hits[k] = if !common[k] {
+                let q = &queries[k];
+                self.sphere_trace(q.start, q.end, q.radius)
+            } else if hit[k] {
+                // The touched point of a sphere is one radius from its centre, against the
+                // normal: `(start + dir · distance) − normal · radius`, as `sphere_trace`.
+                let (d, r) = (distance[k], radius[k]);
+                let point = Vec3::new(
+                    (sx[k] + dir[0][k] * d) - nrm[0] * r,
+                    (sy[k] + dir[1][k] * d) - nrm[1] * r,
+                    (sz[k] + dir[2][k] * d) - nrm[2] * r,
+                );
+                Some(TraceHit {
+                    point,
+                    normal: plane.normal,
+                    distance: d,
+                })
+            } else {
+                None
+            };
+        }
     }
 }
 

@@ -1,7 +1,7 @@
 //! Traces against hand-computed values.
 
 use glam::Vec3;
-use strider_core::WorldQuery;
+use strider_core::{SphereQuery, WorldQuery};
 use strider_host::world::{ShapeDesc, Wave, World, WorldDesc, WorldError, wave_height};
 
 fn near(a: f32, b: f32, tol: f32) -> bool {
@@ -868,5 +868,108 @@ fn field_wave() -> Wave {
         wavelength: 150.0,
         heading: 30.0,
         phase: 10.0,
+    }
+}
+
+#[test]
+fn sphere_traces_in_a_batch_answer_as_each_alone() {
+    // `sphere_traces` must give each query `sphere_trace`'s answer, bit for bit: a flat
+    // world answers a batch lane by lane, every other world one query at a time. Queries
+    // from above and below the ground, moving up, down and sideways, starting inside,
+    // touching, missing short of it, and off the common path (radius 0 or negative, a
+    // sphere that does not move, NaN and infinite ends and radii), in batches of 1 to 19.
+    let bits = |h: Option<strider_core::TraceHit>| {
+        h.map(|h| {
+            (
+                h.point.to_array().map(f32::to_bits),
+                h.normal.to_array().map(f32::to_bits),
+                h.distance.to_bits(),
+            )
+        })
+    };
+    let mut next = uniform(13);
+    let mut r = || next() * 2.0 - 1.0;
+    let mut queries = Vec::new();
+    for k in 0..600 {
+        let start = Vec3::new(r() * 300.0, r() * 300.0, r() * 60.0 + 20.0);
+        let end = start + Vec3::new(r() * 80.0, r() * 80.0, r() * 120.0 - 30.0);
+        let radius = 0.5 + (r() + 1.0) * 6.0;
+        queries.push(match k % 12 {
+            0 => SphereQuery {
+                start,
+                end: start,
+                radius,
+            },
+            1 => SphereQuery {
+                start,
+                end,
+                radius: 0.0,
+            },
+            2 => SphereQuery {
+                start,
+                end,
+                radius: -1.0,
+            },
+            3 => SphereQuery {
+                start: Vec3::new(f32::NAN, 0.0, 10.0),
+                end,
+                radius,
+            },
+            4 => SphereQuery {
+                start,
+                end: Vec3::new(0.0, f32::INFINITY, 0.0),
+                radius,
+            },
+            5 => SphereQuery {
+                start,
+                end,
+                radius: f32::INFINITY,
+            },
+            6 => SphereQuery {
+                start,
+                end: start + Vec3::Z * 1e-8,
+                radius,
+            },
+            // Straight down from whole centimetres, the sphere (radius 4) ending just on the
+            // ground at z = 0 or starting on or in it: distances equal to the length, and 0.
+            7 => {
+                let at = start.round();
+                SphereQuery {
+                    start: at,
+                    end: Vec3::new(at.x, at.y, 4.0),
+                    radius: 4.0,
+                }
+            }
+            _ => SphereQuery { start, end, radius },
+        });
+    }
+    let worlds = [
+        "(shapes: [Ground(height: 0.0)])",
+        "(shapes: [Ground(height: -12.5)])",
+        "(shapes: [Ground(height: 0.0), Box(center: (0.0, 0.0, 10.0), half_extents: (50.0, 50.0, 10.0))])",
+    ];
+    for text in worlds {
+        let w = world(text);
+        let mut hits_seen = 0;
+        let mut at = 0;
+        for size in (1..20).cycle() {
+            if at >= queries.len() {
+                break;
+            }
+            let batch = &queries[at..(at + size).min(queries.len())];
+            let mut hits = vec![None; batch.len()];
+            w.sphere_traces(batch, &mut hits);
+            for (q, hit) in batch.iter().zip(&hits) {
+                let alone = w.sphere_trace(q.start, q.end, q.radius);
+                assert_eq!(
+                    bits(*hit),
+                    bits(alone),
+                    "{text}: {q:?}: {hit:?} vs {alone:?}"
+                );
+                hits_seen += usize::from(hit.is_some());
+            }
+            at += size;
+        }
+        assert!(hits_seen > 150, "{text}: {hits_seen} hits");
     }
 }

@@ -203,10 +203,37 @@ macro_rules! once {
 /// with [`load_vec3`], as stored, not copied out first (a copy reads 16 bytes at a time
 /// across the answer's separate stores, and waits for them to reach the cache).
 #[inline(always)]
-fn read_hit(hit: &Option<TraceHit>) -> Option<(Vec3A, Vec3A, f32)> {
+pub(crate) fn read_hit(hit: &Option<TraceHit>) -> Option<(Vec3A, Vec3A, f32)> {
     let h = hit.as_ref()?;
     let (point, normal) = (load_vec3(&h.point), load_vec3(&h.normal));
     all_finite([point, normal, Vec3A::splat(h.distance)]).then_some((point, normal, h.distance))
+}
+
+/// A trace node's outputs (hit, point, normal, distance; rig space) from the world's answer
+/// ([`read_hit`]) to the trace from `start` to `end` (rig space), `from_world` taking
+/// world space to rig space: the hit mapped back, or for a miss the end, `+Z` and the
+/// whole length.
+#[inline(always)]
+pub(crate) fn trace_outputs(
+    hit: Option<(Vec3A, Vec3A, f32)>,
+    start: Vec3,
+    end: Vec3,
+    from_world: &Affine3A,
+) -> (bool, Vec3, Vec3, f32) {
+    match hit {
+        Some((point, normal, distance)) => (
+            true,
+            from_world.transform_point3a(point).into(),
+            // Normalised in SIMD registers (the trace's normal, turned by the matrix,
+            // needs no round trip through three floats).
+            from_world
+                .transform_vector3a(normal)
+                .normalize_or_zero()
+                .into(),
+            distance,
+        ),
+        None => (false, end, Vec3::Z, start.distance(end)),
+    }
 }
 
 /// The bone axes of a two-bone IK instruction's last solve, kept while it runs for a
@@ -673,24 +700,10 @@ macro_rules! execute {
                 } else {
                     (read_hit(&$cx.world.sphere_trace(ws, we, f!(2).max(0.0))), 3)
                 };
-                match hit {
-                    Some((point, normal, distance)) => {
-                        let from_world = &$cx.from_world_matrix;
-                        b!(outs) = true;
-                        v!(outs + 1) = from_world.transform_point3a(point).into();
-                        // Normalised in SIMD registers (the trace's normal, turned by the
-                        // matrix, needs no round trip through three floats).
-                        let normal = from_world.transform_vector3a(normal);
-                        v!(outs + 2) = normal.normalize_or_zero().into();
-                        f!(outs + 3) = distance;
-                    }
-                    None => {
-                        b!(outs) = false;
-                        v!(outs + 1) = end;
-                        v!(outs + 2) = Vec3::Z;
-                        f!(outs + 3) = start.distance(end);
-                    }
-                }
+                let (hit, point, normal, distance) =
+                    trace_outputs(hit, start, end, &$cx.from_world_matrix);
+                (b!(outs), v!(outs + 1), v!(outs + 2), f!(outs + 3)) =
+                    (hit, point, normal, distance);
             }),
 
             Op::FloatLerp => $each!(f!(3) = loco::lerp_exponential(f!(0), f!(1), $cx.dt, f!(2))),
@@ -1287,6 +1300,13 @@ fn run_group<const LANES: bool>(
                     continue;
                 }
                 // SAFETY: as above; `members` is the batch the lanes were loaded from.
+                Op::SphereTrace
+                    if unsafe { crate::per_member::sphere_traces(o, lane0, members) } =>
+                {
+                    pc += 1;
+                    continue;
+                }
+                // SAFETY: as above.
                 _ if unsafe { crate::per_member::run_per_member(op, o, lane0, members) } => {
                     pc += 1;
                     continue;

@@ -15,10 +15,12 @@
 // Slots are read and written through the lanes' base pointers, as in `lanes`.
 #![allow(unsafe_code)]
 
-use crate::exec::{BATCH, Bases, Ctx, array_get, array_set, bone_transform};
+use crate::exec::{
+    BATCH, Bases, Ctx, array_get, array_set, bone_transform, read_hit, trace_outputs,
+};
 use crate::lanes::block;
 use glam::{Quat, Vec3};
-use strider_core::Transform;
+use strider_core::{SphereQuery, Transform};
 use strider_nodes::{Elem, Op};
 
 /// Member 0's item of the block of [`BATCH`] lanes of slot `slot` of the array at `base`;
@@ -160,6 +162,62 @@ pub(crate) unsafe fn run_per_member(
             get_transform!(0, |m| break_transform!(m, blocks));
         }
         _ => return false,
+    }
+    true
+}
+
+/// `SphereTrace` (operands: start, end, radius; hit, point, normal, distance) for a whole
+/// batch with one question to the world ([`WorldQuery::sphere_traces`]), which answers each
+/// member's trace as its own `sphere_trace` would: every member's slots end as the
+/// handler leaves them. Returns false, doing nothing, when the members do not all trace
+/// the same world (each then asks its own, through the handler). Inlined into the batch
+/// loop, so that it runs on the loop's machine code (`crate::batch_code`).
+///
+/// # Safety
+/// As [`run_per_member`], with `o` a `SphereTrace`'s operands.
+#[inline(always)]
+pub(crate) unsafe fn sphere_traces(o: &[u32], lane0: Bases, members: &[Ctx<'_>]) -> bool {
+    // Member 0's item of slot operand `$k` of scalar array `$a`.
+    macro_rules! lane {
+        ($a:ident, $k:expr) => {
+            item0(lane0.$a, o[$k])
+        };
+    }
+    // One question to the world for the batch (its members share it in a crowd's
+    // batch; else each asks its own, as the handler does).
+    let Some(world) = members.first().map(|cx| cx.world) else {
+        return true;
+    };
+    if !members.iter().all(|cx| std::ptr::addr_eq(cx.world, world)) {
+        return false;
+    }
+    let (start, end, radius) = (lane!(vec3s, 0), lane!(vec3s, 1), lane!(floats, 2));
+    let mut queries = [SphereQuery::default(); BATCH];
+    for (m, (cx, query)) in members.iter().zip(&mut queries).enumerate() {
+        // SAFETY: slots of the program's lanes (the caller's contract), `m < BATCH`.
+        let (s, e, r) = unsafe { (*start.add(m), *end.add(m), *radius.add(m)) };
+        *query = SphereQuery {
+            start: cx.to_world_matrix.transform_point3(s),
+            end: cx.to_world_matrix.transform_point3(e),
+            radius: r.max(0.0),
+        };
+    }
+    let n = members.len();
+    let mut answers = [None; BATCH];
+    world.sphere_traces(&queries[..n], &mut answers[..n]);
+    let (hit, point, normal, distance) = (
+        lane!(bools, 3),
+        lane!(vec3s, 4),
+        lane!(vec3s, 5),
+        lane!(floats, 6),
+    );
+    for (m, (cx, answer)) in members.iter().zip(&answers).enumerate() {
+        // SAFETY: as above. A member's outputs may share its inputs' slots, so its ends are
+        // read again before its outputs are written (other members' items lie apart).
+        let (s, e) = unsafe { (*start.add(m), *end.add(m)) };
+        let outs = trace_outputs(read_hit(answer), s, e, &cx.from_world_matrix);
+        // SAFETY: as above.
+        unsafe { (*hit.add(m), *point.add(m), *normal.add(m), *distance.add(m)) = outs };
     }
     true
 }
@@ -361,6 +419,130 @@ mod tests {
         }
     }
 
+    /// A world of the plane z = 0 that counts the batches it is asked: a sphere that
+    /// starts below it (by its radius) hits at the start, one that ends above it misses,
+    /// and one that starts left of x = −1 gets a NaN normal (which the trace reads as a
+    /// miss).
+    #[derive(Default)]
+    struct Plane {
+        batches: std::cell::Cell<usize>,
+    }
+
+    impl strider_core::WorldQuery for Plane {
+        fn line_trace(&self, _: Vec3, _: Vec3) -> Option<strider_core::TraceHit> {
+            None
+        }
+
+        fn sphere_trace(
+            &self,
+            start: Vec3,
+            end: Vec3,
+            radius: f32,
+        ) -> Option<strider_core::TraceHit> {
+            let (from, to) = (start.z - radius, end.z - radius);
+            if from < 0.0 {
+                return Some(strider_core::TraceHit {
+                    point: start - Vec3::Z * radius,
+                    normal: Vec3::Z,
+                    distance: 0.0,
+                });
+            }
+            if to >= 0.0 {
+                return None;
+            }
+            let t = from / (from - to);
+            Some(strider_core::TraceHit {
+                point: start.lerp(end, t) - Vec3::Z * radius,
+                normal: if start.x < -1.0 {
+                    Vec3::NAN
+                } else {
+                    Vec3::new(0.1, 0.0, 1.0)
+                },
+                distance: start.distance(end) * t,
+            })
+        }
+
+        fn sphere_traces(
+            &self,
+            queries: &[SphereQuery],
+            hits: &mut [Option<strider_core::TraceHit>],
+        ) {
+            self.batches.set(self.batches.get() + 1);
+            for (q, hit) in queries.iter().zip(hits) {
+                *hit = self.sphere_trace(q.start, q.end, q.radius);
+            }
+        }
+    }
+
+    /// What a `SphereTrace` with operands `o` leaves in `n` members' slots, each member
+    /// placed in the world by a transform of its own, all asking `worlds[m % len]`: run for
+    /// the batch at once (`None` when the batch path leaves it to the handler) or by the
+    /// handler on each member alone.
+    fn trace(o: &[u32], n: usize, batch: bool, worlds: &[&Plane]) -> Option<Vec<Slots>> {
+        let mut slots: Vec<Slots> = (0..n).map(member_slots).collect();
+        let mut poses: Vec<Pose> = (0..n).map(member_pose).collect();
+        let mut draws: Vec<DebugDraw> = slots.iter().map(|_| DebugDraw::new(false)).collect();
+        let mut cxs: Vec<Ctx<'_>> = (slots.iter_mut().zip(poses.iter_mut()).zip(&mut draws))
+            .enumerate()
+            .map(|(m, ((s, p), d))| {
+                let mut cx = Ctx::for_test(s, &[], p, d, 1.0 / 60.0);
+                let to_world = glam::Affine3A::from_rotation_translation(
+                    Quat::from_rotation_z(0.4 * m as f32),
+                    Vec3::new(m as f32, -2.0, 1.5 - 0.25 * m as f32),
+                );
+                (cx.to_world_matrix, cx.from_world_matrix) = (to_world, to_world.inverse());
+                cx.world = worlds[m % worlds.len()];
+                cx
+            })
+            .collect();
+        if batch {
+            let lens = ScalarLens([SLOTS; 6]);
+            let mut lanes = Lanes::default();
+            lanes.load(Copies::all(&lens), &cxs);
+            // SAFETY: the operands are slots below `SLOTS` of the lanes loaded above.
+            let ran = unsafe { sphere_traces(o, lanes.bases(), &cxs) };
+            lanes.store(Copies::all(&lens), &mut cxs);
+            if !ran {
+                return None;
+            }
+        } else {
+            for cx in &mut cxs {
+                // SAFETY: as above.
+                unsafe { step(Op::SphereTrace, o, cx, 1) };
+            }
+        }
+        drop(cxs);
+        Some(slots)
+    }
+
+    #[test]
+    fn a_batch_asks_its_world_once_for_every_sphere_trace() {
+        // Operands: start, end, radius, then hit, point, normal, distance; in slots of their
+        // own, and with the outputs in the inputs' slots (as slot sharing may lay them out).
+        for operands in [[1, 2, 0, 4, 5, 6, 7], [1, 2, 0, 3, 1, 2, 0]] {
+            let o = window(&operands);
+            for n in [BATCH, 5, 1] {
+                let world = Plane::default();
+                let batched = trace(&o, n, true, &[&world]).expect("the batch path takes it");
+                assert_eq!(world.batches.get(), 1, "{operands:?}, {n} members");
+                let alone = trace(&o, n, false, &[&Plane::default()]).expect("the handler");
+                for m in 0..n {
+                    assert!(
+                        batched[m].bit_eq(&alone[m]),
+                        "{operands:?}: member {m} of {n}: slots differ"
+                    );
+                }
+                let hits = (alone.iter())
+                    .filter(|s| s.bools[operands[3] as usize])
+                    .count();
+                assert!(n < BATCH || (0 < hits && hits < n), "{hits} hits of {n}");
+            }
+            // Members in different worlds: each asks its own, through the handler.
+            let (a, b) = (Plane::default(), Plane::default());
+            assert!(trace(&o, BATCH, true, &[&a, &b]).is_none());
+        }
+    }
+
     #[test]
     fn other_ops_are_left_to_the_handlers() {
         for op in [
@@ -369,6 +551,7 @@ mod tests {
             Op::AddF,
             Op::GetParent,
             Op::SetTransform,
+            Op::LineTrace,
             Op::Copy(ValueType::Float),
         ] {
             let o = window(&[1, 2, 3, 4, 5]);
