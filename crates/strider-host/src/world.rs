@@ -1654,16 +1654,9 @@ mod tests {
         // The mover's sweeps (a capsule, with skin, not stopping at penetration) test the
         // half-spaces apart from the bounded shapes found near the sweep, like the traces.
         // Reference: every collider cast in the order listed, without the broad phase, the
-        // nearest hit kept, the collider listed first on equal distances. The box's top is
-        // flush with the upper ground, listed after it.
-        let shapes = [
-            "Box(center: (0.0, 0.0, -10.0), half_extents: (30.0, 30.0, 10.0))",
-            "Ground(height: -25.0)",
-            "Box(center: (60.0, 20.0, 40.0), half_extents: (15.0, 15.0, 40.0), yaw: 20.0)",
-            "Stairs(start: (-80.0, -40.0, 0.0), rise: 15.0, run: 25.0, steps: 4, width: 60.0)",
-            "Ground(height: 0.0)",
-        ];
-        let w = World::from_str(&format!("(shapes: [{}])", shapes.join(", ")))
+        // nearest hit kept, the collider listed first on equal distances (the world of the
+        // traces' test, `tests/worlds/ties.ron`, whose box tops are flush with a ground).
+        let w = World::from_str(include_str!("../tests/worlds/ties.ron"))
             .unwrap_or_else(|e| panic!("{e}"));
         let capsule = Capsule::new_z(30.0, 20.0);
         let bits = |h: SweepHit| (h.distance.to_bits(), h.normal.to_array().map(f32::to_bits));

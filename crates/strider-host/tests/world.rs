@@ -132,29 +132,19 @@ fn every_shape_of_a_crowded_world_is_found() {
 #[test]
 fn the_nearest_shape_answers_whatever_the_order() {
     // A world answers a trace with the nearest of its shapes' hits, the shape listed first
-    // on equal distances. Reference: each shape in a world of its own, the nearest hit
-    // picked by hand. Two grounds (one under the other), a box flush with the upper ground
-    // (equal distances on its top), a pillar, stairs, a ramp, and turned stairs whose first
-    // step is flush with the upper ground too (equal distances, but the step's normal is
-    // (0, −0, 1) where the ground's is (0, 0, 1): the order shows in the bits), with the
-    // grounds listed among and after the bounded shapes, so that a trace that tests the
-    // half-spaces apart must still rank their hits among the others'. Each trace's start
-    // is also traced by a sphere that does not move (the overlap test, through the general
+    // on equal distances (`tests/worlds/ties.ron` says how its shapes tie). Reference: each
+    // shape in a world of its own, the nearest hit picked by hand. Each trace's start is
+    // also traced by a sphere that does not move (the overlap test, through the general
     // sweep), often touching two shapes at distance 0.
-    let shapes = [
-        "Box(center: (0.0, 0.0, -10.0), half_extents: (30.0, 30.0, 10.0))",
-        "Ground(height: -25.0)",
-        "Box(center: (60.0, 20.0, 40.0), half_extents: (15.0, 15.0, 40.0), yaw: 20.0)",
-        "Stairs(start: (-80.0, -40.0, 0.0), rise: 15.0, run: 25.0, steps: 4, width: 60.0)",
-        "Ground(height: 0.0)",
-        "Ramp(start: (20.0, -90.0, 0.0), angle: 25.0, length: 80.0, width: 50.0)",
-        "Stairs(start: (90.0, 80.0, -15.0), rise: 15.0, run: 20.0, steps: 2, width: 40.0, yaw: -135.0)",
-    ];
-    let w = world(&format!("(shapes: [{}])", shapes.join(", ")));
-    let alone: Vec<World> = shapes
-        .iter()
-        .map(|s| world(&format!("(shapes: [{s}])")))
+    let w = world(include_str!("worlds/ties.ron"));
+    let alone: Vec<World> = (w.desc().shapes.iter())
+        .map(|shape| {
+            World::from_desc(&WorldDesc {
+                shapes: vec![shape.clone()],
+            })
+        })
         .collect();
+    assert_eq!(alone.len(), 7);
     let nearest = |each: &dyn Fn(&World) -> Option<strider_core::TraceHit>| {
         let mut best: Option<strider_core::TraceHit> = None;
         for hit in alone.iter().filter_map(each) {
