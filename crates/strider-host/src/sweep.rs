@@ -35,6 +35,8 @@ pub(crate) enum BallSweep {
 /// for up to `length` first touches the half-space below the plane through `point` with
 /// unit `normal`: the distance travelled, 0 when it starts touching or inside (if
 /// `stop_at_penetration`; else a sphere starting inside does not hit).
+/// `World::plane_sphere_traces` computes the same for a flat world's batch of sphere
+/// traces, operation for operation: a change here must be made there too.
 pub(crate) fn ball_half_space_sweep(
     start: Vec3,
     dir: Vec3,

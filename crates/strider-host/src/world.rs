@@ -654,7 +654,7 @@ pub struct World {
     /// Whether any collider has bounds: else a trace need not compute its own.
     bounded: bool,
     /// The half-spaces among the colliders (the ground under most traces), with their
-    /// indices: what sphere and line traces test first, in closed form.
+    /// indices: what every trace and sweep tests first.
     half_spaces: Vec<HalfSpace>,
 }
 
@@ -674,7 +674,7 @@ struct HalfSpace {
 #[derive(Clone, Copy, Debug)]
 struct Quad {
     /// Minimum corner per axis (x, y, z), one lane per collider. A missing collider (past
-    /// the last) has `+∞`, so nothing is near it.
+    /// the last) or a half-space has `+∞`, so nothing is near it.
     lo: [Vec4; 3],
     /// Maximum corner per axis, one lane per collider (`−∞` for a missing one or a
     /// half-space, which the traces test on their own).
@@ -1494,13 +1494,13 @@ impl WorldQuery for World {
     /// is a line trace; a negative or non-finite radius, or non-finite ends, miss. A
     /// zero-length sweep reports an overlap at the start, if any.
     fn sphere_trace(&self, start: Vec3, end: Vec3, radius: f32) -> Option<TraceHit> {
-        self.trace_ball(start, end, radius)
+        self.sphere_trace_inlined(start, end, radius)
     }
 
     /// Each query as [`World::sphere_trace`] answers it, bit for bit. In a world of one
     /// half-space and nothing else (flat ground), eight queries at a time, one array per
-    /// coordinate, which the compiler computes several queries per instruction; otherwise
-    /// one at a time.
+    /// coordinate, so that the compiler can compute several queries per instruction;
+    /// otherwise one at a time.
     fn sphere_traces(&self, queries: &[SphereQuery], hits: &mut [Option<TraceHit>]) {
         match (self.bounded, &self.half_spaces[..]) {
             (false, [plane]) => {
@@ -1510,7 +1510,7 @@ impl WorldQuery for World {
             }
             _ => {
                 for (query, hit) in queries.iter().zip(hits) {
-                    *hit = self.trace_ball(query.start, query.end, query.radius);
+                    *hit = self.sphere_trace_inlined(query.start, query.end, query.radius);
                 }
             }
         }
@@ -1522,9 +1522,10 @@ const COLUMN: usize = 8;
 
 impl World {
     /// [`WorldQuery::sphere_trace`], inlined where it is called: once for that method and
-    /// once in the loop of [`WorldQuery::sphere_traces`].
+    /// once in the loop of [`WorldQuery::sphere_traces`]. [`World::plane_sphere_traces`]
+    /// computes the same for a flat world in columns and must be kept in step with it.
     #[inline(always)]
-    fn trace_ball(&self, start: Vec3, end: Vec3, radius: f32) -> Option<TraceHit> {
+    fn sphere_trace_inlined(&self, start: Vec3, end: Vec3, radius: f32) -> Option<TraceHit> {
         // Read as the caller stored them (see `load_vec3`).
         let (a, b) = (load_vec3(&start), load_vec3(&end));
         if !(all_finite([a, b, Vec3A::splat(radius)]) && radius >= 0.0) {
@@ -1569,8 +1570,11 @@ impl World {
     /// `plane`: what [`WorldQuery::sphere_trace`] computes for each, with the same
     /// operations in the same order (so bit for bit the same answers), laid out one array
     /// per coordinate so that the compiler computes several queries per instruction. A
-    /// query off the common path (not finite, a radius of 0 or less, a sphere that does not
-    /// move) is answered by `sphere_trace` itself.
+    /// query off the common path (not finite, a radius of 0 or less, a length of 1e-7 or
+    /// less or not finite) is answered by `sphere_trace` itself. Kept in step with
+    /// [`World::sphere_trace_inlined`] and [`ball_half_space_sweep`]: a change to either
+    /// must be made here too (`sphere_traces_in_a_batch_answer_as_each_alone` compares
+    /// them).
     fn plane_sphere_traces(
         &self,
         plane: &HalfSpace,
@@ -1650,6 +1654,56 @@ mod tests {
     use parry3d::shape::Capsule;
 
     #[test]
+    fn a_tilted_plane_answers_a_batch_as_each_trace_alone() {
+        // A flat world's batch of sphere traces is computed in columns; on a ground whose
+        // normal has all three components, every term of the closed form counts (on a
+        // level ground two of them are products with 0). Each answer is compared bit for
+        // bit with `sphere_trace`'s.
+        let rotation = Quat::from_rotation_x(0.3) * Quat::from_rotation_y(-0.2);
+        let shapes = vec![(
+            Pose::from_parts(Vec3::new(3.0, -2.0, 1.5), rotation),
+            SharedShape::halfspace(Vec3::Z),
+            None,
+        )];
+        let w = World::with_shapes(WorldDesc { shapes: Vec::new() }, shapes);
+        assert_eq!(w.half_spaces.len(), 1);
+        assert!(!w.bounded);
+        let mut seed = 5u32;
+        let mut r = || {
+            seed = seed.wrapping_mul(1_664_525).wrapping_add(1_013_904_223);
+            (seed >> 8) as f32 / (1u32 << 24) as f32 * 2.0 - 1.0
+        };
+        let queries: Vec<SphereQuery> = (0..400)
+            .map(|_| {
+                let start = Vec3::new(r() * 200.0, r() * 200.0, r() * 80.0 + 20.0);
+                SphereQuery {
+                    start,
+                    end: start + Vec3::new(r() * 60.0, r() * 60.0, r() * 100.0 - 50.0),
+                    radius: 1.0 + (r() + 1.0) * 5.0,
+                }
+            })
+            .collect();
+        let bits = |h: Option<TraceHit>| {
+            h.map(|h| {
+                (
+                    h.point.to_array().map(f32::to_bits),
+                    h.normal.to_array().map(f32::to_bits),
+                    h.distance.to_bits(),
+                )
+            })
+        };
+        let mut hits = vec![None; queries.len()];
+        w.sphere_traces(&queries, &mut hits);
+        let mut touched = 0;
+        for (q, hit) in queries.iter().zip(&hits) {
+            let alone = w.sphere_trace(q.start, q.end, q.radius);
+            assert_eq!(bits(*hit), bits(alone), "{q:?}: {hit:?} vs {alone:?}");
+            touched += usize::from(hit.is_some_and(|h| h.distance > 0.0));
+        }
+        assert!(touched > 50, "{touched} hits on the way");
+    }
+
+    #[test]
     fn a_capsule_sweep_answers_the_nearest_shape_whatever_the_order() {
         // The mover's sweeps (a capsule, with skin, not stopping at penetration) test the
         // half-spaces apart from the bounded shapes found near the sweep, like the traces.
@@ -1667,8 +1721,8 @@ mod tests {
         };
         let mut hits = 0;
         for k in 0..400 {
-            // Every other sweep from high above (the capsule's box at the start far from
-            // anything) straight down onto the flush top or the ground by it.
+            // Every other sweep from high above (the capsule's box at the start clear of the
+            // box tops and the stairs, though not of the pillar) straight down.
             let (start, delta) = if k % 2 == 0 {
                 let start = Vec3::new(r() * 100.0, r() * 100.0, 110.0 + r() * 10.0);
                 (start, Vec3::new(0.0, 0.0, -140.0))

@@ -144,7 +144,7 @@ fn the_nearest_shape_answers_whatever_the_order() {
             })
         })
         .collect();
-    assert_eq!(alone.len(), 7);
+    assert_eq!(alone.len(), 8);
     let nearest = |each: &dyn Fn(&World) -> Option<strider_core::TraceHit>| {
         let mut best: Option<strider_core::TraceHit> = None;
         for hit in alone.iter().filter_map(each) {
@@ -170,15 +170,17 @@ fn the_nearest_shape_answers_whatever_the_order() {
         let start = Vec3::new(r() * 120.0, r() * 120.0, 40.0 + r() * 60.0);
         let end = start + Vec3::new(r() * 40.0, r() * 40.0, -120.0 + r() * 40.0);
         // Every fourth trace straight down onto the flush box's top or the ground by it,
-        // and every fourth from whole centimetres onto the turned stairs' flush step.
+        // and every fourth from whole centimetres onto a flush step of turned stairs, the
+        // flight listed after the ground and the one listed before it in turn.
         let (start, end) = match k % 4 {
             0 => {
                 let at = Vec3::new(r() * 40.0, r() * 40.0, 50.0);
                 (at, at - Vec3::Z * 100.0)
             }
             2 => {
+                let side = if k % 8 == 2 { 90.0 } else { -90.0 };
                 let at = Vec3::new(
-                    (90.0 + r() * 30.0).round(),
+                    (side + r() * 30.0).round(),
                     (80.0 + r() * 30.0).round(),
                     50.0,
                 );
@@ -864,10 +866,13 @@ fn field_wave() -> Wave {
 #[test]
 fn sphere_traces_in_a_batch_answer_as_each_alone() {
     // `sphere_traces` must give each query `sphere_trace`'s answer, bit for bit: a flat
-    // world answers a batch lane by lane, every other world one query at a time. Queries
-    // from above and below the ground, moving up, down and sideways, starting inside,
-    // touching, missing short of it, and off the common path (radius 0 or negative, a
-    // sphere that does not move, NaN and infinite ends and radii), in batches of 1 to 19.
+    // world answers a batch eight queries at a time, in columns, every other world one
+    // query at a time. Queries from above and below the ground, moving up, down and
+    // sideways, starting inside, touching it exactly at their end, missing short of it,
+    // and off the common path (radius 0, −0, negative or NaN; spheres that do not move or
+    // move about 1e-7 cm; NaN and infinite ends and radii; ends whose difference
+    // overflows), in batches of 1 to 19. (The tilted plane's columns are checked in
+    // `world.rs`'s own tests.)
     let bits = |h: Option<strider_core::TraceHit>| {
         h.map(|h| {
             (
@@ -880,11 +885,11 @@ fn sphere_traces_in_a_batch_answer_as_each_alone() {
     let mut next = uniform(13);
     let mut r = || next() * 2.0 - 1.0;
     let mut queries = Vec::new();
-    for k in 0..600 {
+    for k in 0..800 {
         let start = Vec3::new(r() * 300.0, r() * 300.0, r() * 60.0 + 20.0);
         let end = start + Vec3::new(r() * 80.0, r() * 80.0, r() * 120.0 - 30.0);
         let radius = 0.5 + (r() + 1.0) * 6.0;
-        queries.push(match k % 12 {
+        queries.push(match k % 16 {
             0 => SphereQuery {
                 start,
                 end: start,
@@ -930,6 +935,33 @@ fn sphere_traces_in_a_batch_answer_as_each_alone() {
                     radius: 4.0,
                 }
             }
+            // Lengths about the 1e-7 below which a sphere counts as not moving, from a start
+            // just above the origin (where steps of 1e-8 are exact enough to land there).
+            8 => {
+                let at = Vec3::new(0.0, 0.0, 0.001);
+                let length = [0.5e-7, 1e-7, 1.5e-7, 3e-7][(k / 16) % 4];
+                SphereQuery {
+                    start: at,
+                    end: at + Vec3::X * length,
+                    radius,
+                }
+            }
+            9 => SphereQuery {
+                start,
+                end,
+                radius: f32::NAN,
+            },
+            10 => SphereQuery {
+                start,
+                end,
+                radius: -0.0,
+            },
+            // Finite ends whose difference overflows.
+            11 => SphereQuery {
+                start: Vec3::new(-3e38, 0.0, 10.0),
+                end: Vec3::new(3e38, 0.0, 10.0),
+                radius,
+            },
             _ => SphereQuery { start, end, radius },
         });
     }

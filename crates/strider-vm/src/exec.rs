@@ -34,8 +34,8 @@ use crate::program::{Instr, Program};
 use crate::slots::{ScalarLens, Slots};
 use glam::{Affine3A, Quat, Vec3, Vec3A};
 use strider_core::{
-    BoneIndex, DebugColor, DebugDraw, DebugPrimitive, Pose, TraceHit, Transform, WorldQuery,
-    all_finite, load_vec3,
+    BoneIndex, DebugColor, DebugDraw, DebugPrimitive, Pose, SphereQuery, TraceHit, Transform,
+    WorldQuery, all_finite, load_vec3,
 };
 use strider_nodes::kernels as k;
 use strider_nodes::kernels::locomotion as loco;
@@ -207,6 +207,17 @@ pub(crate) fn read_hit(hit: &Option<TraceHit>) -> Option<(Vec3A, Vec3A, f32)> {
     let h = hit.as_ref()?;
     let (point, normal) = (load_vec3(&h.point), load_vec3(&h.normal));
     all_finite([point, normal, Vec3A::splat(h.distance)]).then_some((point, normal, h.distance))
+}
+
+/// A trace node's question to the world: its ends (rig space) taken to world space by
+/// `to_world`, and a sphere's radius (cm) made 0 where it is below 0 or NaN.
+#[inline(always)]
+pub(crate) fn trace_query(to_world: &Affine3A, start: Vec3, end: Vec3, radius: f32) -> SphereQuery {
+    SphereQuery {
+        start: to_world.transform_point3(start),
+        end: to_world.transform_point3(end),
+        radius: radius.max(0.0),
+    }
 }
 
 /// A trace node's outputs (hit, point, normal, distance; rig space) from the world's answer
@@ -689,16 +700,14 @@ macro_rules! execute {
             Op::WorldTransform => $each!(t!(0) = $cx.to_world),
             Op::LineTrace | Op::SphereTrace => $each!({
                 let (start, end) = (v!(0), v!(1));
-                let (ws, we) = (
-                    $cx.to_world_matrix.transform_point3(start),
-                    $cx.to_world_matrix.transform_point3(end),
-                );
                 // Each answer's vectors read in place, as the world stored them (see
                 // `load_vec3` and `read_hit`).
                 let (hit, outs) = if op == Op::LineTrace {
-                    (read_hit(&$cx.world.line_trace(ws, we)), 2)
+                    let q = trace_query(&$cx.to_world_matrix, start, end, 0.0);
+                    (read_hit(&$cx.world.line_trace(q.start, q.end)), 2)
                 } else {
-                    (read_hit(&$cx.world.sphere_trace(ws, we, f!(2).max(0.0))), 3)
+                    let q = trace_query(&$cx.to_world_matrix, start, end, f!(2));
+                    (read_hit(&$cx.world.sphere_trace(q.start, q.end, q.radius)), 3)
                 };
                 let (hit, point, normal, distance) =
                     trace_outputs(hit, start, end, &$cx.from_world_matrix);

@@ -16,7 +16,7 @@
 #![allow(unsafe_code)]
 
 use crate::exec::{
-    BATCH, Bases, Ctx, array_get, array_set, bone_transform, read_hit, trace_outputs,
+    BATCH, Bases, Ctx, array_get, array_set, bone_transform, read_hit, trace_outputs, trace_query,
 };
 use crate::lanes::block;
 use glam::{Quat, Vec3};
@@ -167,7 +167,8 @@ pub(crate) unsafe fn run_per_member(
 }
 
 /// `SphereTrace` (operands: start, end, radius; hit, point, normal, distance) for a whole
-/// batch with one question to the world ([`WorldQuery::sphere_traces`]), which answers each
+/// batch with one question to the world
+/// ([`WorldQuery::sphere_traces`](strider_core::WorldQuery::sphere_traces)), which answers each
 /// member's trace as its own `sphere_trace` would: every member's slots end as the
 /// handler leaves them. Returns false, doing nothing, when the members do not all trace
 /// the same world (each then asks its own, through the handler). Inlined into the batch
@@ -184,11 +185,12 @@ pub(crate) unsafe fn sphere_traces(o: &[u32], lane0: Bases, members: &[Ctx<'_>])
         };
     }
     // One question to the world for the batch (its members share it in a crowd's
-    // batch; else each asks its own, as the handler does).
+    // batch; else each asks its own, as the handler does). The same world is the same
+    // object and type: two worlds of no size may share an address.
     let Some(world) = members.first().map(|cx| cx.world) else {
         return true;
     };
-    if !members.iter().all(|cx| std::ptr::addr_eq(cx.world, world)) {
+    if !members.iter().all(|cx| std::ptr::eq(cx.world, world)) {
         return false;
     }
     let (start, end, radius) = (lane!(vec3s, 0), lane!(vec3s, 1), lane!(floats, 2));
@@ -196,11 +198,7 @@ pub(crate) unsafe fn sphere_traces(o: &[u32], lane0: Bases, members: &[Ctx<'_>])
     for (m, (cx, query)) in members.iter().zip(&mut queries).enumerate() {
         // SAFETY: slots of the program's lanes (the caller's contract), `m < BATCH`.
         let (s, e, r) = unsafe { (*start.add(m), *end.add(m), *radius.add(m)) };
-        *query = SphereQuery {
-            start: cx.to_world_matrix.transform_point3(s),
-            end: cx.to_world_matrix.transform_point3(e),
-            radius: r.max(0.0),
-        };
+        *query = trace_query(&cx.to_world_matrix, s, e, r);
     }
     let n = members.len();
     let mut answers = [None; BATCH];
@@ -212,8 +210,9 @@ pub(crate) unsafe fn sphere_traces(o: &[u32], lane0: Bases, members: &[Ctx<'_>])
         lane!(floats, 6),
     );
     for (m, (cx, answer)) in members.iter().zip(&answers).enumerate() {
-        // SAFETY: as above. A member's outputs may share its inputs' slots, so its ends are
-        // read again before its outputs are written (other members' items lie apart).
+        // SAFETY: as above. The ends are read again rather than kept from the first loop
+        // (which measured slower); a member's outputs, which may share its inputs' slots,
+        // are written after, and other members' items lie apart.
         let (s, e) = unsafe { (*start.add(m), *end.add(m)) };
         let outs = trace_outputs(read_hit(answer), s, e, &cx.from_world_matrix);
         // SAFETY: as above.
