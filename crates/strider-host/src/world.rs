@@ -1653,6 +1653,14 @@ mod tests {
     use super::*;
     use parry3d::shape::Capsule;
 
+    /// Reproducible numbers in [−1, 1) from `seed` (a linear congruential generator).
+    fn signed(mut seed: u32) -> impl FnMut() -> f32 {
+        move || {
+            seed = seed.wrapping_mul(1_664_525).wrapping_add(1_013_904_223);
+            (seed >> 8) as f32 / (1u32 << 24) as f32 * 2.0 - 1.0
+        }
+    }
+
     #[test]
     fn a_tilted_plane_answers_a_batch_as_each_trace_alone() {
         // A flat world's batch of sphere traces is computed in columns; on a ground whose
@@ -1668,11 +1676,7 @@ mod tests {
         let w = World::with_shapes(WorldDesc { shapes: Vec::new() }, shapes);
         assert_eq!(w.half_spaces.len(), 1);
         assert!(!w.bounded);
-        let mut seed = 5u32;
-        let mut r = || {
-            seed = seed.wrapping_mul(1_664_525).wrapping_add(1_013_904_223);
-            (seed >> 8) as f32 / (1u32 << 24) as f32 * 2.0 - 1.0
-        };
+        let mut r = signed(5);
         let queries: Vec<SphereQuery> = (0..400)
             .map(|_| {
                 let start = Vec3::new(r() * 200.0, r() * 200.0, r() * 80.0 + 20.0);
@@ -1714,11 +1718,7 @@ mod tests {
             .unwrap_or_else(|e| panic!("{e}"));
         let capsule = Capsule::new_z(30.0, 20.0);
         let bits = |h: SweepHit| (h.distance.to_bits(), h.normal.to_array().map(f32::to_bits));
-        let mut seed = 11u32;
-        let mut r = || {
-            seed = seed.wrapping_mul(1_664_525).wrapping_add(1_013_904_223);
-            (seed >> 8) as f32 / (1u32 << 24) as f32 * 2.0 - 1.0
-        };
+        let mut r = signed(11);
         let mut hits = 0;
         for k in 0..400 {
             // Every other sweep from high above (the capsule's box at the start clear of the

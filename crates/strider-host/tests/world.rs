@@ -154,15 +154,7 @@ fn the_nearest_shape_answers_whatever_the_order() {
         }
         best
     };
-    let same = |a: Option<strider_core::TraceHit>, b: Option<strider_core::TraceHit>| match (a, b) {
-        (Some(a), Some(b)) => {
-            a.distance.to_bits() == b.distance.to_bits()
-                && a.point.to_array().map(f32::to_bits) == b.point.to_array().map(f32::to_bits)
-                && a.normal.to_array().map(f32::to_bits) == b.normal.to_array().map(f32::to_bits)
-        }
-        (None, None) => true,
-        _ => false,
-    };
+    let same = |a, b| hit_bits(a) == hit_bits(b);
     let mut next = uniform(7);
     let (mut hits, mut ground_hits, mut overlaps) = (0, 0, 0);
     for k in 0..3000 {
@@ -575,6 +567,17 @@ fn line_traces_onto_the_ground_agree_with_parry3d() {
 }
 
 /// A small deterministic generator of floats in [0, 1) for the random sweeps.
+/// A trace's answer as bits (point, normal, distance), to compare answers exactly.
+fn hit_bits(hit: Option<strider_core::TraceHit>) -> Option<([u32; 3], [u32; 3], u32)> {
+    hit.map(|h| {
+        (
+            h.point.to_array().map(f32::to_bits),
+            h.normal.to_array().map(f32::to_bits),
+            h.distance.to_bits(),
+        )
+    })
+}
+
 fn uniform(seed: u32) -> impl FnMut() -> f32 {
     let mut seed = seed;
     move || {
@@ -873,15 +876,6 @@ fn sphere_traces_in_a_batch_answer_as_each_alone() {
     // move about 1e-7 cm; NaN and infinite ends and radii; ends whose difference
     // overflows), in batches of 1 to 19. (The tilted plane's columns are checked in
     // `world.rs`'s own tests.)
-    let bits = |h: Option<strider_core::TraceHit>| {
-        h.map(|h| {
-            (
-                h.point.to_array().map(f32::to_bits),
-                h.normal.to_array().map(f32::to_bits),
-                h.distance.to_bits(),
-            )
-        })
-    };
     let mut next = uniform(13);
     let mut r = || next() * 2.0 - 1.0;
     let mut queries = Vec::new();
@@ -984,8 +978,8 @@ fn sphere_traces_in_a_batch_answer_as_each_alone() {
             for (q, hit) in batch.iter().zip(&hits) {
                 let alone = w.sphere_trace(q.start, q.end, q.radius);
                 assert_eq!(
-                    bits(*hit),
-                    bits(alone),
+                    hit_bits(*hit),
+                    hit_bits(alone),
                     "{text}: {q:?}: {hit:?} vs {alone:?}"
                 );
                 hits_seen += usize::from(hit.is_some());

@@ -178,12 +178,6 @@ pub(crate) unsafe fn run_per_member(
 /// As [`run_per_member`], with `o` a `SphereTrace`'s operands.
 #[inline(always)]
 pub(crate) unsafe fn sphere_traces(o: &[u32], lane0: Bases, members: &[Ctx<'_>]) -> bool {
-    // Member 0's item of slot operand `$k` of scalar array `$a`.
-    macro_rules! lane {
-        ($a:ident, $k:expr) => {
-            item0(lane0.$a, o[$k])
-        };
-    }
     // One question to the world for the batch (its members share it in a crowd's
     // batch; else each asks its own, as the handler does). The same world is the same
     // object and type: two worlds of no size may share an address.
@@ -193,7 +187,11 @@ pub(crate) unsafe fn sphere_traces(o: &[u32], lane0: Bases, members: &[Ctx<'_>])
     if !members.iter().all(|cx| std::ptr::eq(cx.world, world)) {
         return false;
     }
-    let (start, end, radius) = (lane!(vec3s, 0), lane!(vec3s, 1), lane!(floats, 2));
+    let (start, end, radius) = (
+        item0(lane0.vec3s, o[0]),
+        item0(lane0.vec3s, o[1]),
+        item0(lane0.floats, o[2]),
+    );
     let mut queries = [SphereQuery::default(); BATCH];
     for (m, (cx, query)) in members.iter().zip(&mut queries).enumerate() {
         // SAFETY: slots of the program's lanes (the caller's contract), `m < BATCH`.
@@ -204,10 +202,10 @@ pub(crate) unsafe fn sphere_traces(o: &[u32], lane0: Bases, members: &[Ctx<'_>])
     let mut answers = [None; BATCH];
     world.sphere_traces(&queries[..n], &mut answers[..n]);
     let (hit, point, normal, distance) = (
-        lane!(bools, 3),
-        lane!(vec3s, 4),
-        lane!(vec3s, 5),
-        lane!(floats, 6),
+        item0(lane0.bools, o[3]),
+        item0(lane0.vec3s, o[4]),
+        item0(lane0.vec3s, o[5]),
+        item0(lane0.floats, o[6]),
     );
     for (m, (cx, answer)) in members.iter().zip(&answers).enumerate() {
         // SAFETY: as above. The ends are read again rather than kept from the first loop
