@@ -56,6 +56,8 @@ pub use strider_nodes as nodes;
 pub use strider_vm as vm;
 
 pub use strider_compiler::compile_file;
-pub use strider_core::{EmptyWorld, Skeleton, SphereQuery, TraceHit, Transform, WorldQuery};
+pub use strider_core::{
+    EmptyWorld, LineQuery, Skeleton, SphereQuery, TraceHit, Transform, WorldQuery,
+};
 pub use strider_graph::{Diagnostic, load_skeleton};
 pub use strider_vm::{FrameInput, InputPose, Instance, Program};

@@ -18,6 +18,16 @@ pub struct TraceHit {
     pub distance: f32,
 }
 
+/// One line trace of a batch ([`WorldQuery::line_traces`]): the segment from `start` to
+/// `end` (world space, centimetres).
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct LineQuery {
+    /// Where the segment starts.
+    pub start: Vec3,
+    /// Where the segment ends.
+    pub end: Vec3,
+}
+
 /// One sphere trace of a batch ([`WorldQuery::sphere_traces`]): a sphere of `radius`
 /// centimetres swept from `start` to `end` (world space, centimetres).
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
@@ -39,6 +49,17 @@ pub trait WorldQuery {
     /// First hit of a sphere of `radius` swept from `start` to `end`, or `None`.
     /// `distance` is how far the sphere's centre travelled.
     fn sphere_trace(&self, start: Vec3, end: Vec3, radius: f32) -> Option<TraceHit>;
+
+    /// Several line traces at once (a batch of characters tracing together): `hits[k]`
+    /// becomes the answer to `queries[k]`, which must be [`WorldQuery::line_trace`]'s
+    /// answer to it, bit for bit; entries of the longer slice past the shorter are left as
+    /// they are. The default asks [`WorldQuery::line_trace`] one query at a time; a world
+    /// can answer a batch faster.
+    fn line_traces(&self, queries: &[LineQuery], hits: &mut [Option<TraceHit>]) {
+        for (query, hit) in queries.iter().zip(hits) {
+            *hit = self.line_trace(query.start, query.end);
+        }
+    }
 
     /// Several sphere traces at once (a batch of characters tracing together): `hits[k]`
     /// becomes the answer to `queries[k]`, which must be [`WorldQuery::sphere_trace`]'s

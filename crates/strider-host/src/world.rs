@@ -48,7 +48,7 @@ use parry3d::query::{Ray, ShapeCastOptions, cast_shapes};
 use parry3d::shape::{Ball, Shape, SharedShape, TriMesh};
 use serde::Deserialize;
 use serde::de::{self, Deserializer, SeqAccess, Visitor};
-use strider_core::{SphereQuery, TraceHit, WorldQuery, all_finite, load_vec3};
+use strider_core::{LineQuery, SphereQuery, TraceHit, WorldQuery, all_finite, load_vec3};
 
 use crate::sweep::{
     BallSweep, ball_box_sweep, ball_half_space_sweep, ball_hull_sweep, ball_reach,
@@ -1409,6 +1409,45 @@ fn ray_half_space(ray: &Ray, length: f32, point: Vec3, normal: Vec3) -> Option<(
     (t >= 0.0 && t <= length).then_some((t, normal))
 }
 
+/// A line trace's answer from the nearest hit of its segment (from `start`, along the unit
+/// `dir`): the distance travelled (below 0 counts as 0) and the surface's normal (zero
+/// for a segment starting inside), made unit ([`unit_normal`]), then as [`facing_hit`].
+#[inline(always)]
+fn line_hit(start: Vec3, dir: Vec3, distance: f32, normal: Vec3) -> TraceHit {
+    facing_hit(start, dir, distance, unit_normal(normal))
+}
+
+/// A hit's normal made unit: zero where it is zero or not finite.
+#[inline(always)]
+fn unit_normal(normal: Vec3) -> Vec3 {
+    if normal.is_finite() {
+        normal.normalize_or_zero()
+    } else {
+        Vec3::ZERO
+    }
+}
+
+/// [`line_hit`] with the normal already made unit (`unit`: zero where the shape gave none
+/// or it was not finite; see [`unit_normal`]): the normal is made to face the segment, `−dir` where there is
+/// none or the segment starts inside (at distance 0), turned over where it was hit from
+/// behind. [`World::plane_line_traces`] makes its plane's normal unit once for a batch.
+#[inline(always)]
+fn facing_hit(start: Vec3, dir: Vec3, distance: f32, unit: Vec3) -> TraceHit {
+    let distance = distance.max(0.0);
+    let mut normal = if distance > 0.0 { unit } else { Vec3::ZERO };
+    if normal == Vec3::ZERO {
+        normal = -dir;
+    } else if normal.dot(dir) > 0.0 {
+        // A surface (the heightfield) hit from behind: the normal faces the ray.
+        normal = -normal;
+    }
+    TraceHit {
+        point: start + dir * distance,
+        normal,
+        distance,
+    }
+}
+
 /// The options every RON file of the host is read with (`Some(...)` may be left out).
 pub(crate) fn ron_options() -> ron::Options {
     ron::Options::default().with_default_extension(ron::extensions::Extensions::IMPLICIT_SOME)
@@ -1446,6 +1485,66 @@ impl WorldQuery for World {
     /// a segment starting inside one hits at distance 0 with the normal `−direction`. A
     /// zero-length or non-finite segment misses.
     fn line_trace(&self, start: Vec3, end: Vec3) -> Option<TraceHit> {
+        self.line_trace_inlined(start, end)
+    }
+
+    /// First hit of a sphere of `radius` centimetres swept from `start` to `end` (world
+    /// space). `distance` is how far the centre travelled, `point` the touched surface
+    /// point. A sphere overlapping geometry at the start hits at distance 0. A radius of 0
+    /// is a line trace; a negative or non-finite radius, or non-finite ends, miss. A
+    /// zero-length sweep reports an overlap at the start, if any.
+    fn sphere_trace(&self, start: Vec3, end: Vec3, radius: f32) -> Option<TraceHit> {
+        self.sphere_trace_inlined(start, end, radius)
+    }
+
+    /// Each query as [`World::line_trace`] answers it, bit for bit. In a world of one
+    /// half-space and nothing else (flat ground), eight queries at a time, one array per
+    /// coordinate, as [`WorldQuery::sphere_traces`]; otherwise one at a time.
+    fn line_traces(&self, queries: &[LineQuery], hits: &mut [Option<TraceHit>]) {
+        match (self.bounded, &self.half_spaces[..]) {
+            (false, [plane]) => {
+                for (queries, hits) in queries.chunks(COLUMN).zip(hits.chunks_mut(COLUMN)) {
+                    self.plane_line_traces(plane, queries, hits);
+                }
+            }
+            _ => {
+                for (query, hit) in queries.iter().zip(hits) {
+                    *hit = self.line_trace_inlined(query.start, query.end);
+                }
+            }
+        }
+    }
+
+    /// Each query as [`World::sphere_trace`] answers it, bit for bit. In a world of one
+    /// half-space and nothing else (flat ground), eight queries at a time, one array per
+    /// coordinate, so that the compiler can compute several queries per instruction;
+    /// otherwise one at a time.
+    fn sphere_traces(&self, queries: &[SphereQuery], hits: &mut [Option<TraceHit>]) {
+        match (self.bounded, &self.half_spaces[..]) {
+            (false, [plane]) => {
+                for (queries, hits) in queries.chunks(COLUMN).zip(hits.chunks_mut(COLUMN)) {
+                    self.plane_sphere_traces(plane, queries, hits);
+                }
+            }
+            _ => {
+                for (query, hit) in queries.iter().zip(hits) {
+                    *hit = self.sphere_trace_inlined(query.start, query.end, query.radius);
+                }
+            }
+        }
+    }
+}
+
+/// How many traces a flat world answers side by side ([`World::line_traces`],
+/// [`World::sphere_traces`]).
+const COLUMN: usize = 8;
+
+impl World {
+    /// [`WorldQuery::line_trace`], inlined where it is called: once for that method and
+    /// once in the loop of [`WorldQuery::line_traces`]. [`World::plane_line_traces`]
+    /// computes the same for a flat world in columns and must be kept in step with it.
+    #[inline(always)]
+    fn line_trace_inlined(&self, start: Vec3, end: Vec3) -> Option<TraceHit> {
         // Read as the caller stored them (see `load_vec3`).
         let (start, end) = (Vec3::from(load_vec3(&start)), Vec3::from(load_vec3(&end)));
         let delta = end - start;
@@ -1469,58 +1568,9 @@ impl WorldQuery for World {
             self.ray_bounded(&ray, end, length, &mut best);
         }
         let (distance, normal, _) = best?;
-        let distance = distance.max(0.0);
-        let mut normal = if distance > 0.0 && normal.is_finite() {
-            normal.normalize_or_zero()
-        } else {
-            Vec3::ZERO
-        };
-        if normal == Vec3::ZERO {
-            normal = -dir;
-        } else if normal.dot(dir) > 0.0 {
-            // A surface (the heightfield) hit from behind: the normal faces the ray.
-            normal = -normal;
-        }
-        Some(TraceHit {
-            point: start + dir * distance,
-            normal,
-            distance,
-        })
+        Some(line_hit(start, dir, distance, normal))
     }
 
-    /// First hit of a sphere of `radius` centimetres swept from `start` to `end` (world
-    /// space). `distance` is how far the centre travelled, `point` the touched surface
-    /// point. A sphere overlapping geometry at the start hits at distance 0. A radius of 0
-    /// is a line trace; a negative or non-finite radius, or non-finite ends, miss. A
-    /// zero-length sweep reports an overlap at the start, if any.
-    fn sphere_trace(&self, start: Vec3, end: Vec3, radius: f32) -> Option<TraceHit> {
-        self.sphere_trace_inlined(start, end, radius)
-    }
-
-    /// Each query as [`World::sphere_trace`] answers it, bit for bit. In a world of one
-    /// half-space and nothing else (flat ground), eight queries at a time, one array per
-    /// coordinate, so that the compiler can compute several queries per instruction;
-    /// otherwise one at a time.
-    fn sphere_traces(&self, queries: &[SphereQuery], hits: &mut [Option<TraceHit>]) {
-        match (self.bounded, &self.half_spaces[..]) {
-            (false, [plane]) => {
-                for (queries, hits) in queries.chunks(COLUMN).zip(hits.chunks_mut(COLUMN)) {
-                    self.plane_sphere_traces(plane, queries, hits);
-                }
-            }
-            _ => {
-                for (query, hit) in queries.iter().zip(hits) {
-                    *hit = self.sphere_trace_inlined(query.start, query.end, query.radius);
-                }
-            }
-        }
-    }
-}
-
-/// How many sphere traces a flat world answers side by side ([`World::sphere_traces`]).
-const COLUMN: usize = 8;
-
-impl World {
     /// [`WorldQuery::sphere_trace`], inlined where it is called: once for that method and
     /// once in the loop of [`WorldQuery::sphere_traces`]. [`World::plane_sphere_traces`]
     /// computes the same for a flat world in columns and must be kept in step with it.
@@ -1564,6 +1614,71 @@ impl World {
             normal: hit.normal,
             distance: hit.distance,
         })
+    }
+
+    /// Up to [`COLUMN`] line traces against the world's only collider, the half-space
+    /// `plane`: what [`WorldQuery::line_trace`] computes for each, with the same operations
+    /// in the same order (so bit for bit the same answers), laid out one array per
+    /// coordinate so that the compiler computes several queries per instruction. A query
+    /// off the common path (not finite, a length of 1e-7 or less or not finite) is
+    /// answered by `line_trace` itself. Kept in step with [`World::line_trace_inlined`]
+    /// and [`ray_half_space`]: a change to either must be made here too
+    /// (`line_traces_in_a_batch_answer_as_each_alone` compares them).
+    fn plane_line_traces(
+        &self,
+        plane: &HalfSpace,
+        queries: &[LineQuery],
+        hits: &mut [Option<TraceHit>],
+    ) {
+        let n = queries.len().min(hits.len()).min(COLUMN);
+        // Start and delta (end − start), by coordinate; unused lanes stay zero.
+        let (mut start, mut delta) = ([[0.0; COLUMN]; 3], [[0.0; COLUMN]; 3]);
+        for k in 0..n {
+            let LineQuery { start: s, end: e } = queries[k];
+            (start[0][k], start[1][k], start[2][k]) = (s.x, s.y, s.z);
+            (delta[0][k], delta[1][k], delta[2][k]) = (e.x - s.x, e.y - s.y, e.z - s.z);
+        }
+        let (p, nrm) = (plane.point.to_array(), plane.normal.to_array());
+        let [sx, sy, sz] = start;
+        let [dx, dy, dz] = delta;
+        let mut dir = [[0.0; COLUMN]; 3];
+        let mut distance = [0.0; COLUMN];
+        let (mut hit, mut inside, mut common) = ([false; COLUMN], [false; COLUMN], [false; COLUMN]);
+        for k in 0..COLUMN {
+            // `Vec3::length`: (x² + y²) + z², then the square root.
+            let length = ((dx[k] * dx[k] + dy[k] * dy[k]) + dz[k] * dz[k]).sqrt();
+            let (ux, uy, uz) = (dx[k] / length, dy[k] / length, dz[k] / length);
+            (dir[0][k], dir[1][k], dir[2][k]) = (ux, uy, uz);
+            // `ray_half_space`: the start's height above the plane, below which the ray
+            // starts inside; else where it crosses.
+            let height =
+                (nrm[0] * (sx[k] - p[0]) + nrm[1] * (sy[k] - p[1])) + nrm[2] * (sz[k] - p[2]);
+            let t = height / -((nrm[0] * ux + nrm[1] * uy) + nrm[2] * uz);
+            inside[k] = height < 0.0;
+            // Without short-circuits, so that the loop has no branches to keep it from
+            // computing several lanes at once (a NaN `t` misses, as there).
+            hit[k] = inside[k] | ((t >= 0.0) & (t <= length));
+            distance[k] = if inside[k] { 0.0 } else { t };
+            // `line_trace`'s own tests: a finite start and a finite length above 1e-7 (so
+            // a finite end).
+            common[k] = all_finite([sx[k], sy[k], sz[k], length]) & (length > 1e-7);
+        }
+        // `line_hit`'s unit normal, the same for every hit but those starting inside (whose
+        // normal is zero).
+        let unit = unit_normal(plane.normal);
+        for k in 0..n {
+            hits[k] = if !common[k] {
+                let q = &queries[k];
+                self.line_trace(q.start, q.end)
+            } else if hit[k] {
+                let normal = if inside[k] { Vec3::ZERO } else { unit };
+                let start = Vec3::new(sx[k], sy[k], sz[k]);
+                let dir = Vec3::new(dir[0][k], dir[1][k], dir[2][k]);
+                Some(facing_hit(start, dir, distance[k], normal))
+            } else {
+                None
+            };
+        }
     }
 
     /// Up to [`COLUMN`] sphere traces against the world's only collider, the half-space
@@ -1663,10 +1778,10 @@ mod tests {
 
     #[test]
     fn a_tilted_plane_answers_a_batch_as_each_trace_alone() {
-        // A flat world's batch of sphere traces is computed in columns; on a ground whose
-        // normal has all three components, every term of the closed form counts (on a
-        // level ground two of them are products with 0). Each answer is compared bit for
-        // bit with `sphere_trace`'s.
+        // A flat world's batch of sphere or line traces is computed in columns; on a ground
+        // whose normal has all three components, every term of the closed form counts (on
+        // a level ground two of them are products with 0). Each answer is compared bit for
+        // bit with `sphere_trace`'s or `line_trace`'s.
         let rotation = Quat::from_rotation_x(0.3) * Quat::from_rotation_y(-0.2);
         let shapes = vec![(
             Pose::from_parts(Vec3::new(3.0, -2.0, 1.5), rotation),
@@ -1705,6 +1820,22 @@ mod tests {
             touched += usize::from(hit.is_some_and(|h| h.distance > 0.0));
         }
         assert!(touched > 50, "{touched} hits on the way");
+        // The same segments as line traces, in columns too.
+        let lines: Vec<LineQuery> = queries
+            .iter()
+            .map(|q| LineQuery {
+                start: q.start,
+                end: q.end,
+            })
+            .collect();
+        w.line_traces(&lines, &mut hits);
+        let mut crossed = 0;
+        for (q, hit) in lines.iter().zip(&hits) {
+            let alone = w.line_trace(q.start, q.end);
+            assert_eq!(bits(*hit), bits(alone), "{q:?}: {hit:?} vs {alone:?}");
+            crossed += usize::from(hit.is_some_and(|h| h.distance > 0.0));
+        }
+        assert!(crossed > 50, "{crossed} crossings on the way");
     }
 
     #[test]

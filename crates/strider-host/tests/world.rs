@@ -1,7 +1,7 @@
 //! Traces against hand-computed values.
 
 use glam::Vec3;
-use strider_core::{SphereQuery, WorldQuery};
+use strider_core::{LineQuery, SphereQuery, TraceHit, WorldQuery};
 use strider_host::world::{ShapeDesc, Wave, World, WorldDesc, WorldError, wave_height};
 
 fn near(a: f32, b: f32, tol: f32) -> bool {
@@ -876,6 +876,63 @@ fn sphere_traces_in_a_batch_answer_as_each_alone() {
     // move about 1e-7 cm; NaN and infinite ends and radii; ends whose difference
     // overflows), in batches of 1 to 19. (The tilted plane's columns are checked in
     // `world.rs`'s own tests.)
+    let queries = trace_cases();
+    in_batches(
+        &queries,
+        |w, batch, hits| w.sphere_traces(batch, hits),
+        |w, q| w.sphere_trace(q.start, q.end, q.radius),
+    );
+}
+
+#[test]
+fn line_traces_in_a_batch_answer_as_each_alone() {
+    // `line_traces` must give each query `line_trace`'s answer, bit for bit, as
+    // `sphere_traces` above: the same segments, and segments from whole centimetres
+    // ending exactly on the ground (distance equal to the length), starting on it moving
+    // down (distance 0) or up and sideways (a crossing at −0), starting below it, and
+    // lying in it.
+    let mut queries: Vec<LineQuery> = trace_cases()
+        .iter()
+        .map(|q| LineQuery {
+            start: q.start,
+            end: q.end,
+        })
+        .collect();
+    let mut next = uniform(29);
+    let mut r = || (next() * 2.0 - 1.0) * 100.0;
+    for k in 0..200 {
+        let at = Vec3::new(r(), r(), r()).round();
+        let (start, end) = match k % 5 {
+            0 => (
+                Vec3::new(at.x, at.y, at.z.abs() + 1.0),
+                Vec3::new(at.x, at.y, 0.0),
+            ),
+            1 => (
+                Vec3::new(at.x, at.y, 0.0),
+                Vec3::new(at.x + 3.0, at.y, -at.z.abs() - 1.0),
+            ),
+            2 => (
+                Vec3::new(at.x, at.y, 0.0),
+                Vec3::new(at.x - 2.0, at.y, at.z.abs() + 1.0),
+            ),
+            3 => (Vec3::new(at.x, at.y, -at.z.abs() - 1.0), at),
+            _ => (Vec3::new(at.x, at.y, 0.0), Vec3::new(at.y, at.x + 1.0, 0.0)),
+        };
+        queries.push(LineQuery { start, end });
+    }
+    in_batches(
+        &queries,
+        |w, batch, hits| w.line_traces(batch, hits),
+        |w, q| w.line_trace(q.start, q.end),
+    );
+}
+
+/// The queries of the batch trace tests: starts above and below a ground at 0 or −12.5,
+/// moving up, down and sideways, starting inside, touching it exactly at their end,
+/// missing short of it, and off the common path (radius 0, −0, negative or NaN; spheres
+/// that do not move or move about 1e-7 cm; NaN and infinite ends and radii; ends whose
+/// difference overflows).
+fn trace_cases() -> Vec<SphereQuery> {
     let mut next = uniform(13);
     let mut r = || next() * 2.0 - 1.0;
     let mut queries = Vec::new();
@@ -959,6 +1016,17 @@ fn sphere_traces_in_a_batch_answer_as_each_alone() {
             _ => SphereQuery { start, end, radius },
         });
     }
+    queries
+}
+
+/// Asks each world of the batch tests (flat grounds, answered in columns, and a ground
+/// with a box, one query at a time) `queries` in batches of 1 to 19 through `batch`, and
+/// checks every answer bit for bit against `alone`'s; at least 150 of them must hit.
+fn in_batches<Q: std::fmt::Debug>(
+    queries: &[Q],
+    batch: impl Fn(&World, &[Q], &mut [Option<TraceHit>]),
+    alone: impl Fn(&World, &Q) -> Option<TraceHit>,
+) {
     let worlds = [
         "(shapes: [Ground(height: 0.0)])",
         "(shapes: [Ground(height: -12.5)])",
@@ -972,11 +1040,11 @@ fn sphere_traces_in_a_batch_answer_as_each_alone() {
             if at >= queries.len() {
                 break;
             }
-            let batch = &queries[at..(at + size).min(queries.len())];
-            let mut hits = vec![None; batch.len()];
-            w.sphere_traces(batch, &mut hits);
-            for (q, hit) in batch.iter().zip(&hits) {
-                let alone = w.sphere_trace(q.start, q.end, q.radius);
+            let part = &queries[at..(at + size).min(queries.len())];
+            let mut hits = vec![None; part.len()];
+            batch(&w, part, &mut hits);
+            for (q, hit) in part.iter().zip(&hits) {
+                let alone = alone(&w, q);
                 assert_eq!(
                     hit_bits(*hit),
                     hit_bits(alone),

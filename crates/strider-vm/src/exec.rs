@@ -34,8 +34,8 @@ use crate::program::{Instr, Program};
 use crate::slots::{ScalarLens, Slots};
 use glam::{Affine3A, Quat, Vec3, Vec3A};
 use strider_core::{
-    BoneIndex, DebugColor, DebugDraw, DebugPrimitive, Pose, SphereQuery, TraceHit, Transform,
-    WorldQuery, all_finite, load_vec3,
+    BoneIndex, DebugColor, DebugDraw, DebugPrimitive, LineQuery, Pose, SphereQuery, TraceHit,
+    Transform, WorldQuery, all_finite, load_vec3,
 };
 use strider_nodes::kernels as k;
 use strider_nodes::kernels::locomotion as loco;
@@ -209,13 +209,23 @@ pub(crate) fn read_hit(hit: &Option<TraceHit>) -> Option<(Vec3A, Vec3A, f32)> {
     all_finite([point, normal, Vec3A::splat(h.distance)]).then_some((point, normal, h.distance))
 }
 
-/// A trace node's question to the world: its ends (rig space) taken to world space by
-/// `to_world`, and a sphere's radius (cm) made 0 where it is below 0 or NaN.
+/// A trace node's ends (rig space) taken to world space by `to_world`.
 #[inline(always)]
-pub(crate) fn trace_query(to_world: &Affine3A, start: Vec3, end: Vec3, radius: f32) -> SphereQuery {
-    SphereQuery {
+pub(crate) fn trace_ends(to_world: &Affine3A, start: Vec3, end: Vec3) -> LineQuery {
+    LineQuery {
         start: to_world.transform_point3(start),
         end: to_world.transform_point3(end),
+    }
+}
+
+/// A sphere trace node's question to the world: its ends taken to world space
+/// ([`trace_ends`]), and its radius (cm) made 0 where it is below 0 or NaN.
+#[inline(always)]
+pub(crate) fn trace_query(to_world: &Affine3A, start: Vec3, end: Vec3, radius: f32) -> SphereQuery {
+    let LineQuery { start, end } = trace_ends(to_world, start, end);
+    SphereQuery {
+        start,
+        end,
         radius: radius.max(0.0),
     }
 }
@@ -703,7 +713,7 @@ macro_rules! execute {
                 // Each answer's vectors read in place, as the world stored them (see
                 // `load_vec3` and `read_hit`).
                 let (hit, outs) = if op == Op::LineTrace {
-                    let q = trace_query(&$cx.to_world_matrix, start, end, 0.0);
+                    let q = trace_ends(&$cx.to_world_matrix, start, end);
                     (read_hit(&$cx.world.line_trace(q.start, q.end)), 2)
                 } else {
                     let q = trace_query(&$cx.to_world_matrix, start, end, f!(2));
@@ -1312,6 +1322,11 @@ fn run_group<const LANES: bool>(
                 Op::SphereTrace
                     if unsafe { crate::per_member::sphere_traces(o, lane0, members) } =>
                 {
+                    pc += 1;
+                    continue;
+                }
+                // SAFETY: as above.
+                Op::LineTrace if unsafe { crate::per_member::line_traces(o, lane0, members) } => {
                     pc += 1;
                     continue;
                 }

@@ -16,11 +16,12 @@
 #![allow(unsafe_code)]
 
 use crate::exec::{
-    BATCH, Bases, Ctx, array_get, array_set, bone_transform, read_hit, trace_outputs, trace_query,
+    BATCH, Bases, Ctx, array_get, array_set, bone_transform, read_hit, trace_ends, trace_outputs,
+    trace_query,
 };
 use crate::lanes::block;
 use glam::{Quat, Vec3};
-use strider_core::{SphereQuery, Transform};
+use strider_core::{LineQuery, SphereQuery, TraceHit, Transform, WorldQuery};
 use strider_nodes::{Elem, Op};
 
 /// Member 0's item of the block of [`BATCH`] lanes of slot `slot` of the array at `base`;
@@ -166,6 +167,23 @@ pub(crate) unsafe fn run_per_member(
     true
 }
 
+/// `LineTrace` (operands: start, end; hit, point, normal, distance) for a whole batch
+/// with one question to the world
+/// ([`WorldQuery::line_traces`](strider_core::WorldQuery::line_traces)), as
+/// [`sphere_traces`] for sphere traces.
+///
+/// # Safety
+/// As [`run_per_member`], with `o` a `LineTrace`'s operands.
+#[inline(always)]
+pub(crate) unsafe fn line_traces(o: &[u32], lane0: Bases, members: &[Ctx<'_>]) -> bool {
+    // SAFETY: the caller's contract; a line trace's outputs start at operand 2.
+    unsafe {
+        batch_traces(o, 2, lane0, members, |cx, _, s, e| {
+            trace_ends(&cx.to_world_matrix, s, e)
+        })
+    }
+}
+
 /// `SphereTrace` (operands: start, end, radius; hit, point, normal, distance) for a whole
 /// batch with one question to the world
 /// ([`WorldQuery::sphere_traces`](strider_core::WorldQuery::sphere_traces)), which answers each
@@ -178,6 +196,52 @@ pub(crate) unsafe fn run_per_member(
 /// As [`run_per_member`], with `o` a `SphereTrace`'s operands.
 #[inline(always)]
 pub(crate) unsafe fn sphere_traces(o: &[u32], lane0: Bases, members: &[Ctx<'_>]) -> bool {
+    let radius = item0(lane0.floats, o[2]);
+    // SAFETY: the caller's contract; a sphere trace's outputs start at operand 3.
+    unsafe {
+        batch_traces(o, 3, lane0, members, |cx, m, s, e| {
+            // SAFETY: a slot of the program's lanes, `m < BATCH`.
+            trace_query(&cx.to_world_matrix, s, e, *radius.add(m))
+        })
+    }
+}
+
+/// A question the world answers for a batch at once: [`LineQuery`] or [`SphereQuery`].
+trait BatchQuery: Copy + Default {
+    /// The world's answers to `queries`, into `hits`.
+    fn ask(world: &dyn WorldQuery, queries: &[Self], hits: &mut [Option<TraceHit>]);
+}
+
+impl BatchQuery for LineQuery {
+    #[inline(always)]
+    fn ask(world: &dyn WorldQuery, queries: &[Self], hits: &mut [Option<TraceHit>]) {
+        world.line_traces(queries, hits);
+    }
+}
+
+impl BatchQuery for SphereQuery {
+    #[inline(always)]
+    fn ask(world: &dyn WorldQuery, queries: &[Self], hits: &mut [Option<TraceHit>]) {
+        world.sphere_traces(queries, hits);
+    }
+}
+
+/// A trace instruction (operands: start, end, then from `outs` on: hit, point, normal,
+/// distance) for the whole batch: each member's question (`query` of its context, its
+/// index, and its ends in rig space) asked of the world at once, and each answer mapped
+/// back to the member's slots as the handler maps it. Returns false, doing nothing, when
+/// the members do not all trace the same world.
+///
+/// # Safety
+/// As [`run_per_member`], with `o` a trace's operands, its outputs from `outs` on.
+#[inline(always)]
+unsafe fn batch_traces<Q: BatchQuery>(
+    o: &[u32],
+    outs: usize,
+    lane0: Bases,
+    members: &[Ctx<'_>],
+    query: impl Fn(&Ctx<'_>, usize, Vec3, Vec3) -> Q,
+) -> bool {
     // One question to the world for the batch (its members share it in a crowd's
     // batch; else each asks its own, as the handler does). The same world is the same
     // object and type: two worlds of no size may share an address.
@@ -187,25 +251,21 @@ pub(crate) unsafe fn sphere_traces(o: &[u32], lane0: Bases, members: &[Ctx<'_>])
     if !members.iter().all(|cx| std::ptr::eq(cx.world, world)) {
         return false;
     }
-    let (start, end, radius) = (
-        item0(lane0.vec3s, o[0]),
-        item0(lane0.vec3s, o[1]),
-        item0(lane0.floats, o[2]),
-    );
-    let mut queries = [SphereQuery::default(); BATCH];
-    for (m, (cx, query)) in members.iter().zip(&mut queries).enumerate() {
+    let (start, end) = (item0(lane0.vec3s, o[0]), item0(lane0.vec3s, o[1]));
+    let mut queries = [Q::default(); BATCH];
+    for (m, (cx, q)) in members.iter().zip(&mut queries).enumerate() {
         // SAFETY: slots of the program's lanes (the caller's contract), `m < BATCH`.
-        let (s, e, r) = unsafe { (*start.add(m), *end.add(m), *radius.add(m)) };
-        *query = trace_query(&cx.to_world_matrix, s, e, r);
+        let (s, e) = unsafe { (*start.add(m), *end.add(m)) };
+        *q = query(cx, m, s, e);
     }
     let n = members.len();
     let mut answers = [None; BATCH];
-    world.sphere_traces(&queries[..n], &mut answers[..n]);
+    Q::ask(world, &queries[..n], &mut answers[..n]);
     let (hit, point, normal, distance) = (
-        item0(lane0.bools, o[3]),
-        item0(lane0.vec3s, o[4]),
-        item0(lane0.vec3s, o[5]),
-        item0(lane0.floats, o[6]),
+        item0(lane0.bools, o[outs]),
+        item0(lane0.vec3s, o[outs + 1]),
+        item0(lane0.vec3s, o[outs + 2]),
+        item0(lane0.floats, o[outs + 3]),
     );
     for (m, (cx, answer)) in members.iter().zip(&answers).enumerate() {
         // SAFETY: as above. The ends are read again rather than kept from the first loop
@@ -419,15 +479,15 @@ mod tests {
     /// A world of the plane z = 0 that counts the batches it is asked: a sphere that
     /// starts below it (by its radius) hits at the start, one that ends above it misses,
     /// and one that starts left of x = −1 gets a NaN normal (which the trace reads as a
-    /// miss).
+    /// miss). A line trace is a sphere trace of radius 0.
     #[derive(Default)]
     struct Plane {
         batches: std::cell::Cell<usize>,
     }
 
     impl strider_core::WorldQuery for Plane {
-        fn line_trace(&self, _: Vec3, _: Vec3) -> Option<strider_core::TraceHit> {
-            None
+        fn line_trace(&self, start: Vec3, end: Vec3) -> Option<strider_core::TraceHit> {
+            self.sphere_trace(start, end, 0.0)
         }
 
         fn sphere_trace(
@@ -469,13 +529,20 @@ mod tests {
                 *hit = self.sphere_trace(q.start, q.end, q.radius);
             }
         }
+
+        fn line_traces(&self, queries: &[LineQuery], hits: &mut [Option<strider_core::TraceHit>]) {
+            self.batches.set(self.batches.get() + 1);
+            for (q, hit) in queries.iter().zip(hits) {
+                *hit = self.line_trace(q.start, q.end);
+            }
+        }
     }
 
-    /// What a `SphereTrace` with operands `o` leaves in `n` members' slots, each member
-    /// placed in the world by a transform of its own, all asking `worlds[m % len]`: run for
-    /// the batch at once (`None` when the batch path leaves it to the handler) or by the
-    /// handler on each member alone.
-    fn trace(o: &[u32], n: usize, batch: bool, worlds: &[&Plane]) -> Option<Vec<Slots>> {
+    /// What trace `op` (`LineTrace` or `SphereTrace`) with operands `o` leaves in `n`
+    /// members' slots, each member placed in the world by a transform of its own, all
+    /// asking `worlds[m % len]`: run for the batch at once (`None` when the batch path
+    /// leaves it to the handler) or by the handler on each member alone.
+    fn trace(op: Op, o: &[u32], n: usize, batch: bool, worlds: &[&Plane]) -> Option<Vec<Slots>> {
         let mut slots: Vec<Slots> = (0..n).map(member_slots).collect();
         let mut poses: Vec<Pose> = (0..n).map(member_pose).collect();
         let mut draws: Vec<DebugDraw> = slots.iter().map(|_| DebugDraw::new(false)).collect();
@@ -497,7 +564,12 @@ mod tests {
             let mut lanes = Lanes::default();
             lanes.load(Copies::all(&lens), &cxs);
             // SAFETY: the operands are slots below `SLOTS` of the lanes loaded above.
-            let ran = unsafe { sphere_traces(o, lanes.bases(), &cxs) };
+            let ran = unsafe {
+                match op {
+                    Op::LineTrace => line_traces(o, lanes.bases(), &cxs),
+                    _ => sphere_traces(o, lanes.bases(), &cxs),
+                }
+            };
             lanes.store(Copies::all(&lens), &mut cxs);
             if !ran {
                 return None;
@@ -505,7 +577,7 @@ mod tests {
         } else {
             for cx in &mut cxs {
                 // SAFETY: as above.
-                unsafe { step(Op::SphereTrace, o, cx, 1) };
+                unsafe { step(op, o, cx, 1) };
             }
         }
         drop(cxs);
@@ -513,30 +585,39 @@ mod tests {
     }
 
     #[test]
-    fn a_batch_asks_its_world_once_for_every_sphere_trace() {
-        // Operands: start, end, radius, then hit, point, normal, distance; in slots of their
-        // own, and with the outputs in the inputs' slots (as slot sharing may lay them out).
-        for operands in [[1, 2, 0, 4, 5, 6, 7], [1, 2, 0, 3, 1, 2, 0]] {
+    fn a_batch_asks_its_world_once_for_every_trace() {
+        // Operands: start, end, a sphere's radius, then hit, point, normal, distance; in
+        // slots of their own, and with the outputs in the inputs' slots (as slot sharing
+        // may lay them out).
+        let cases = [
+            (Op::SphereTrace, vec![1, 2, 0, 4, 5, 6, 7]),
+            (Op::SphereTrace, vec![1, 2, 0, 3, 1, 2, 0]),
+            (Op::LineTrace, vec![1, 2, 4, 5, 6, 7]),
+            (Op::LineTrace, vec![1, 2, 3, 1, 2, 0]),
+        ];
+        for (op, operands) in cases {
             let o = window(&operands);
+            let hit_slot = operands[operands.len() - 4] as usize;
             for n in [BATCH, 5, 1] {
                 let world = Plane::default();
-                let batched = trace(&o, n, true, &[&world]).expect("the batch path takes it");
-                assert_eq!(world.batches.get(), 1, "{operands:?}, {n} members");
-                let alone = trace(&o, n, false, &[&Plane::default()]).expect("the handler");
+                let batched = trace(op, &o, n, true, &[&world]).expect("the batch path takes it");
+                assert_eq!(world.batches.get(), 1, "{op:?} {operands:?}, {n} members");
+                let alone = trace(op, &o, n, false, &[&Plane::default()]).expect("the handler");
                 for m in 0..n {
                     assert!(
                         batched[m].bit_eq(&alone[m]),
-                        "{operands:?}: member {m} of {n}: slots differ"
+                        "{op:?} {operands:?}: member {m} of {n}: slots differ"
                     );
                 }
-                let hits = (alone.iter())
-                    .filter(|s| s.bools[operands[3] as usize])
-                    .count();
-                assert!(n < BATCH || (0 < hits && hits < n), "{hits} hits of {n}");
+                let hits = alone.iter().filter(|s| s.bools[hit_slot]).count();
+                assert!(
+                    n < BATCH || (0 < hits && hits < n),
+                    "{op:?}: {hits} hits of {n}"
+                );
             }
             // Members in different worlds: each asks its own, through the handler.
             let (a, b) = (Plane::default(), Plane::default());
-            assert!(trace(&o, BATCH, true, &[&a, &b]).is_none());
+            assert!(trace(op, &o, BATCH, true, &[&a, &b]).is_none());
         }
     }
 
