@@ -44,6 +44,7 @@ use std::sync::Arc;
 use glam::{Quat, Vec3, Vec3A, Vec4};
 use parry3d::bounding_volume::{Aabb, BoundingVolume};
 use parry3d::math::Pose;
+use parry3d::query::details::local_ray_intersection_with_triangle;
 use parry3d::query::{Ray, ShapeCastOptions, cast_shapes};
 use parry3d::shape::{Ball, Shape, SharedShape, TriMesh};
 use serde::Deserialize;
@@ -877,12 +878,43 @@ impl Collider {
     /// The ray from `ray.origin` along the unit `ray.dir` for `length` against this solid
     /// bounded shape (world space), by parry3d: the distance to the first hit and the
     /// normal there, zero for a ray starting inside. (Line traces test the half-spaces on
-    /// their own, with [`ray_half_space`].)
+    /// their own, with [`ray_half_space`].) A heightfield's triangles are found by the
+    /// cells under the ray, as its sweeps find them ([`Collider::ray_by_cells`]).
     #[inline]
     fn ray(&self, ray: &Ray, length: f32) -> Option<(f32, Vec3)> {
+        if let Some(found) = self.ray_by_cells(ray, length) {
+            return found;
+        }
         self.shape
             .cast_ray_and_get_normal(&self.pose, ray, length, true)
             .map(|hit| (hit.time_of_impact, hit.normal))
+    }
+
+    /// [`Collider::ray`] for a heightfield whose cells under the ray are at most
+    /// [`MAX_GRID_CELLS`]: each of their triangles tested with parry3d's own ray-triangle
+    /// test, in the shape's frame as parry3d's mesh cast tests it, the nearest kept (of
+    /// equal distances the first, by cell). The mesh's tree, which the cast walks node by
+    /// node, finds the same triangles for several times the work: a locomotion graph's line
+    /// traces are short and cross one or two cells. `None` for other shapes, or more cells.
+    fn ray_by_cells(&self, ray: &Ray, length: f32) -> Option<Option<(f32, Vec3)>> {
+        let Form::Mesh { grid: Some(grid) } = &self.form else {
+            return None;
+        };
+        let mesh = self.shape.as_trimesh()?;
+        let local = ray.inverse_transform_by(&self.pose);
+        let end = local.origin + local.dir * length;
+        let cells = grid.cells_under(&Aabb::new(local.origin.min(end), local.origin.max(end)))?;
+        let mut best: Option<(f32, Vec3)> = None;
+        for i in cells.triangles() {
+            let t = mesh.triangle(i);
+            if let Some((hit, _)) = local_ray_intersection_with_triangle(t.a, t.b, t.c, &local)
+                && hit.time_of_impact <= length
+                && best.is_none_or(|(b, _)| hit.time_of_impact < b)
+            {
+                best = Some((hit.time_of_impact, hit.normal));
+            }
+        }
+        Some(best.map(|(distance, normal)| (distance, self.pose.rotation * normal)))
     }
 
     /// A world-space point and unit direction in this shape's own frame.

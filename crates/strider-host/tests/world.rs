@@ -811,6 +811,71 @@ fn sphere_traces_onto_a_heightfield_agree_with_parry3d() {
 }
 
 #[test]
+fn line_traces_onto_a_heightfield_agree_with_parry3d() {
+    // The world finds a heightfield's triangles under a line trace by the grid's cells
+    // (when the segment covers at most 64 of them; the mesh's tree otherwise) and tests
+    // each with parry3d's own ray-triangle test. parry3d's ray cast against the same mesh
+    // (its tree, from the shape's description) is the reference: the same distance and
+    // the same normal turned to face the segment (to 1e-4: the world's mesh is placed
+    // apart from the description's, which rounds the last bit). Segments straight down (a foot's probe), slanting, level,
+    // starting under the ground, and long enough to take the tree, over a grid of 8 × 5
+    // cells and a fine one of 40 × 25, moved and turned by the heightfield's origin.
+    use parry3d::query::{Ray, RayCast};
+    for (cells, seed) in [((8, 5), 0x0f00_d00d), ((40, 25), 0x0bee_f00d)] {
+        let desc = ShapeDesc::Heightfield {
+            origin: (-100.0, -80.0, 5.0),
+            size: (200.0, 160.0),
+            cells,
+            heights: vec![],
+            waves: vec![field_wave()],
+        };
+        let w = World::try_from_desc(&WorldDesc {
+            shapes: vec![desc.clone()],
+        })
+        .expect("valid heightfield");
+        let shapes = desc.collision_shapes().expect("a mesh");
+        let (pose, mesh) = &shapes[0];
+        let mut next = uniform(seed);
+        let mut r = || next() * 2.0 - 1.0;
+        let (mut hits, mut from_below) = (0, 0);
+        for k in 0..3000 {
+            let start = Vec3::new(r() * 110.0, r() * 90.0, 5.0 + r() * 30.0);
+            let delta = match k % 4 {
+                0 => Vec3::new(0.0, 0.0, -20.0 - r().abs() * 40.0),
+                1 => Vec3::new(r() * 30.0, r() * 30.0, r() * 60.0),
+                2 => Vec3::new(r() * 40.0, r() * 40.0, 0.0),
+                _ => Vec3::new(r() * 150.0, r() * 150.0, r() * 40.0),
+            };
+            let end = start + delta;
+            let length = delta.length();
+            let dir = delta / length;
+            let ours = w.line_trace(start, end);
+            let reference = mesh.cast_ray_and_get_normal(pose, &Ray::new(start, dir), length, true);
+            let context = format!("start {start} end {end}: {ours:?} vs {reference:?}");
+            match (ours, reference) {
+                (Some(hit), Some(r)) => {
+                    hits += 1;
+                    assert!(near(hit.distance, r.time_of_impact, 1e-4), "{context}");
+                    let facing = if r.normal.dot(dir) > 0.0 {
+                        -r.normal
+                    } else {
+                        r.normal
+                    };
+                    assert_vec_near(hit.normal, facing, 1e-4);
+                    from_below += usize::from(hit.normal.z < 0.0);
+                }
+                (None, None) => {}
+                _ => panic!("{context}"),
+            }
+        }
+        assert!(
+            hits > 500 && hits < 2800 && from_below > 20,
+            "{hits} hits, {from_below} from below: the segments should mix all cases"
+        );
+    }
+}
+
+#[test]
 fn the_shared_geometry_is_what_the_world_collides_with() {
     // Stairs turned by 90° (rising along −X): 3 steps of 20 × 40 cm and a 50 cm landing.
     let stairs = ShapeDesc::Stairs {
