@@ -820,7 +820,7 @@ fn line_traces_onto_a_heightfield_agree_with_parry3d() {
     // apart from the description's, which rounds the last bit). Segments straight down (a foot's probe), slanting, level,
     // starting under the ground, and long enough to take the tree, over a grid of 8 × 5
     // cells and a fine one of 40 × 25, moved and turned by the heightfield's origin.
-    use parry3d::query::{Ray, RayCast};
+    use parry3d::query::Ray;
     for (cells, seed) in [((8, 5), 0x0f00_d00d), ((40, 25), 0x0bee_f00d)] {
         let desc = ShapeDesc::Heightfield {
             origin: (-100.0, -80.0, 5.0),
