@@ -31,6 +31,32 @@ pub(crate) enum BallSweep {
     Overlap,
 }
 
+/// A triangle and its unit normal `(b − a) × (c − a)`, normalised once when its shape is
+/// built instead of at every sweep (`None` for a degenerate triangle).
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct Facet {
+    /// The corners `a`, `b`, `c`.
+    pub(crate) corners: [Vec3; 3],
+    /// The unit normal of [`Facet::normal_of`].
+    pub(crate) normal: Option<Vec3>,
+}
+
+impl Facet {
+    /// The facet of the triangle `corners`.
+    pub(crate) fn new(corners: [Vec3; 3]) -> Self {
+        Self {
+            corners,
+            normal: Self::normal_of(corners),
+        }
+    }
+
+    /// The unit normal `(b − a) × (c − a)` of the triangle `[a, b, c]`; `None` for a
+    /// degenerate one.
+    pub(crate) fn normal_of([a, b, c]: [Vec3; 3]) -> Option<Vec3> {
+        (b - a).cross(c - a).try_normalize()
+    }
+}
+
 /// Where a sphere of `radius` whose centre moves from `start` along the unit vector `dir`
 /// for up to `length` first touches the half-space below the plane through `point` with
 /// unit `normal`: the distance travelled, 0 when it starts touching or inside (if
@@ -157,10 +183,11 @@ enum Face {
 }
 
 /// A ball of `radius` swept from `start` along `dir` for `length`, against the face of the
-/// two-sided triangle `corners`.
-fn ball_face_sweep(start: Vec3, dir: Vec3, length: f32, radius: f32, corners: [Vec3; 3]) -> Face {
-    let [a, b, c] = corners;
-    let Some(normal) = (b - a).cross(c - a).try_normalize() else {
+/// two-sided triangle `facet`.
+fn ball_face_sweep(start: Vec3, dir: Vec3, length: f32, radius: f32, facet: &Facet) -> Face {
+    let corners = facet.corners;
+    let a = corners[0];
+    let Some(normal) = facet.normal else {
         // A degenerate triangle is its edges.
         return Face::Edges;
     };
@@ -199,7 +226,7 @@ pub(crate) fn ball_hull_sweep(
     dir: Vec3,
     length: f32,
     radius: f32,
-    triangles: &[[Vec3; 3]],
+    triangles: &[Facet],
     planes: &[(Vec3, f32)],
 ) -> BallSweep {
     if planes.iter().all(|&(n, d)| n.dot(start) <= d) {
@@ -229,15 +256,16 @@ pub(crate) fn ball_triangles_sweep(
     dir: Vec3,
     length: f32,
     radius: f32,
-    triangles: impl IntoIterator<Item = [Vec3; 3]>,
+    triangles: impl IntoIterator<Item = Facet>,
 ) -> BallSweep {
     let mut nearest = Nearest::new(start, dir, length, radius);
     // The triangles whose edges are left for after the faces, on the stack (a sweep meets
     // a handful); past that many, a triangle's edges are tested at once.
     let mut later = [[Vec3::ZERO; 3]; EDGES_LATER];
     let mut held = 0;
-    for corners in triangles {
-        match ball_face_sweep(start, dir, nearest.reach, radius, corners) {
+    for facet in triangles {
+        let corners = facet.corners;
+        match ball_face_sweep(start, dir, nearest.reach, radius, &facet) {
             Face::Overlap => return BallSweep::Overlap,
             Face::Hit { distance, normal } => nearest.offer(distance, normal),
             Face::Edges if held < EDGES_LATER => {
@@ -526,7 +554,8 @@ mod tests {
             let expected = 20.0 - (z64 + (25.0 - y64 * y64).sqrt());
             for triangles in [[a, b], [b, a]] {
                 let start = Vec3::new(0.0, 0.0, 20.0);
-                match ball_triangles_sweep(start, Vec3::NEG_Z, 40.0, 5.0, triangles) {
+                let facets = triangles.map(Facet::new);
+                match ball_triangles_sweep(start, Vec3::NEG_Z, 40.0, 5.0, facets) {
                     BallSweep::Hit { distance, normal } => {
                         let error = (f64::from(distance) - expected).abs();
                         assert!(error < 1e-5, "{distance} vs {expected}");
@@ -552,7 +581,7 @@ mod tests {
         let mut nearest = BallSweep::Miss;
         let mut reach = length;
         for &corners in triangles {
-            let found = match ball_face_sweep(start, dir, reach, radius, corners) {
+            let found = match ball_face_sweep(start, dir, reach, radius, &Facet::new(corners)) {
                 Face::Overlap => BallSweep::Overlap,
                 Face::Hit { distance, normal } => BallSweep::Hit { distance, normal },
                 Face::Edges => ball_edges_sweep(start, dir, reach, radius, corners, [false; 3]),
@@ -610,7 +639,8 @@ mod tests {
             let start = centre + Vec3::new(r() * 20.0, r() * 20.0, 4.0 + r().abs() * 30.0);
             let dir = (Vec3::new(r(), r(), -1.5 + r())).normalize();
             let (length, radius) = (5.0 + r().abs() * 60.0, 0.5 + r().abs() * 8.0);
-            let ours = ball_triangles_sweep(start, dir, length, radius, triangles.iter().copied());
+            let facets = triangles.iter().map(|&corners| Facet::new(corners));
+            let ours = ball_triangles_sweep(start, dir, length, radius, facets);
             let reference = every_edge(start, dir, length, radius, &triangles);
             let context = format!("{start} {dir} {length} {radius}: {ours:?} vs {reference:?}");
             match (ours, reference) {

@@ -52,7 +52,7 @@ use serde::de::{self, Deserializer, SeqAccess, Visitor};
 use strider_core::{LineQuery, SphereQuery, TraceHit, WorldQuery, all_finite, load_vec3};
 
 use crate::sweep::{
-    BallSweep, ball_box_sweep, ball_half_space_sweep, ball_hull_sweep, ball_reach,
+    BallSweep, Facet, ball_box_sweep, ball_half_space_sweep, ball_hull_sweep, ball_reach,
     ball_triangles_sweep,
 };
 
@@ -741,12 +741,16 @@ enum Form {
     Box { half: Vec3 },
     /// A triangle mesh (the heightfield): its triangles near the sweep, found by the
     /// heightfield's cells when it has them and the sweep covers few, else through the
-    /// mesh's own tree.
-    Mesh { grid: Option<Grid> },
+    /// mesh's own tree; and each triangle's unit normal ([`Facet::normal_of`]), by the
+    /// mesh's triangle numbers.
+    Mesh {
+        grid: Option<Grid>,
+        normals: Arc<[Option<Vec3>]>,
+    },
     /// A convex hull (a ramp), in its own frame: its surface as triangles and its faces'
     /// planes (unit outward normal, offset).
     Hull {
-        triangles: Arc<[[Vec3; 3]]>,
+        triangles: Arc<[Facet]>,
         planes: Arc<[(Vec3, f32)]>,
     },
     /// Anything else (a ramp's convex hull): parry3d's general cast.
@@ -800,13 +804,16 @@ impl Collider {
                 let (local_start, local_dir) = self.to_local(start, dir);
                 self.found(ball_box_sweep(local_start, local_dir, length, radius, half))
             }
-            Form::Mesh { grid } => {
+            Form::Mesh { grid, normals } => {
                 let mesh = self.shape.as_trimesh()?;
                 let (start, dir) = self.to_local(start, dir);
                 let reach = ball_reach(start, start + dir * length, radius);
                 let corners = |i: u32| {
                     let t = mesh.triangle(i);
-                    [t.a, t.b, t.c]
+                    Facet {
+                        corners: [t.a, t.b, t.c],
+                        normal: normals.get(i as usize).copied().flatten(),
+                    }
                 };
                 self.found(match grid.and_then(|g| g.cells_under(&reach)) {
                     Some(cells) => {
@@ -897,7 +904,10 @@ impl Collider {
     /// node, finds the same triangles for several times the work: a locomotion graph's line
     /// traces are short and cross one or two cells. `None` for other shapes, or more cells.
     fn ray_by_cells(&self, ray: &Ray, length: f32) -> Option<Option<(f32, Vec3)>> {
-        let Form::Mesh { grid: Some(grid) } = &self.form else {
+        let Form::Mesh {
+            grid: Some(grid), ..
+        } = &self.form
+        else {
             return None;
         };
         let mesh = self.shape.as_trimesh()?;
@@ -1037,10 +1047,71 @@ fn cell_floor(x: f32) -> f32 {
 
 impl CellRange {
     /// The triangles of the range's cells, row by row.
-    fn triangles(self) -> impl Iterator<Item = u32> {
+    fn triangles(self) -> CellTriangles {
         let Self { nx, i, j } = self;
         // A row's cells' triangles are numbered one after another.
-        (j.0..=j.1).flat_map(move |row| 2 * (row * nx + i.0)..2 * (row * nx + i.1 + 1))
+        let first = 2 * (j.0 * nx + i.0);
+        let width = 2 * (i.1 + 1).saturating_sub(i.0);
+        CellTriangles {
+            next: first,
+            row_end: first + width,
+            rows_left: (j.1 + 1).saturating_sub(j.0).saturating_sub(1),
+            skip: 2 * nx - width,
+            width,
+        }
+        .empty_unless(i.0 <= i.1 && j.0 <= j.1)
+    }
+}
+
+/// The triangle numbers of a [`CellRange`], row by row: in each row, its cells' triangles,
+/// numbered one after another. Written out rather than as nested ranges, whose iterator
+/// costs several times the few instructions a triangle needs here.
+#[derive(Clone, Copy, Debug)]
+struct CellTriangles {
+    /// The next number in the current row.
+    next: u32,
+    /// One past the current row's last number.
+    row_end: u32,
+    /// Rows after the current one.
+    rows_left: u32,
+    /// Numbers between one row's end and the next row's start.
+    skip: u32,
+    /// Numbers in a row.
+    width: u32,
+}
+
+impl CellTriangles {
+    /// These numbers, or none when `some` is false.
+    fn empty_unless(self, some: bool) -> Self {
+        if some {
+            self
+        } else {
+            Self {
+                next: 0,
+                row_end: 0,
+                rows_left: 0,
+                ..self
+            }
+        }
+    }
+}
+
+impl Iterator for CellTriangles {
+    type Item = u32;
+
+    #[inline]
+    fn next(&mut self) -> Option<u32> {
+        if self.next == self.row_end {
+            if self.rows_left == 0 {
+                return None;
+            }
+            self.rows_left -= 1;
+            self.next += self.skip;
+            self.row_end = self.next + self.width;
+        }
+        let k = self.next;
+        self.next += 1;
+        Some(k)
     }
 }
 
@@ -1048,14 +1119,14 @@ impl CellRange {
 /// each triangle's plane, turned to face away from the hull's centre.
 fn hull_form((vertices, indices): (Vec<Vec3>, Vec<[u32; 3]>)) -> Form {
     let centre = vertices.iter().copied().sum::<Vec3>() / vertices.len().max(1) as f32;
-    let triangles: Vec<[Vec3; 3]> = indices
+    let triangles: Vec<Facet> = indices
         .iter()
-        .map(|t| t.map(|i| vertices[i as usize]))
+        .map(|t| Facet::new(t.map(|i| vertices[i as usize])))
         .collect();
     let planes = triangles
         .iter()
-        .filter_map(|&[a, b, c]| {
-            let n = (b - a).cross(c - a).try_normalize()?;
+        .filter_map(|facet| {
+            let (n, a) = (facet.normal?, facet.corners[0]);
             let n = if n.dot(a - centre) < 0.0 { -n } else { n };
             Some((n, n.dot(a)))
         })
@@ -1154,8 +1225,14 @@ impl World {
                     Form::Box {
                         half: cuboid.half_extents,
                     }
-                } else if shape.as_trimesh().is_some() {
-                    Form::Mesh { grid }
+                } else if let Some(mesh) = shape.as_trimesh() {
+                    let normals = (0..mesh.num_triangles() as u32)
+                        .map(|i| {
+                            let t = mesh.triangle(i);
+                            Facet::normal_of([t.a, t.b, t.c])
+                        })
+                        .collect();
+                    Form::Mesh { grid, normals }
                 } else if let Some(hull) = shape.as_convex_polyhedron() {
                     hull_form(hull.to_trimesh())
                 } else {
@@ -1815,6 +1892,32 @@ mod tests {
         move || {
             seed = seed.wrapping_mul(1_664_525).wrapping_add(1_013_904_223);
             (seed >> 8) as f32 / (1u32 << 24) as f32 * 2.0 - 1.0
+        }
+    }
+
+    #[test]
+    fn a_range_of_cells_lists_their_triangles_row_by_row() {
+        // Against the rule written out: for each row, for each cell, its two triangles
+        // 2·(row·nx + col) and the one after; on a grid 7 cells wide, every range of
+        // cells in it, a single cell, a whole row and column, and the empty range.
+        let nx = 7;
+        for (i, j) in [
+            ((0, 6), (0, 4)),
+            ((2, 2), (3, 3)),
+            ((0, 6), (2, 2)),
+            ((3, 3), (0, 4)),
+            ((1, 0), (0, 4)),
+            ((0, 6), (1, 0)),
+            ((4, 5), (1, 3)),
+        ] {
+            let expected: Vec<u32> = (j.0..=j.1)
+                .flat_map(|row| {
+                    (i.0..=i.1)
+                        .flat_map(move |col| [2 * (row * nx + col), 2 * (row * nx + col) + 1])
+                })
+                .collect();
+            let listed: Vec<u32> = CellRange { nx, i, j }.triangles().collect();
+            assert_eq!(listed, expected, "cells {i:?} × {j:?}");
         }
     }
 
