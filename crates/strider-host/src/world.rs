@@ -889,7 +889,10 @@ impl Collider {
     /// cells under the ray, as its sweeps find them ([`Collider::ray_by_cells`]).
     #[inline]
     fn ray(&self, ray: &Ray, length: f32) -> Option<(f32, Vec3)> {
-        if let Some(found) = self.ray_by_cells(ray, length) {
+        // Out of line, so that the common shapes' rays stay small enough to inline.
+        if matches!(self.form, Form::Mesh { grid: Some(_), .. })
+            && let Some(found) = self.ray_by_cells(ray, length)
+        {
             return found;
         }
         self.shape
@@ -903,6 +906,7 @@ impl Collider {
     /// equal distances the first, by cell). The mesh's tree, which the cast walks node by
     /// node, finds the same triangles for several times the work: a locomotion graph's line
     /// traces are short and cross one or two cells. `None` for other shapes, or more cells.
+    #[inline(never)]
     fn ray_by_cells(&self, ray: &Ray, length: f32) -> Option<Option<(f32, Vec3)>> {
         let Form::Mesh {
             grid: Some(grid), ..
