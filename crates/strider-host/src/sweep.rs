@@ -239,7 +239,8 @@ pub(crate) fn ball_hull_sweep(
 
 /// A ball of `radius` swept from `start` along `dir` for `length`, against each of
 /// `triangles` (two-sided): the nearest hit (of equal distances the first face, then the
-/// first edge or corner), or an overlap with any.
+/// first edge or corner; past [`EDGES_LATER`] triangles whose edges wait, a later one's
+/// edges are tested in turn with the faces), or an overlap with any.
 ///
 /// The faces first, then the edges and corners of the triangles whose face is not touched
 /// first, each only up to the nearest hit so far. The edges are most of a sweep's cost
@@ -293,8 +294,11 @@ const EDGES_LATER: usize = 8;
 /// The nearest hit of a ball's sweep so far ([`ball_triangles_sweep`]): how far a later
 /// hit may lie (the whole sweep while there is none) and the tangent plane at the hit.
 struct Nearest {
+    /// The sweep's start (cm).
     start: Vec3,
+    /// Its unit direction.
     dir: Vec3,
+    /// The ball's radius (cm).
     radius: f32,
     /// The sweep's length up to the nearest hit (cm).
     reach: f32,
@@ -305,6 +309,8 @@ struct Nearest {
 }
 
 impl Nearest {
+    /// No hit yet: a ball of `radius` swept from `start` along the unit `dir` for
+    /// `length`.
     fn new(start: Vec3, dir: Vec3, length: f32, radius: f32) -> Self {
         Self {
             start,
@@ -603,7 +609,7 @@ mod tests {
     #[test]
     fn edges_ruled_out_by_the_nearest_hit_change_no_answer() {
         // Patches of a rolling heightfield (rounded upwards and downwards: hills, valleys
-        // and saddles), 2 to 40 triangles each (past the 16 whose edges wait for the
+        // and saddles), 2 to 40 triangles each (past the 8 whose edges wait for the
         // faces), swept by balls from every direction. Each answer is held against every
         // edge tested in turn: the same overlaps and misses, the same distances up to the
         // rounding of the heights, and the same normals where no other contact comes

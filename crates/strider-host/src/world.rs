@@ -808,20 +808,21 @@ impl Collider {
                 let mesh = self.shape.as_trimesh()?;
                 let (start, dir) = self.to_local(start, dir);
                 let reach = ball_reach(start, start + dir * length, radius);
-                let corners = |i: u32| {
+                // The normals are the mesh's, triangle by triangle (built with it).
+                let facet = |i: u32| {
                     let t = mesh.triangle(i);
                     Facet {
                         corners: [t.a, t.b, t.c],
-                        normal: normals.get(i as usize).copied().flatten(),
+                        normal: normals[i as usize],
                     }
                 };
                 self.found(match grid.and_then(|g| g.cells_under(&reach)) {
                     Some(cells) => {
-                        let near = cells.triangles().map(corners);
+                        let near = cells.triangles().map(facet);
                         ball_triangles_sweep(start, dir, length, radius, near)
                     }
                     None => {
-                        let near = mesh.bvh().intersect_aabb(&reach).map(corners);
+                        let near = mesh.bvh().intersect_aabb(&reach).map(facet);
                         ball_triangles_sweep(start, dir, length, radius, near)
                     }
                 })
@@ -905,7 +906,9 @@ impl Collider {
     /// test, in the shape's frame as parry3d's mesh cast tests it, the nearest kept (of
     /// equal distances the first, by cell). The mesh's tree, which the cast walks node by
     /// node, finds the same triangles for several times the work: a locomotion graph's line
-    /// traces are short and cross one or two cells. `None` for other shapes, or more cells.
+    /// traces are short and cross one or two cells. A hit at the segment's very end counts,
+    /// as on the other shapes' closed forms (parry3d's mesh cast, which answered these
+    /// traces before, takes only hits short of it). `None` for other shapes, or more cells.
     #[inline(never)]
     fn ray_by_cells(&self, ray: &Ray, length: f32) -> Option<Option<(f32, Vec3)>> {
         let Form::Mesh {
@@ -1551,9 +1554,10 @@ fn unit_normal(normal: Vec3) -> Vec3 {
 }
 
 /// [`line_hit`] with the normal already made unit (`unit`: zero where the shape gave none
-/// or it was not finite; see [`unit_normal`]): the normal is made to face the segment, `−dir` where there is
-/// none or the segment starts inside (at distance 0), turned over where it was hit from
-/// behind. [`World::plane_line_traces`] makes its plane's normal unit once for a batch.
+/// or it was not finite; see [`unit_normal`]): the normal is made to face the segment,
+/// `−dir` where there is none or the segment starts inside (at distance 0), turned over
+/// where it was hit from behind. [`World::plane_line_traces`] makes its plane's normal
+/// unit once for a batch.
 #[inline(always)]
 fn facing_hit(start: Vec3, dir: Vec3, distance: f32, unit: Vec3) -> TraceHit {
     let distance = distance.max(0.0);
@@ -1624,18 +1628,12 @@ impl WorldQuery for World {
     /// half-space and nothing else (flat ground), eight queries at a time, one array per
     /// coordinate, as [`WorldQuery::sphere_traces`]; otherwise one at a time.
     fn line_traces(&self, queries: &[LineQuery], hits: &mut [Option<TraceHit>]) {
-        match (self.bounded, &self.half_spaces[..]) {
-            (false, [plane]) => {
-                for (queries, hits) in queries.chunks(COLUMN).zip(hits.chunks_mut(COLUMN)) {
-                    self.plane_line_traces(plane, queries, hits);
-                }
-            }
-            _ => {
-                for (query, hit) in queries.iter().zip(hits) {
-                    *hit = self.line_trace_inlined(query.start, query.end);
-                }
-            }
-        }
+        self.answer_batch(
+            queries,
+            hits,
+            |plane, queries, hits| self.plane_line_traces(plane, queries, hits),
+            |q| self.line_trace_inlined(q.start, q.end),
+        );
     }
 
     /// Each query as [`World::sphere_trace`] answers it, bit for bit. In a world of one
@@ -1643,18 +1641,12 @@ impl WorldQuery for World {
     /// coordinate, so that the compiler can compute several queries per instruction;
     /// otherwise one at a time.
     fn sphere_traces(&self, queries: &[SphereQuery], hits: &mut [Option<TraceHit>]) {
-        match (self.bounded, &self.half_spaces[..]) {
-            (false, [plane]) => {
-                for (queries, hits) in queries.chunks(COLUMN).zip(hits.chunks_mut(COLUMN)) {
-                    self.plane_sphere_traces(plane, queries, hits);
-                }
-            }
-            _ => {
-                for (query, hit) in queries.iter().zip(hits) {
-                    *hit = self.sphere_trace_inlined(query.start, query.end, query.radius);
-                }
-            }
-        }
+        self.answer_batch(
+            queries,
+            hits,
+            |plane, queries, hits| self.plane_sphere_traces(plane, queries, hits),
+            |q| self.sphere_trace_inlined(q.start, q.end, q.radius),
+        );
     }
 }
 
@@ -1663,6 +1655,31 @@ impl WorldQuery for World {
 const COLUMN: usize = 8;
 
 impl World {
+    /// A batch's answers, `hits[k]` to `queries[k]`: in a world of one half-space and
+    /// nothing else (flat ground), [`COLUMN`] queries at a time by `columns`; otherwise
+    /// one at a time by `alone`.
+    #[inline(always)]
+    fn answer_batch<Q>(
+        &self,
+        queries: &[Q],
+        hits: &mut [Option<TraceHit>],
+        columns: impl Fn(&HalfSpace, &[Q], &mut [Option<TraceHit>]),
+        alone: impl Fn(&Q) -> Option<TraceHit>,
+    ) {
+        match (self.bounded, &self.half_spaces[..]) {
+            (false, [plane]) => {
+                for (queries, hits) in queries.chunks(COLUMN).zip(hits.chunks_mut(COLUMN)) {
+                    columns(plane, queries, hits);
+                }
+            }
+            _ => {
+                for (query, hit) in queries.iter().zip(hits) {
+                    *hit = alone(query);
+                }
+            }
+        }
+    }
+
     /// [`WorldQuery::line_trace`], inlined where it is called: once for that method and
     /// once in the loop of [`WorldQuery::line_traces`]. [`World::plane_line_traces`]
     /// computes the same for a flat world in columns and must be kept in step with it.
@@ -1821,6 +1838,8 @@ impl World {
     ) {
         let n = queries.len().min(hits.len()).min(COLUMN);
         // Start, delta (end − start) and radius, by coordinate; unused lanes stay zero.
+        // (The line traces' columns start the same way, without the radius: one loop
+        // each measured cheaper than a shared one and a loop for the radii.)
         let (mut start, mut delta, mut radius) =
             ([[0.0; COLUMN]; 3], [[0.0; COLUMN]; 3], [0.0; COLUMN]);
         for k in 0..n {
@@ -1928,9 +1947,12 @@ mod tests {
     #[test]
     fn cell_floor_is_floor_over_every_grid() {
         // Against the C library's floor: whole numbers and their neighbours one step of
-        // f32 either side, both signs, zeros, fractions, and numbers up to 2³¹ in size,
-        // where f32 holds only whole numbers; past that, ±2³¹ (outside every grid).
+        // f32 either side, both signs, zeros, fractions, numbers up to 1e9 in size (where
+        // f32 holds only whole numbers) and the last ones below 2³¹; past that, ±2³¹
+        // (outside every grid).
+        let edge = 2f32.powi(31);
         let mut values = vec![0.0_f32, -0.0, 0.5, -0.5, 0.999_999_94, -0.999_999_94];
+        values.extend([edge - 128.0, -(edge - 128.0), -edge, edge.next_down()]);
         let mut r = signed(11);
         for k in 0..4000 {
             let x = r() * 10f32.powi(k % 10);
@@ -1939,9 +1961,9 @@ mod tests {
         for x in values {
             assert_eq!(cell_floor(x), x.floor(), "{x}");
         }
-        for x in [3e9_f32, 1e20, f32::MAX] {
-            assert_eq!(cell_floor(x), 2f32.powi(31), "{x}");
-            assert_eq!(cell_floor(-x), -(2f32.powi(31)), "{x}");
+        for x in [edge, edge + 256.0, 3e9_f32, 1e20, f32::MAX] {
+            assert_eq!(cell_floor(x), edge, "{x}");
+            assert_eq!(cell_floor(-x), -edge, "{x}");
         }
     }
 

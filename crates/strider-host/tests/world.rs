@@ -811,15 +811,41 @@ fn sphere_traces_onto_a_heightfield_agree_with_parry3d() {
 }
 
 #[test]
+fn a_line_trace_ending_on_a_heightfield_hits_it() {
+    // A flat heightfield 2 cm up (no waves, no heights), 4 × 4 cells of 25 cm: a segment
+    // straight down that ends exactly on it hits at its whole length, as one ending on the
+    // ground does; one that stops 1 cm short misses. Probes through a cell's inside, along
+    // an edge between two cells and through a corner shared by six triangles all hit
+    // (no crack between triangles), with the surface's normal +Z.
+    let w = world(
+        "(shapes: [Heightfield(origin: (-50.0, -50.0, 2.0), size: (100.0, 100.0), \
+         cells: (4, 4), heights: [], waves: [])])",
+    );
+    for (x, y) in [(3.0, 7.0), (-25.0, 10.0), (0.0, 0.0), (25.0, -25.0)] {
+        let top = Vec3::new(x, y, 10.0);
+        let hit = w
+            .line_trace(top, Vec3::new(x, y, 2.0))
+            .unwrap_or_else(|| panic!("({x}, {y}): a miss"));
+        assert_eq!(hit.distance, 8.0, "({x}, {y})");
+        assert_eq!(hit.point, Vec3::new(x, y, 2.0), "({x}, {y})");
+        assert_vec_near(hit.normal, Vec3::Z, 1e-6);
+        assert!(
+            w.line_trace(top, Vec3::new(x, y, 3.0)).is_none(),
+            "({x}, {y})"
+        );
+    }
+}
+
+#[test]
 fn line_traces_onto_a_heightfield_agree_with_parry3d() {
     // The world finds a heightfield's triangles under a line trace by the grid's cells
     // (when the segment covers at most 64 of them; the mesh's tree otherwise) and tests
     // each with parry3d's own ray-triangle test. parry3d's ray cast against the same mesh
-    // (its tree, from the shape's description) is the reference: the same distance and
-    // the same normal turned to face the segment (to 1e-4: the world's mesh is placed
-    // apart from the description's, which rounds the last bit). Segments straight down (a foot's probe), slanting, level,
-    // starting under the ground, and long enough to take the tree, over a grid of 8 × 5
-    // cells and a fine one of 40 × 25, moved and turned by the heightfield's origin.
+    // (its tree, from the shape's description) is the reference: the same distance, bit
+    // for bit, and the same normal turned to face the segment (to 1e-6: the world makes
+    // it unit again). Segments straight down (a foot's probe), slanting, level, starting
+    // under the ground, and long enough to take the tree, over a grid of 8 × 5 cells and a
+    // fine one of 40 × 25, moved by the heightfield's origin.
     use parry3d::query::Ray;
     for (cells, seed) in [((8, 5), 0x0f00_d00d), ((40, 25), 0x0bee_f00d)] {
         let desc = ShapeDesc::Heightfield {
@@ -846,7 +872,9 @@ fn line_traces_onto_a_heightfield_agree_with_parry3d() {
                 2 => Vec3::new(r() * 40.0, r() * 40.0, 0.0),
                 _ => Vec3::new(r() * 150.0, r() * 150.0, r() * 40.0),
             };
+            // The segment as the world computes it from its ends.
             let end = start + delta;
+            let delta = end - start;
             let length = delta.length();
             let dir = delta / length;
             let ours = w.line_trace(start, end);
@@ -855,13 +883,13 @@ fn line_traces_onto_a_heightfield_agree_with_parry3d() {
             match (ours, reference) {
                 (Some(hit), Some(r)) => {
                     hits += 1;
-                    assert!(near(hit.distance, r.time_of_impact, 1e-4), "{context}");
+                    assert_eq!(hit.distance, r.time_of_impact, "{context}");
                     let facing = if r.normal.dot(dir) > 0.0 {
                         -r.normal
                     } else {
                         r.normal
                     };
-                    assert_vec_near(hit.normal, facing, 1e-4);
+                    assert_vec_near(hit.normal, facing, 1e-6);
                     from_below += usize::from(hit.normal.z < 0.0);
                 }
                 (None, None) => {}
