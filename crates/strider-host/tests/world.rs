@@ -761,6 +761,26 @@ fn sphere_traces_onto_a_ramp_agree_with_parry3d() {
     );
 }
 
+/// A world of one heightfield 200 × 160 cm from (−100, −80) at height 5, of `cells`, shaped
+/// by `waves`, and the description's collision shapes (the reference's mesh).
+fn heightfield_world(
+    cells: (u32, u32),
+    waves: Vec<Wave>,
+) -> (World, Vec<(parry3d::math::Pose, parry3d::shape::SharedShape)>) {
+    let desc = ShapeDesc::Heightfield {
+        origin: (-100.0, -80.0, 5.0),
+        size: (200.0, 160.0),
+        cells,
+        heights: vec![],
+        waves,
+    };
+    let w = World::try_from_desc(&WorldDesc {
+        shapes: vec![desc.clone()],
+    })
+    .expect("valid heightfield");
+    (w, desc.collision_shapes().expect("a mesh"))
+}
+
 #[test]
 fn sphere_traces_onto_a_heightfield_agree_with_parry3d() {
     // Ball-versus-triangle sweeps in closed form against the heightfield's triangles, and
@@ -771,31 +791,21 @@ fn sphere_traces_onto_a_heightfield_agree_with_parry3d() {
     // across plus the ball) cover more than 64 and take the tree. Sweeps start up to 10 cm
     // outside the grid on every side.
     for (cells, seed) in [((8, 5), 0x0bad_cafe), ((40, 25), 0x0dd_ba11)] {
-        let desc = ShapeDesc::Heightfield {
-            origin: (-100.0, -80.0, 5.0),
-            size: (200.0, 160.0),
-            cells,
-            heights: vec![],
-            waves: vec![
-                Wave {
-                    amplitude: 6.0,
-                    wavelength: 90.0,
-                    heading: 20.0,
-                    phase: 0.0,
-                },
-                Wave {
-                    amplitude: 3.0,
-                    wavelength: 45.0,
-                    heading: 110.0,
-                    phase: 40.0,
-                },
-            ],
-        };
-        let w = World::try_from_desc(&WorldDesc {
-            shapes: vec![desc.clone()],
-        })
-        .expect("valid heightfield");
-        let shapes = desc.collision_shapes().expect("a mesh");
+        let waves = vec![
+            Wave {
+                amplitude: 6.0,
+                wavelength: 90.0,
+                heading: 20.0,
+                phase: 0.0,
+            },
+            Wave {
+                amplitude: 3.0,
+                wavelength: 45.0,
+                heading: 110.0,
+                phase: 40.0,
+            },
+        ];
+        let (w, shapes) = heightfield_world(cells, waves);
         let (pose, mesh) = &shapes[0];
         agree_with_parry(
             &w,
@@ -848,18 +858,7 @@ fn line_traces_onto_a_heightfield_agree_with_parry3d() {
     // fine one of 40 × 25, moved by the heightfield's origin.
     use parry3d::query::Ray;
     for (cells, seed) in [((8, 5), 0x0f00_d00d), ((40, 25), 0x0bee_f00d)] {
-        let desc = ShapeDesc::Heightfield {
-            origin: (-100.0, -80.0, 5.0),
-            size: (200.0, 160.0),
-            cells,
-            heights: vec![],
-            waves: vec![field_wave()],
-        };
-        let w = World::try_from_desc(&WorldDesc {
-            shapes: vec![desc.clone()],
-        })
-        .expect("valid heightfield");
-        let shapes = desc.collision_shapes().expect("a mesh");
+        let (w, shapes) = heightfield_world(cells, vec![field_wave()]);
         let (pose, mesh) = &shapes[0];
         let mut next = uniform(seed);
         let mut r = || next() * 2.0 - 1.0;
