@@ -766,7 +766,10 @@ fn sphere_traces_onto_a_ramp_agree_with_parry3d() {
 fn heightfield_world(
     cells: (u32, u32),
     waves: Vec<Wave>,
-) -> (World, Vec<(parry3d::math::Pose, parry3d::shape::SharedShape)>) {
+) -> (
+    World,
+    Vec<(parry3d::math::Pose, parry3d::shape::SharedShape)>,
+) {
     let desc = ShapeDesc::Heightfield {
         origin: (-100.0, -80.0, 5.0),
         size: (200.0, 160.0),
