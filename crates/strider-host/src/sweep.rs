@@ -219,22 +219,35 @@ fn ball_face_sweep(start: Vec3, dir: Vec3, length: f32, radius: f32, facet: &Fac
 }
 
 /// A ball of `radius` swept from `start` along `dir` for `length`, against the solid convex
-/// hull bounded by `triangles` (its surface) and `planes` (each face's unit outward normal
-/// and offset: inside is `normal · p ≤ offset` for every face).
+/// hull bounded by `triangles` (its surface, each with its unit outward normal, `None` for
+/// a degenerate one) and `planes` (each face's unit outward normal and offset: inside is
+/// `normal · p ≤ offset` for every face).
+///
+/// From outside, the ball meets the hull's surface first; the triangles' edges inside a
+/// face (its diagonals) lie within the grown hull, so they never come first. Nor does a
+/// triangle facing away from the sweep (`outward · dir ≥ 0`) whose plane lies farther than
+/// `radius` from the start, nor its edges: the ball moves along or away from its plane,
+/// so it can only reach it from inside the hull, after entering it elsewhere; an edge it
+/// shares with a triangle facing the sweep is tested with that one, and an edge between
+/// two facing away has no normal that meets the sweep head on. Such triangles (about half
+/// of a hull's) are left out; every triangle the ball may overlap at the start is kept.
 pub(crate) fn ball_hull_sweep(
     start: Vec3,
     dir: Vec3,
     length: f32,
     radius: f32,
-    triangles: &[Facet],
+    triangles: &[(Facet, Option<Vec3>)],
     planes: &[(Vec3, f32)],
 ) -> BallSweep {
     if planes.iter().all(|&(n, d)| n.dot(start) <= d) {
         return BallSweep::Overlap;
     }
-    // From outside, the ball meets the hull's surface first; the triangles' edges inside a
-    // face (its diagonals) lie within the grown hull, so they never come first.
-    ball_triangles_sweep(start, dir, length, radius, triangles.iter().copied())
+    let facing = triangles.iter().filter_map(|&(facet, outward)| {
+        let away = outward
+            .is_some_and(|n| n.dot(dir) >= 0.0 && n.dot(start - facet.corners[0]).abs() > radius);
+        (!away).then_some(facet)
+    });
+    ball_triangles_sweep(start, dir, length, radius, facing)
 }
 
 /// A ball of `radius` swept from `start` along `dir` for `length`, against each of
@@ -604,6 +617,113 @@ mod tests {
             }
         }
         nearest
+    }
+
+    #[test]
+    fn a_hull_leaves_out_only_triangles_that_cannot_come_first() {
+        // A ramp (a wedge: a 40 × 30 cm base rising to 12 cm along x) and a box, each as
+        // its surface triangles with outward normals and its faces' planes, swept by balls
+        // from every side and direction, starting outside. Each answer is held against
+        // the sweep over every triangle: the same overlaps and misses, the same distance
+        // and normal up to rounding (1e-5 of the distance, 1e-4: where two triangles of a
+        // face, or a face and its edge, are touched at once, either may answer).
+        let wedge = [
+            Vec3::new(0.0, 0.0, 0.0),
+            Vec3::new(40.0, 0.0, 0.0),
+            Vec3::new(40.0, 30.0, 0.0),
+            Vec3::new(0.0, 30.0, 0.0),
+            Vec3::new(40.0, 0.0, 12.0),
+            Vec3::new(40.0, 30.0, 12.0),
+        ];
+        let wedge_faces: &[[usize; 3]] = &[
+            [0, 2, 1],
+            [0, 3, 2],
+            [1, 2, 5],
+            [1, 5, 4],
+            [0, 1, 4],
+            [3, 5, 2],
+            [0, 4, 5],
+            [0, 5, 3],
+        ];
+        let cube: Vec<Vec3> = (0..8)
+            .map(|k| Vec3::new((k & 1) as f32, ((k >> 1) & 1) as f32, ((k >> 2) & 1) as f32) * 20.0)
+            .collect();
+        let cube_faces: &[[usize; 3]] = &[
+            [0, 2, 1],
+            [1, 2, 3],
+            [4, 5, 6],
+            [5, 7, 6],
+            [0, 1, 4],
+            [1, 5, 4],
+            [2, 6, 3],
+            [3, 6, 7],
+            [0, 4, 2],
+            [2, 4, 6],
+            [1, 3, 5],
+            [3, 7, 5],
+        ];
+        let mut seed = 0xface_u32;
+        let mut r = move || {
+            seed = seed.wrapping_mul(1_664_525).wrapping_add(1_013_904_223);
+            (seed >> 8) as f32 / (1u32 << 24) as f32 * 2.0 - 1.0
+        };
+        let mut hits = 0;
+        for (corners, faces) in [(&wedge[..], wedge_faces), (&cube[..], cube_faces)] {
+            let centre = corners.iter().copied().sum::<Vec3>() / corners.len() as f32;
+            let triangles: Vec<(Facet, Option<Vec3>)> = faces
+                .iter()
+                .map(|f| {
+                    let facet = Facet::new(f.map(|i| corners[i]));
+                    let outward = facet.normal.map(|n| {
+                        if n.dot(facet.corners[0] - centre) < 0.0 {
+                            -n
+                        } else {
+                            n
+                        }
+                    });
+                    (facet, outward)
+                })
+                .collect();
+            let planes: Vec<(Vec3, f32)> = triangles
+                .iter()
+                .filter_map(|&(f, o)| o.map(|n| (n, n.dot(f.corners[0]))))
+                .collect();
+            for _ in 0..3000 {
+                // Towards a point near the centre, mostly; a few anywhere.
+                let start = centre + Vec3::new(r(), r(), r()) * 45.0;
+                let aim = centre + Vec3::new(r(), r(), r()) * 25.0;
+                let towards = if r() > -0.8 {
+                    aim - start
+                } else {
+                    Vec3::new(r(), r(), r())
+                };
+                let dir = towards.normalize();
+                let (length, radius) = (10.0 + r().abs() * 60.0, 0.5 + r().abs() * 6.0);
+                let ours = ball_hull_sweep(start, dir, length, radius, &triangles, &planes);
+                let every = if planes.iter().all(|&(n, d)| n.dot(start) <= d) {
+                    BallSweep::Overlap
+                } else {
+                    let all = triangles.iter().map(|&(f, _)| f);
+                    ball_triangles_sweep(start, dir, length, radius, all)
+                };
+                let context = format!("{start} {dir} {length} {radius}: {ours:?} vs {every:?}");
+                match (ours, every) {
+                    (
+                        BallSweep::Hit { distance, normal },
+                        BallSweep::Hit {
+                            distance: d,
+                            normal: n,
+                        },
+                    ) => {
+                        hits += 1;
+                        assert!((distance - d).abs() <= 1e-5 * d.max(1.0), "{context}");
+                        assert!((normal - n).length() < 1e-4, "{context}");
+                    }
+                    (ours, every) => assert_eq!(ours, every, "{context}"),
+                }
+            }
+        }
+        assert!(hits > 1000 && hits < 5500, "{hits} hits of 6000");
     }
 
     #[test]

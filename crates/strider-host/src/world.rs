@@ -747,10 +747,11 @@ enum Form {
         grid: Option<Grid>,
         normals: Arc<[Option<Vec3>]>,
     },
-    /// A convex hull (a ramp), in its own frame: its surface as triangles and its faces'
-    /// planes (unit outward normal, offset).
+    /// A convex hull (a ramp), in its own frame: its surface as triangles, each with its
+    /// unit outward normal (`None` for a degenerate one), and its faces' planes (unit
+    /// outward normal, offset).
     Hull {
-        triangles: Arc<[Facet]>,
+        triangles: Arc<[(Facet, Option<Vec3>)]>,
         planes: Arc<[(Vec3, f32)]>,
     },
     /// Anything else (a ramp's convex hull): parry3d's general cast.
@@ -1126,17 +1127,21 @@ impl Iterator for CellTriangles {
 /// each triangle's plane, turned to face away from the hull's centre.
 fn hull_form((vertices, indices): (Vec<Vec3>, Vec<[u32; 3]>)) -> Form {
     let centre = vertices.iter().copied().sum::<Vec3>() / vertices.len().max(1) as f32;
-    let triangles: Vec<Facet> = indices
+    // Each triangle with its normal turned to face away from the hull's centre.
+    let triangles: Vec<(Facet, Option<Vec3>)> = indices
         .iter()
-        .map(|t| Facet::new(t.map(|i| vertices[i as usize])))
+        .map(|t| {
+            let facet = Facet::new(t.map(|i| vertices[i as usize]));
+            let a = facet.corners[0];
+            let outward = facet
+                .normal
+                .map(|n| if n.dot(a - centre) < 0.0 { -n } else { n });
+            (facet, outward)
+        })
         .collect();
     let planes = triangles
         .iter()
-        .filter_map(|facet| {
-            let (n, a) = (facet.normal?, facet.corners[0]);
-            let n = if n.dot(a - centre) < 0.0 { -n } else { n };
-            Some((n, n.dot(a)))
-        })
+        .filter_map(|&(facet, outward)| outward.map(|n| (n, n.dot(facet.corners[0]))))
         .collect();
     Form::Hull {
         triangles: triangles.into(),
