@@ -218,36 +218,100 @@ fn ball_face_sweep(start: Vec3, dir: Vec3, length: f32, radius: f32, facet: &Fac
     Face::Edges
 }
 
+/// A convex hull's triangle ([`hull_facets`]): the triangle and its unit outward normal
+/// (`None` for a degenerate triangle, or for every triangle of a hull without volume).
+pub(crate) type HullTriangle = (Facet, Option<Vec3>);
+
+/// A face's plane: its unit outward normal and offset (inside is `normal · p ≤ offset`).
+pub(crate) type Plane = (Vec3, f32);
+
+/// A convex hull's surface for [`ball_hull_sweep`], from its `vertices` and triangles
+/// (`indices` into them): each triangle with its unit normal turned to face away from the
+/// vertices' centre (`None` for a degenerate triangle), and each face's plane (that normal
+/// and its offset: inside is `normal · p ≤ offset`). A hull without volume (a plate, whose
+/// centre lies in its own plane, so that "away from the centre" means nothing) gets no
+/// outward normals: every triangle is swept against.
+pub(crate) fn hull_facets(
+    vertices: &[Vec3],
+    indices: &[[u32; 3]],
+) -> (Vec<HullTriangle>, Vec<Plane>) {
+    let centre = vertices.iter().copied().sum::<Vec3>() / vertices.len().max(1) as f32;
+    let extent = vertices
+        .iter()
+        .map(|&v| (v - centre).length())
+        .fold(0.0_f32, f32::max);
+    let mut triangles: Vec<HullTriangle> = indices
+        .iter()
+        .map(|t| {
+            let facet = Facet::new(t.map(|i| vertices[i as usize]));
+            let a = facet.corners[0];
+            let outward = facet
+                .normal
+                .map(|n| if n.dot(a - centre) < 0.0 { -n } else { n });
+            (facet, outward)
+        })
+        .collect();
+    let planes = triangles
+        .iter()
+        .filter_map(|&(facet, outward)| outward.map(|n| (n, n.dot(facet.corners[0]))))
+        .collect();
+    // The centre of a hull with volume lies well inside every face's plane (a third of a
+    // thin ramp's height); within 1e-4 of the hull's size, the hull is flat.
+    let flat = triangles.iter().any(|&(facet, outward)| {
+        outward.is_some_and(|n| n.dot(facet.corners[0] - centre) <= 1e-4 * extent)
+    });
+    if flat {
+        for (_, outward) in &mut triangles {
+            *outward = None;
+        }
+    }
+    (triangles, planes)
+}
+
 /// A ball of `radius` swept from `start` along `dir` for `length`, against the solid convex
 /// hull bounded by `triangles` (its surface, each with its unit outward normal, `None` for
-/// a degenerate one) and `planes` (each face's unit outward normal and offset: inside is
-/// `normal · p ≤ offset` for every face).
+/// a degenerate one: [`hull_facets`]) and `planes` (each face's unit outward normal and
+/// offset: inside is `normal · p ≤ offset` for every face).
 ///
 /// From outside, the ball meets the hull's surface first; the triangles' edges inside a
 /// face (its diagonals) lie within the grown hull, so they never come first. Nor does a
-/// triangle facing away from the sweep (`outward · dir ≥ 0`) whose plane lies farther than
-/// `radius` from the start, nor its edges: the ball moves along or away from its plane,
-/// so it can only reach it from inside the hull, after entering it elsewhere; an edge it
-/// shares with a triangle facing the sweep is tested with that one, and an edge between
-/// two facing away has no normal that meets the sweep head on. Such triangles (about half
-/// of a hull's) are left out; every triangle the ball may overlap at the start is kept.
+/// triangle facing away from the sweep (`outward · dir ≥ 0`) whose plane lies farther
+/// than `radius` from the start ([`hull_facing`] leaves them out): from the outer side of
+/// its plane the ball never comes within `radius` of it; from the inner side it can touch
+/// the face only after overlapping the hull; and a first contact on one of its edges or
+/// corners lies on a face that faces the sweep or, grazing it, on a face within `radius`
+/// of the start, whose triangles are kept. So is every triangle the ball may overlap at
+/// the start.
 pub(crate) fn ball_hull_sweep(
     start: Vec3,
     dir: Vec3,
     length: f32,
     radius: f32,
-    triangles: &[(Facet, Option<Vec3>)],
-    planes: &[(Vec3, f32)],
+    triangles: &[HullTriangle],
+    planes: &[Plane],
 ) -> BallSweep {
     if planes.iter().all(|&(n, d)| n.dot(start) <= d) {
         return BallSweep::Overlap;
     }
-    let facing = triangles.iter().filter_map(|&(facet, outward)| {
+    let facing = hull_facing(triangles, start, dir, radius);
+    ball_triangles_sweep(start, dir, length, radius, facing)
+}
+
+/// The triangles of a convex hull ([`hull_facets`]) that a ball of `radius` swept from
+/// `start` along `dir` may touch first or overlap at the start: all but those whose
+/// outward normal does not face the sweep and whose plane lies farther than `radius` from
+/// the start ([`ball_hull_sweep`] says why).
+fn hull_facing(
+    triangles: &[HullTriangle],
+    start: Vec3,
+    dir: Vec3,
+    radius: f32,
+) -> impl Iterator<Item = Facet> {
+    triangles.iter().filter_map(move |&(facet, outward)| {
         let away = outward
             .is_some_and(|n| n.dot(dir) >= 0.0 && n.dot(start - facet.corners[0]).abs() > radius);
         (!away).then_some(facet)
-    });
-    ball_triangles_sweep(start, dir, length, radius, facing)
+    })
 }
 
 /// A ball of `radius` swept from `start` along `dir` for `length`, against each of
@@ -650,10 +714,11 @@ mod tests {
     fn a_hull_leaves_out_only_triangles_that_cannot_come_first() {
         // A ramp (a wedge: a 40 × 30 cm base rising to 12 cm along x) and a box, each as
         // its surface triangles with outward normals and its faces' planes, swept by balls
-        // from every side and direction, starting outside. Each answer is held against
+        // from every side and direction (a few starting inside). Each answer is held against
         // the sweep over every triangle: the same overlaps and misses, the same distance
-        // and normal up to rounding (1e-5 of the distance: where two triangles of a face,
-        // or a face and its edge, are touched at once, either may answer).
+        // and normal up to rounding (1e-5 of the distance, or of 1 cm below it: where two
+        // triangles of a face, or a face and its edge, are touched at once, either may
+        // answer). Then which triangles a sweep keeps, on the box and on a flat plate.
         let wedge = [
             Vec3::new(0.0, 0.0, 0.0),
             Vec3::new(40.0, 0.0, 0.0),
@@ -662,7 +727,7 @@ mod tests {
             Vec3::new(40.0, 0.0, 12.0),
             Vec3::new(40.0, 30.0, 12.0),
         ];
-        let wedge_faces: &[[usize; 3]] = &[
+        let wedge_faces: &[[u32; 3]] = &[
             [0, 2, 1],
             [0, 3, 2],
             [1, 2, 5],
@@ -675,7 +740,7 @@ mod tests {
         let cube: Vec<Vec3> = (0..8)
             .map(|k| Vec3::new((k & 1) as f32, ((k >> 1) & 1) as f32, ((k >> 2) & 1) as f32) * 20.0)
             .collect();
-        let cube_faces: &[[usize; 3]] = &[
+        let cube_faces: &[[u32; 3]] = &[
             [0, 2, 1],
             [1, 2, 3],
             [4, 5, 6],
@@ -697,24 +762,8 @@ mod tests {
         let mut hits = 0;
         for (corners, faces) in [(&wedge[..], wedge_faces), (&cube[..], cube_faces)] {
             let centre = corners.iter().copied().sum::<Vec3>() / corners.len() as f32;
-            let triangles: Vec<(Facet, Option<Vec3>)> = faces
-                .iter()
-                .map(|f| {
-                    let facet = Facet::new(f.map(|i| corners[i]));
-                    let outward = facet.normal.map(|n| {
-                        if n.dot(facet.corners[0] - centre) < 0.0 {
-                            -n
-                        } else {
-                            n
-                        }
-                    });
-                    (facet, outward)
-                })
-                .collect();
-            let planes: Vec<(Vec3, f32)> = triangles
-                .iter()
-                .filter_map(|&(f, o)| o.map(|n| (n, n.dot(f.corners[0]))))
-                .collect();
+            let (triangles, planes) = hull_facets(corners, faces);
+            assert!(triangles.iter().all(|(_, outward)| outward.is_some()));
             for _ in 0..3000 {
                 // Towards a point near the centre, mostly; a few anywhere.
                 let start = centre + Vec3::new(r(), r(), r()) * 45.0;
@@ -738,6 +787,29 @@ mod tests {
             }
         }
         assert!(hits > 1000 && hits < 5500, "{hits} hits of 6000");
+        // Straight down onto the box from 20 cm above it: only its top's two triangles are
+        // swept against (its sides are 10 cm away, along the sweep; its bottom faces away).
+        let (triangles, _) = hull_facets(&cube, cube_faces);
+        let start = Vec3::new(10.0, 10.0, 40.0);
+        let kept: Vec<Facet> = hull_facing(&triangles, start, Vec3::NEG_Z, 2.0).collect();
+        assert_eq!(kept.len(), 2, "{kept:?}");
+        assert!(
+            kept.iter().all(|f| f.corners.iter().all(|c| c.z == 20.0)),
+            "{kept:?}"
+        );
+        // A hull without volume (a plate, both sides): no side is away from its centre, so
+        // every triangle is kept.
+        let plate = [
+            Vec3::ZERO,
+            Vec3::X * 30.0,
+            Vec3::new(30.0, 20.0, 0.0),
+            Vec3::Y * 20.0,
+        ];
+        let sides: &[[u32; 3]] = &[[0, 1, 2], [0, 2, 3], [0, 2, 1], [0, 3, 2]];
+        let (triangles, _) = hull_facets(&plate, sides);
+        assert!(triangles.iter().all(|(_, outward)| outward.is_none()));
+        let start = Vec3::new(10.0, 10.0, 5.0);
+        assert_eq!(hull_facing(&triangles, start, Vec3::NEG_Z, 1.0).count(), 4);
     }
 
     #[test]

@@ -52,8 +52,8 @@ use serde::de::{self, Deserializer, SeqAccess, Visitor};
 use strider_core::{LineQuery, SphereQuery, TraceHit, WorldQuery, all_finite, load_vec3};
 
 use crate::sweep::{
-    BallSweep, Facet, ball_box_sweep, ball_half_space_sweep, ball_hull_sweep, ball_reach,
-    ball_triangles_sweep,
+    BallSweep, Facet, HullTriangle, Plane, ball_box_sweep, ball_half_space_sweep, ball_hull_sweep,
+    ball_reach, ball_triangles_sweep, hull_facets,
 };
 
 /// How far [`World::ground_height`] looks below its start point, centimetres.
@@ -751,10 +751,10 @@ enum Form {
     /// unit outward normal (`None` for a degenerate one), and its faces' planes (unit
     /// outward normal, offset).
     Hull {
-        triangles: Arc<[(Facet, Option<Vec3>)]>,
-        planes: Arc<[(Vec3, f32)]>,
+        triangles: Arc<[HullTriangle]>,
+        planes: Arc<[Plane]>,
     },
-    /// Anything else (a ramp's convex hull): parry3d's general cast.
+    /// Anything else: parry3d's general cast.
     Other,
 }
 
@@ -1126,26 +1126,10 @@ impl Iterator for CellTriangles {
 /// The closed-form description of a convex hull from its surface triangles (its own frame):
 /// each triangle's plane, turned to face away from the hull's centre.
 fn hull_form((vertices, indices): (Vec<Vec3>, Vec<[u32; 3]>)) -> Form {
-    let centre = vertices.iter().copied().sum::<Vec3>() / vertices.len().max(1) as f32;
-    // Each triangle with its normal turned to face away from the hull's centre.
-    let triangles: Vec<(Facet, Option<Vec3>)> = indices
-        .iter()
-        .map(|t| {
-            let facet = Facet::new(t.map(|i| vertices[i as usize]));
-            let a = facet.corners[0];
-            let outward = facet
-                .normal
-                .map(|n| if n.dot(a - centre) < 0.0 { -n } else { n });
-            (facet, outward)
-        })
-        .collect();
-    let planes = triangles
-        .iter()
-        .filter_map(|&(facet, outward)| outward.map(|n| (n, n.dot(facet.corners[0]))))
-        .collect();
+    let (triangles, planes) = hull_facets(&vertices, &indices);
     Form::Hull {
         triangles: triangles.into(),
-        planes,
+        planes: planes.into(),
     }
 }
 
