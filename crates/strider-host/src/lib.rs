@@ -15,3 +15,13 @@ pub mod report;
 pub mod scenario;
 mod sweep;
 pub mod world;
+
+/// Reproducible numbers in [−1, 1) from `seed` (a linear congruential generator), for the
+/// unit tests' random sweeps and traces.
+#[cfg(test)]
+fn signed(mut seed: u32) -> impl FnMut() -> f32 {
+    move || {
+        seed = seed.wrapping_mul(1_664_525).wrapping_add(1_013_904_223);
+        (seed >> 8) as f32 / (1u32 << 24) as f32 * 2.0 - 1.0
+    }
+}

@@ -612,6 +612,7 @@ fn ray_cylinder_entry(
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::signed;
 
     #[test]
     fn an_edge_just_above_the_nearest_face_is_touched_first() {
@@ -754,11 +755,7 @@ mod tests {
             [1, 3, 5],
             [3, 7, 5],
         ];
-        let mut seed = 0xface_u32;
-        let mut r = move || {
-            seed = seed.wrapping_mul(1_664_525).wrapping_add(1_013_904_223);
-            (seed >> 8) as f32 / (1u32 << 24) as f32 * 2.0 - 1.0
-        };
+        let mut r = signed(0xface);
         let mut hits = 0;
         for (corners, faces) in [(&wedge[..], wedge_faces), (&cube[..], cube_faces)] {
             let centre = corners.iter().copied().sum::<Vec3>() / corners.len() as f32;
@@ -820,11 +817,7 @@ mod tests {
         // edge tested in turn: the same overlaps and misses, the same distances up to the
         // rounding of the heights, and the same normals where no other contact comes
         // within that rounding.
-        let mut seed = 0x5eed_u32;
-        let mut r = move || {
-            seed = seed.wrapping_mul(1_664_525).wrapping_add(1_013_904_223);
-            (seed >> 8) as f32 / (1u32 << 24) as f32 * 2.0 - 1.0
-        };
+        let mut r = signed(0x5eed);
         let ground = |x: f32, y: f32| {
             6.0 * (x / 14.0).sin() * (y / 11.0).cos() + 2.0 * (0.3 * x + 0.2 * y).sin()
         };

@@ -892,8 +892,10 @@ impl Collider {
     #[inline]
     fn ray(&self, ray: &Ray, length: f32) -> Option<(f32, Vec3)> {
         // Out of line, so that the common shapes' rays stay small enough to inline.
-        if matches!(self.form, Form::Mesh { grid: Some(_), .. })
-            && let Some(found) = self.ray_by_cells(ray, length)
+        if let Form::Mesh {
+            grid: Some(grid), ..
+        } = &self.form
+            && let Some(found) = self.ray_by_cells(grid, ray, length)
         {
             return found;
         }
@@ -909,15 +911,10 @@ impl Collider {
     /// node, finds the same triangles for several times the work: a locomotion graph's line
     /// traces are short and cross one or two cells. A hit at the segment's very end counts,
     /// as on the other shapes' closed forms (parry3d's mesh cast, which answered these
-    /// traces before, takes only hits short of it). `None` for other shapes, or more cells.
+    /// traces before, takes only hits short of it). `grid` is the heightfield's; `None`
+    /// for more cells.
     #[inline(never)]
-    fn ray_by_cells(&self, ray: &Ray, length: f32) -> Option<Option<(f32, Vec3)>> {
-        let Form::Mesh {
-            grid: Some(grid), ..
-        } = &self.form
-        else {
-            return None;
-        };
+    fn ray_by_cells(&self, grid: &Grid, ray: &Ray, length: f32) -> Option<Option<(f32, Vec3)>> {
         let mesh = self.shape.as_trimesh()?;
         let local = ray.inverse_transform_by(&self.pose);
         let end = local.origin + local.dir * length;
@@ -1057,17 +1054,26 @@ impl CellRange {
     /// The triangles of the range's cells, row by row.
     fn triangles(self) -> CellTriangles {
         let Self { nx, i, j } = self;
+        if i.0 > i.1 || j.0 > j.1 {
+            // No cells: no numbers.
+            return CellTriangles {
+                next: 0,
+                row_end: 0,
+                rows_left: 0,
+                skip: 0,
+                width: 0,
+            };
+        }
         // A row's cells' triangles are numbered one after another.
         let first = 2 * (j.0 * nx + i.0);
-        let width = 2 * (i.1 + 1).saturating_sub(i.0);
+        let width = 2 * (i.1 + 1 - i.0);
         CellTriangles {
             next: first,
             row_end: first + width,
-            rows_left: (j.1 + 1).saturating_sub(j.0).saturating_sub(1),
+            rows_left: j.1 - j.0,
             skip: 2 * nx - width,
             width,
         }
-        .empty_unless(i.0 <= i.1 && j.0 <= j.1)
     }
 }
 
@@ -1086,22 +1092,6 @@ struct CellTriangles {
     skip: u32,
     /// Numbers in a row.
     width: u32,
-}
-
-impl CellTriangles {
-    /// These numbers, or none when `some` is false.
-    fn empty_unless(self, some: bool) -> Self {
-        if some {
-            self
-        } else {
-            Self {
-                next: 0,
-                row_end: 0,
-                rows_left: 0,
-                ..self
-            }
-        }
-    }
 }
 
 impl Iterator for CellTriangles {
@@ -1897,15 +1887,8 @@ impl World {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::signed;
     use parry3d::shape::Capsule;
-
-    /// Reproducible numbers in [−1, 1) from `seed` (a linear congruential generator).
-    fn signed(mut seed: u32) -> impl FnMut() -> f32 {
-        move || {
-            seed = seed.wrapping_mul(1_664_525).wrapping_add(1_013_904_223);
-            (seed >> 8) as f32 / (1u32 << 24) as f32 * 2.0 - 1.0
-        }
-    }
 
     #[test]
     fn a_range_of_cells_lists_their_triangles_row_by_row() {
