@@ -97,7 +97,7 @@ impl<'a> Ctx<'a> {
 
 /// A bone slot's value as an index into the pose, if it names a bone.
 #[inline]
-fn bone(pose: &Pose, value: i32) -> Option<BoneIndex> {
+pub(crate) fn bone(pose: &Pose, value: i32) -> Option<BoneIndex> {
     (value >= 0 && (value as usize) < pose.len()).then_some(BoneIndex(value as u32))
 }
 
@@ -1327,6 +1327,11 @@ fn run_group<const LANES: bool>(
                 }
                 // SAFETY: as above.
                 Op::LineTrace if unsafe { crate::per_member::line_traces(o, lane0, members) } => {
+                    pc += 1;
+                    continue;
+                }
+                // SAFETY: as above.
+                Op::TwoBoneIK if unsafe { crate::per_member::two_bone_iks(o, lane0, members) } => {
                     pc += 1;
                     continue;
                 }

@@ -9,6 +9,11 @@
 //! the handlers ([`array_get`], [`array_set`], [`bone_transform`]), on the same values, in
 //! the same order, so the results are the handlers', bit for bit.
 //!
+//! Two kinds of op go further, with one piece of work for the whole batch: the traces ask
+//! the world once for every member ([`sphere_traces`], [`line_traces`]), and the two-bone
+//! IK solves the members' chains together on lanes of its own ([`two_bone_iks`]). Their
+//! answers too are the handlers', bit for bit.
+//!
 //! They run only on lanes (slot `k` of member `m` at item `k * BATCH + m`), with the whole
 //! batch at the instruction; anywhere else the handlers do the work.
 
@@ -16,12 +21,13 @@
 #![allow(unsafe_code)]
 
 use crate::exec::{
-    BATCH, Bases, Ctx, array_get, array_set, bone_transform, read_hit, trace_ends, trace_outputs,
-    trace_query,
+    BATCH, Bases, Ctx, array_get, array_set, bone, bone_transform, read_hit, trace_ends,
+    trace_outputs, trace_query,
 };
 use crate::lanes::block;
 use glam::{Quat, Vec3};
 use strider_core::{LineQuery, SphereQuery, TraceHit, Transform, WorldQuery};
+use strider_nodes::kernels::two_bone_ik::{BoneAxes, ChainInput, ChainLanes, Pole, TwoBoneIk};
 use strider_nodes::{Elem, Op};
 
 /// Member 0's item of the block of [`BATCH`] lanes of slot `slot` of the array at `base`;
@@ -204,6 +210,133 @@ pub(crate) unsafe fn sphere_traces(o: &[u32], lane0: Bases, members: &[Ctx<'_>])
             trace_query(&cx.to_world_matrix, s, e, *radius.add(m))
         })
     }
+}
+
+/// `TwoBoneIK` (operands: bones A, B and effector; target; primary and secondary axis;
+/// pole, pole kind; weight; stretch on, start, max; effector rotation; reached, distance)
+/// for a whole batch whose members share their local axes: the chains the IK solves
+/// without a fallback are solved together on lanes
+/// ([`solve_chains`](strider_nodes::kernels::two_bone_ik::solve_chains)), the others one by
+/// one as the handler solves them. Either way each member's pose and slots end as the
+/// handler leaves them, bit for bit. Returns false, doing nothing, when the members' axes
+/// differ (the handler then solves each). Inlined into the batch loop, so that the lanes'
+/// arithmetic runs on the loop's machine code (`crate::batch_code`).
+///
+/// # Safety
+/// As [`run_per_member`], with `o` a `TwoBoneIK`'s operands.
+#[inline(always)]
+pub(crate) unsafe fn two_bone_iks(o: &[u32], lane0: Bases, members: &mut [Ctx<'_>]) -> bool {
+    let (primary, secondary) = (item0(lane0.vec3s, o[4]), item0(lane0.vec3s, o[5]));
+    let bits = |v: Vec3| v.to_array().map(f32::to_bits);
+    // SAFETY: slots of the program's lanes (the caller's contract), `m < BATCH`.
+    let (p0, s0) = unsafe { (*primary, *secondary) };
+    let shared = (1..members.len()).all(|m| {
+        // SAFETY: as above.
+        let (p, s) = unsafe { (*primary.add(m), *secondary.add(m)) };
+        bits(p) == bits(p0) && bits(s) == bits(s0)
+    });
+    if !shared {
+        return false;
+    }
+    let axes = BoneAxes::new(p0, s0);
+    let mut lanes = ChainLanes::<BATCH>::default();
+    let mut chains = [None; BATCH];
+    for (m, cx) in members.iter_mut().enumerate() {
+        let bones = [o[0], o[1], o[2]].map(|k| bone(cx.pose, cx.slots.bones[k as usize]));
+        let [Some(a), Some(b), Some(c)] = bones else {
+            continue;
+        };
+        chains[m] = Some([a, b, c]);
+        // Repeated bones are the one-chain solve's to turn down.
+        if a != b && b != c && a != c {
+            let globals = [a, b, c].map(|x| cx.pose.global(x));
+            // SAFETY: as above.
+            lanes.set(m, &unsafe { chain_input(o, lane0, m, (p0, s0), globals) });
+        }
+    }
+    solve_chains(&mut lanes, &axes);
+    let (reached, distance) = (item0(lane0.bools, o[13]), item0(lane0.floats, o[14]));
+    for (m, cx) in members.iter_mut().enumerate() {
+        let report = match (chains[m], lanes.solution(m)) {
+            (Some(bones), Some(answer)) => {
+                cx.pose.set_chain_globals(bones, answer.globals);
+                Some(answer.report)
+            }
+            (Some([a, b, c]), None) => {
+                // SAFETY: as above; only earlier members' items have been written.
+                let x = unsafe { chain_input(o, lane0, m, (p0, s0), [Transform::IDENTITY; 3]) };
+                Some(x.ik.solve_with_axes(&axes, cx.pose, a, b, c, x.target))
+            }
+            (None, _) => None,
+        };
+        let (hit, miss) = report.map_or((false, f32::INFINITY), |r| {
+            (r.reached, r.distance_to_target)
+        });
+        // SAFETY: as above; every member's inputs were read before any output is written.
+        unsafe {
+            *reached.add(m) = hit;
+            *distance.add(m) = miss;
+        }
+    }
+    true
+}
+
+/// Member `m`'s `TwoBoneIK` settings and target (operands as in [`two_bone_iks`]) read off
+/// the lanes, with the batch's `axes` (primary, secondary) and the chain's current
+/// `globals`.
+///
+/// # Safety
+/// As [`run_per_member`], with `o` a `TwoBoneIK`'s operands and `m < BATCH`.
+#[inline(always)]
+unsafe fn chain_input(
+    o: &[u32],
+    lane0: Bases,
+    m: usize,
+    (primary_axis, secondary_axis): (Vec3, Vec3),
+    globals: [Transform; 3],
+) -> ChainInput {
+    // SAFETY: the caller's contract: slots of the program's lanes, `m < BATCH`.
+    unsafe {
+        let pole = *item0(lane0.vec3s, o[6]).add(m);
+        ChainInput {
+            ik: TwoBoneIk {
+                primary_axis,
+                secondary_axis,
+                pole: if *item0(lane0.ints, o[7]).add(m) == 1 {
+                    Pole::Location(pole)
+                } else {
+                    Pole::Direction(pole)
+                },
+                weight: *item0(lane0.floats, o[8]).add(m),
+                stretch: (*item0(lane0.bools, o[9]).add(m)).then_some((
+                    *item0(lane0.floats, o[10]).add(m),
+                    *item0(lane0.floats, o[11]).add(m),
+                )),
+                set_effector_rotation: *item0(lane0.bools, o[12]).add(m),
+            },
+            globals,
+            target: *item0(lane0.transforms, o[3]).add(m),
+        }
+    }
+}
+
+/// [`ChainLanes::solve`] on the machine code the batch loop runs (`crate::batch_code`):
+/// the lanes' loops eight floats at a time with AVX2. Kept out of the batch loop, whose
+/// code is large enough already.
+#[inline(never)]
+fn solve_chains(lanes: &mut ChainLanes<BATCH>, axes: &BoneAxes) {
+    #[cfg(target_arch = "x86_64")]
+    if crate::batch_code::batch_code() == crate::batch_code::BatchCode::Avx2 {
+        /// `lanes.solve(axes)` compiled for AVX2.
+        #[target_feature(enable = "avx2")]
+        fn solve_avx2(lanes: &mut ChainLanes<BATCH>, axes: &BoneAxes) {
+            lanes.solve(axes);
+        }
+        // SAFETY: the processor has AVX2 (`batch_code` checked it).
+        unsafe { solve_avx2(lanes, axes) };
+        return;
+    }
+    lanes.solve(axes);
 }
 
 /// A question the world answers for a batch at once: [`LineQuery`] or [`SphereQuery`].

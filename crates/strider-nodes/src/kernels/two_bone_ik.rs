@@ -44,6 +44,9 @@ use super::{find_quat_between, slerp, unit_q};
 use glam::{Mat3A, Quat, Vec3, Vec3A};
 use strider_core::{BoneIndex, Pose, Transform};
 
+mod lanes;
+pub use lanes::{ChainInput, ChainLanes, ChainSolution};
+
 /// Lengths (cm) at or below this are treated as zero: a bone this short has no direction.
 const LEN_EPS: f32 = 1e-4;
 
@@ -1857,5 +1860,175 @@ mod tests {
             );
             assert!(m.is_finite() && e.is_finite(), "case {i}");
         }
+    }
+
+    /// Every chain's answer from the lanes ([`ChainLanes`]) is the one-chain solve's, bit
+    /// for bit: the pose after writing the lanes' globals, and the report. Batches of 16
+    /// chains under random poses share their axes; some chains have weights below 1, poles
+    /// parallel to the chain or zero, targets on bone A, zero-length bones, non-finite
+    /// globals or a non-finite target (position or scale), which the lanes must leave to
+    /// the one-chain solve. It fails if the lanes solve fewer chains than 95 % of the
+    /// ordinary ones (a lane path that gives up on everything would pass the comparison
+    /// alone).
+    #[test]
+    fn lanes_solve_the_common_case_as_one_chain_does() {
+        const N: usize = 16;
+        let mut rng = Rng(0x2545_F491_4F6C_DD1D);
+        let (mut solved, mut ordinary) = (0, 0);
+        for batch in 0..200 {
+            let primary = rng.dir();
+            let secondary = Quat::from_axis_angle(primary, rng.range(-PI, PI))
+                * primary.any_orthonormal_vector();
+            let axes = BoneAxes::new(primary, secondary);
+            let mut poses = Vec::new();
+            let mut inputs = Vec::new();
+            let mut live = [true; N];
+            for (m, alive) in live.iter_mut().enumerate() {
+                let case = (batch * N + m) % 23;
+                let (l1, l2) = match case {
+                    0 => (0.0, 0.0),
+                    1 => (rng.range(1.0, 60.0), 0.0),
+                    _ => (rng.range(1.0, 60.0), rng.range(1.0, 60.0)),
+                };
+                let s = Arc::new(
+                    Skeleton::new(vec![
+                        bone(
+                            "pelvis",
+                            None,
+                            Transform::new(
+                                Vec3::new(rng.range(-50.0, 50.0), 0.0, rng.range(80.0, 120.0)),
+                                rng.quat(),
+                                Vec3::splat(rng.range(0.5, 2.0)),
+                            ),
+                        ),
+                        bone(
+                            "a",
+                            Some("pelvis"),
+                            Transform::from_translation_rotation(rng.dir() * 10.0, rng.quat()),
+                        ),
+                        bone(
+                            "b",
+                            Some("a"),
+                            Transform::from_translation_rotation(primary * l1, rng.quat()),
+                        ),
+                        bone(
+                            "c",
+                            Some("b"),
+                            Transform::from_translation_rotation(primary * l2, rng.quat()),
+                        ),
+                        bone(
+                            "toe",
+                            Some("c"),
+                            Transform::from_translation(rng.dir() * 9.0),
+                        ),
+                    ])
+                    .unwrap(),
+                );
+                let mut pose = Pose::new(s);
+                if case == 11 {
+                    // Bone B and the effector turned by no rotation at all.
+                    let nan = Quat::from_xyzw(f32::NAN, 0.0, 0.0, 1.0);
+                    pose.set_local(
+                        BoneIndex(2),
+                        Transform::from_translation_rotation(primary * l1, nan),
+                    );
+                }
+                let g = pose.globals().to_vec();
+                let root = g[1].translation;
+                let reach =
+                    g[2].translation.distance(root) + g[3].translation.distance(g[2].translation);
+                let goal = match case {
+                    2 => root,
+                    3 => Vec3::new(f32::NAN, 0.0, 0.0),
+                    _ => root + rng.dir() * rng.range(0.0, 1.5 * reach.max(1.0)),
+                };
+                let pole_vec = match case {
+                    4 => (goal - root) * 2.0,
+                    5 => Vec3::ZERO,
+                    _ => rng.dir() * rng.range(0.1, 100.0),
+                };
+                let pole = if rng.chance(0.5) {
+                    Pole::Direction(pole_vec)
+                } else {
+                    Pole::Location(root + pole_vec)
+                };
+                let ik = TwoBoneIk {
+                    primary_axis: primary,
+                    secondary_axis: secondary,
+                    pole,
+                    weight: match case {
+                        6 => 0.0,
+                        7 => 0.5,
+                        8 => f32::NAN,
+                        9 => 3.0,
+                        _ => 1.0,
+                    },
+                    stretch: rng
+                        .chance(0.3)
+                        .then(|| (rng.range(0.5, 1.0), rng.range(1.0, 1.5))),
+                    set_effector_rotation: rng.chance(0.5),
+                };
+                *alive = case != 10;
+                inputs.push(ChainInput {
+                    ik,
+                    globals: [g[1], g[2], g[3]],
+                    target: Transform::new(
+                        goal,
+                        rng.quat(),
+                        Vec3::splat(if case == 12 { f32::NAN } else { 1.0 }),
+                    ),
+                });
+                poses.push(pose);
+            }
+            let mut lanes = ChainLanes::<N>::default();
+            for (m, x) in inputs.iter().enumerate() {
+                if live[m] {
+                    lanes.set(m, x);
+                }
+            }
+            lanes.solve(&axes);
+            let bones = [BoneIndex(1), BoneIndex(2), BoneIndex(3)];
+            for (m, pose) in poses.into_iter().enumerate() {
+                let case = (batch * N + m) % 23;
+                ordinary += usize::from(case >= 13 || case == 9);
+                let x = inputs[m];
+                let Some(answer) = lanes.solution(m) else {
+                    continue;
+                };
+                solved += 1;
+                let ctx = format!("batch {batch} chain {m}: {x:?}");
+                assert!(live[m] && x.ik.weight >= 1.0, "{ctx}");
+                let mut one = pose.clone();
+                let report =
+                    x.ik.solve_with_axes(&axes, &mut one, bones[0], bones[1], bones[2], x.target);
+                let mut by_lanes = pose;
+                by_lanes.set_chain_globals(bones, answer.globals);
+                let bits = |p: &mut Pose| {
+                    p.globals()
+                        .iter()
+                        .map(Transform::to_bits)
+                        .collect::<Vec<_>>()
+                };
+                assert_eq!(bits(&mut by_lanes), bits(&mut one), "{ctx}");
+                let locals = |p: &Pose| {
+                    p.locals()
+                        .iter()
+                        .map(Transform::to_bits)
+                        .collect::<Vec<_>>()
+                };
+                assert_eq!(locals(&by_lanes), locals(&one), "{ctx}");
+                assert_eq!(answer.report.reached, report.reached, "{ctx}");
+                assert_eq!(
+                    answer.report.distance_to_target.to_bits(),
+                    report.distance_to_target.to_bits(),
+                    "{ctx}"
+                );
+            }
+        }
+        // Cases 13 and up (and 9, whose weight counts as 1) are ordinary chains.
+        assert!(
+            solved * 100 >= ordinary * 95,
+            "the lanes solved {solved} chains, {ordinary} ordinary ones"
+        );
     }
 }
