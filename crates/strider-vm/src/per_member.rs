@@ -755,6 +755,80 @@ mod tests {
     }
 
     #[test]
+    fn a_batch_solves_its_two_bone_iks_as_each_member_alone() {
+        // Operands: bones A, B and effector; target; primary and secondary axis; pole, pole
+        // kind; weight; stretch on, start, max; effector rotation; reached, distance.
+        let o = window(&[0, 1, 2, 0, 6, 7, 1, 0, 6, 1, 2, 3, 2, 4, 7]);
+        // What `TwoBoneIK` leaves in `n` members' slots and poses, for the batch at once
+        // or by the handler on each alone; `None` when the batch path does not take it.
+        // Most members have a chain and full weight, so that the lanes solve them; some
+        // have a repeated bone, no effector, a weight of 0.5 or NaN (the one-chain solve's
+        // cases), or their own axes (`shared` false: the member's index in them).
+        let run = |n: usize, batch: bool, shared: bool| {
+            let mut slots: Vec<Slots> = (0..n)
+                .map(|m| {
+                    let mut s = member_slots(m);
+                    let chain = match m % 6 {
+                        3 => [0, 0, 2],
+                        4 => [0, 1, -1],
+                        _ => [0, 1, 2],
+                    };
+                    s.bones[..3].copy_from_slice(&chain);
+                    let tilt = if shared { 0.0 } else { m as f32 };
+                    s.vec3s[6] = Vec3::new(1.0, 2.0, -1.0 - tilt);
+                    s.vec3s[7] = Vec3::Z;
+                    s.floats[6] = [1.0, 1.0, 0.5, 1.0, f32::NAN, 1.0, 2.0][m % 7];
+                    s
+                })
+                .collect();
+            let mut poses: Vec<Pose> = (0..n).map(member_pose).collect();
+            let mut ran = true;
+            with_contexts(&mut slots, &mut poses, |cxs| {
+                if batch {
+                    let lens = ScalarLens([SLOTS; 6]);
+                    let mut lanes = Lanes::default();
+                    lanes.load(Copies::all(&lens), cxs);
+                    // SAFETY: the operands are slots below `SLOTS` of the lanes loaded
+                    // above, and bone slots below `SLOTS` of every member.
+                    ran = unsafe { two_bone_iks(&o, lanes.bases(), cxs) };
+                    lanes.store(Copies::all(&lens), cxs);
+                } else {
+                    for cx in cxs.iter_mut() {
+                        // SAFETY: as above.
+                        unsafe { step(Op::TwoBoneIK, &o, cx, 1) };
+                    }
+                }
+            });
+            ran.then_some((slots, poses))
+        };
+        for n in [BATCH, 7, 1] {
+            let (slots, mut poses) = run(n, true, true).expect("the batch path takes it");
+            let (alone, mut alone_poses) = run(n, false, true).expect("the handler");
+            for m in 0..n {
+                assert!(
+                    slots[m].bit_eq(&alone[m]),
+                    "member {m} of {n}: slots differ"
+                );
+                assert!(
+                    same_pose(&mut poses[m], &mut alone_poses[m]),
+                    "member {m} of {n}: poses differ"
+                );
+            }
+            // The chains were solved (reached or not: a distance to the target), and the
+            // repeated bone and the missing effector were not.
+            for (m, s) in alone.iter().enumerate() {
+                assert_eq!(
+                    s.floats[7].is_finite(),
+                    !matches!(m % 6, 3 | 4),
+                    "member {m}"
+                );
+            }
+        }
+        // Members with axes of their own: each is solved by the handler.
+        assert!(run(BATCH, true, false).is_none());
+    }
+
+    #[test]
     fn other_ops_are_left_to_the_handlers() {
         for op in [
             Op::ArrayAt(Elem::Bone),
