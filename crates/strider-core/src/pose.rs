@@ -187,27 +187,58 @@ impl Pose {
     /// as in a limb, the locals are computed along the chain in one pass and `a`'s subtree
     /// is marked stale once; otherwise it is the three calls.
     pub fn set_chain_globals(&mut self, bones: [BoneIndex; 3], globals: [Transform; 3]) {
-        let [a, b, c] = bones;
-        let sk = &self.skeleton;
-        if sk.parent(b) != Some(a) || sk.parent(c) != Some(b) {
+        if !self.is_limb(bones) {
             for (bone, global) in bones.into_iter().zip(globals) {
                 self.set_global(bone, global, true);
             }
             return;
         }
-        let end = sk.subtree_end(a);
         let [ga, gb, gc] = globals.map(|g| g.load_stored());
-        let la = match sk.parent(a) {
+        let la = match self.skeleton.parent(bones[0]) {
             Some(p) => ga.relative_to(&self.global(p)),
             None => ga,
         };
+        let locals = [la, gb.relative_to(&ga), gc.relative_to(&gb)];
+        self.store_limb(bones, [ga, gb, gc], locals);
+    }
+
+    /// [`Pose::set_chain_globals`] of a limb (`b` is `a`'s child and `c` is `b`'s) whose
+    /// new locals the caller has computed as that method does: `locals[0]` is `a`'s new
+    /// global relative to its parent's current one ([`Transform::relative_to`]; the
+    /// global itself for a bone without a parent), `locals[1]` `b`'s relative to `a`'s new
+    /// global, `locals[2]` `c`'s relative to `b`'s. For solvers that compute many chains
+    /// at once (the batched two-bone IK). Returns false, changing nothing, when the bones
+    /// are not such a limb.
+    pub fn set_chain_with_locals(
+        &mut self,
+        bones: [BoneIndex; 3],
+        globals: [Transform; 3],
+        locals: [Transform; 3],
+    ) -> bool {
+        let limb = self.is_limb(bones);
+        if limb {
+            self.store_limb(bones, globals, locals);
+        }
+        limb
+    }
+
+    /// Whether `b` is `a`'s child and `c` is `b`'s.
+    fn is_limb(&self, [a, b, c]: [BoneIndex; 3]) -> bool {
+        self.skeleton.parent(b) == Some(a) && self.skeleton.parent(c) == Some(b)
+    }
+
+    /// Stores a limb's new globals and locals: its bones' globals are current, the rest of
+    /// `a`'s subtree stale.
+    fn store_limb(
+        &mut self,
+        [a, b, c]: [BoneIndex; 3],
+        globals: [Transform; 3],
+        locals: [Transform; 3],
+    ) {
+        let end = self.skeleton.subtree_end(a);
         let (ia, ib, ic) = (a.get(), b.get(), c.get());
-        self.locals[ia] = la;
-        self.locals[ib] = gb.relative_to(&ga);
-        self.locals[ic] = gc.relative_to(&gb);
-        self.globals[ia] = ga;
-        self.globals[ib] = gb;
-        self.globals[ic] = gc;
+        [self.locals[ia], self.locals[ib], self.locals[ic]] = locals;
+        [self.globals[ia], self.globals[ib], self.globals[ic]] = globals;
         // `b` and `c` lie in `a`'s subtree (depth-first order): everything below `a`
         // follows, but for the two bones set here.
         self.mark_current(ia);
@@ -398,6 +429,53 @@ mod tests {
             assert_eq!(st, want, "{}", name_of(i));
         }
         assert_eq!(bits(&mut one_pass), bits(&mut three));
+    }
+
+    #[test]
+    fn a_limb_set_with_its_locals_is_the_limb_set_at_once() {
+        // The L-shaped leg of the test above, under a root moved and turned first, so that
+        // the thigh's parent global is not the identity.
+        let s = chain();
+        let [root, thigh, calf, foot] =
+            ["root", "thigh", "calf", "foot"].map(|n| s.find(n).unwrap());
+        let mut start = Pose::new(s.clone());
+        start.set_local(
+            root,
+            Transform::new(
+                Vec3::new(3.0, -2.0, 1.0),
+                Quat::from_rotation_z(0.4),
+                Vec3::splat(1.5),
+            ),
+        );
+        let turn = Quat::from_rotation_x(core::f32::consts::FRAC_PI_2);
+        let globals = [
+            Transform::from_translation_rotation(Vec3::new(5.0, 0.0, 90.0), turn),
+            Transform::from_translation_rotation(Vec3::new(5.0, 45.0, 90.0), turn),
+            Transform::from_translation(Vec3::new(5.0, 45.0, 50.0)),
+        ];
+        let [ga, gb, gc] = globals;
+        let locals = [
+            ga.relative_to(&start.clone().global(root)),
+            gb.relative_to(&ga),
+            gc.relative_to(&gb),
+        ];
+        let mut with_locals = start.clone();
+        assert!(with_locals.set_chain_with_locals([thigh, calf, foot], globals, locals));
+        let mut at_once = start.clone();
+        at_once.set_chain_globals([thigh, calf, foot], globals);
+        assert_eq!(bits(&mut with_locals), bits(&mut at_once));
+        let locals_of = |p: &Pose| {
+            p.locals()
+                .iter()
+                .map(Transform::to_bits)
+                .collect::<Vec<_>>()
+        };
+        assert_eq!(locals_of(&with_locals), locals_of(&at_once));
+        // Bones that are not a limb: nothing changes.
+        let mut not_a_limb = start.clone();
+        assert!(!not_a_limb.set_chain_with_locals([root, calf, thigh], globals, locals));
+        assert_eq!(bits(&mut not_a_limb), bits(&mut start));
+        assert_eq!(locals_of(&not_a_limb), locals_of(&start));
     }
 
     #[test]

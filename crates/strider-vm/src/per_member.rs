@@ -250,8 +250,10 @@ pub(crate) unsafe fn two_bone_iks(o: &[u32], lane0: Bases, members: &mut [Ctx<'_
         // Repeated bones are the one-chain solve's to turn down.
         if a != b && b != c && a != c {
             let globals = [a, b, c].map(|x| cx.pose.global(x));
+            let parent = cx.pose.skeleton().parent(a).map(|p| cx.pose.global(p));
             // SAFETY: as above.
-            lanes.set(m, &unsafe { chain_input(o, lane0, m, (p0, s0), globals) });
+            let input = unsafe { chain_input(o, lane0, m, (p0, s0), globals, parent) };
+            lanes.set(m, &input);
         }
     }
     solve_chains(&mut lanes, &axes);
@@ -259,12 +261,18 @@ pub(crate) unsafe fn two_bone_iks(o: &[u32], lane0: Bases, members: &mut [Ctx<'_
     for (m, cx) in members.iter_mut().enumerate() {
         let report = match (chains[m], lanes.solution(m)) {
             (Some(bones), Some(answer)) => {
-                cx.pose.set_chain_globals(bones, answer.globals);
+                let limb = answer.locals.is_some_and(|locals| {
+                    cx.pose.set_chain_with_locals(bones, answer.globals, locals)
+                });
+                if !limb {
+                    cx.pose.set_chain_globals(bones, answer.globals);
+                }
                 Some(answer.report)
             }
             (Some([a, b, c]), None) => {
                 // SAFETY: as above; only earlier members' items have been written.
-                let x = unsafe { chain_input(o, lane0, m, (p0, s0), [Transform::IDENTITY; 3]) };
+                let x =
+                    unsafe { chain_input(o, lane0, m, (p0, s0), [Transform::IDENTITY; 3], None) };
                 Some(x.ik.solve_with_axes(&axes, cx.pose, a, b, c, x.target))
             }
             (None, _) => None,
@@ -282,8 +290,8 @@ pub(crate) unsafe fn two_bone_iks(o: &[u32], lane0: Bases, members: &mut [Ctx<'_
 }
 
 /// Member `m`'s `TwoBoneIK` settings and target (operands as in [`two_bone_iks`]) read off
-/// the lanes, with the batch's `axes` (primary, secondary) and the chain's current
-/// `globals`.
+/// the lanes, with the batch's `axes` (primary, secondary), the chain's current `globals`
+/// and bone A's parent's.
 ///
 /// # Safety
 /// As [`run_per_member`], with `o` a `TwoBoneIK`'s operands and `m < BATCH`.
@@ -294,6 +302,7 @@ unsafe fn chain_input(
     m: usize,
     (primary_axis, secondary_axis): (Vec3, Vec3),
     globals: [Transform; 3],
+    parent: Option<Transform>,
 ) -> ChainInput {
     // SAFETY: the caller's contract: slots of the program's lanes, `m < BATCH`.
     unsafe {
@@ -316,27 +325,45 @@ unsafe fn chain_input(
             },
             globals,
             target: *item0(lane0.transforms, o[3]).add(m),
+            parent,
         }
     }
 }
 
-/// [`ChainLanes::solve`] on the machine code the batch loop runs (`crate::batch_code`):
-/// the lanes' loops eight floats at a time with AVX2. Kept out of the batch loop, whose
-/// code is large enough already.
+/// [`ChainLanes::solve`] and [`ChainLanes::relate`] on the machine code the batch loop
+/// runs (`crate::batch_code`): the lanes' loops eight floats at a time with AVX2. Kept out
+/// of the batch loop, whose code is large enough already, and each in a function of its
+/// own: compiled as one, the compiler leaves part of their loops one float at a time.
 #[inline(never)]
 fn solve_chains(lanes: &mut ChainLanes<BATCH>, axes: &BoneAxes) {
     #[cfg(target_arch = "x86_64")]
     if crate::batch_code::batch_code() == crate::batch_code::BatchCode::Avx2 {
         /// `lanes.solve(axes)` compiled for AVX2.
         #[target_feature(enable = "avx2")]
+        #[inline(never)]
         fn solve_avx2(lanes: &mut ChainLanes<BATCH>, axes: &BoneAxes) {
             lanes.solve(axes);
         }
+        /// `lanes.relate()` compiled for AVX2.
+        #[target_feature(enable = "avx2")]
+        #[inline(never)]
+        fn relate_avx2(lanes: &mut ChainLanes<BATCH>) {
+            lanes.relate();
+        }
         // SAFETY: the processor has AVX2 (`batch_code` checked it).
-        unsafe { solve_avx2(lanes, axes) };
+        unsafe {
+            solve_avx2(lanes, axes);
+            relate_avx2(lanes);
+        }
         return;
     }
-    lanes.solve(axes);
+    /// `lanes.solve(axes)` on the baseline machine code.
+    #[inline(never)]
+    fn solve(lanes: &mut ChainLanes<BATCH>, axes: &BoneAxes) {
+        lanes.solve(axes);
+    }
+    solve(lanes, axes);
+    lanes.relate();
 }
 
 /// A question the world answers for a batch at once: [`LineQuery`] or [`SphereQuery`].

@@ -1863,7 +1863,8 @@ mod tests {
     }
 
     /// Every chain's answer from the lanes ([`ChainLanes`]) is the one-chain solve's, bit
-    /// for bit: the pose after writing the lanes' globals, and the report. Batches of 16
+    /// for bit: the pose after writing the lanes' globals and locals (only the globals for
+    /// a chain given a parent that is not finite), and the report. Batches of 16
     /// chains under random poses share their axes; some chains have weights below 1, poles
     /// parallel to the chain or zero, targets on bone A, zero-length bones, non-finite
     /// globals or a non-finite target (position or scale), which the lanes must leave to
@@ -1977,6 +1978,13 @@ mod tests {
                         rng.quat(),
                         Vec3::splat(if case == 12 { f32::NAN } else { 1.0 }),
                     ),
+                    // Case 13: a parent the chain's locals cannot be computed against
+                    // (the lanes leave them to `set_chain_globals`).
+                    parent: Some(if case == 13 {
+                        Transform::from_translation(Vec3::NAN)
+                    } else {
+                        g[0]
+                    }),
                 });
                 poses.push(pose);
             }
@@ -1987,6 +1995,7 @@ mod tests {
                 }
             }
             lanes.solve(&axes);
+            lanes.relate();
             let bones = [BoneIndex(1), BoneIndex(2), BoneIndex(3)];
             for (m, pose) in poses.into_iter().enumerate() {
                 let case = (batch * N + m) % 23;
@@ -2002,7 +2011,13 @@ mod tests {
                 let report =
                     x.ik.solve_with_axes(&axes, &mut one, bones[0], bones[1], bones[2], x.target);
                 let mut by_lanes = pose;
-                by_lanes.set_chain_globals(bones, answer.globals);
+                if case == 13 {
+                    assert!(answer.locals.is_none(), "{ctx}");
+                    by_lanes.set_chain_globals(bones, answer.globals);
+                } else {
+                    let locals = answer.locals.expect("a finite parent");
+                    assert!(by_lanes.set_chain_with_locals(bones, answer.globals, locals));
+                }
                 let bits = |p: &mut Pose| {
                     p.globals()
                         .iter()

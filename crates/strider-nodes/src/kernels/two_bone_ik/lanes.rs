@@ -32,14 +32,24 @@ pub struct ChainInput {
     pub globals: [Transform; 3],
     /// The effector's goal.
     pub target: Transform,
+    /// The current global transform of bone A's parent, `None` when A has none: for the
+    /// chain's new local transforms ([`ChainSolution::locals`]).
+    pub parent: Option<Transform>,
 }
 
-/// A solved chain: the new global transforms of bone A, bone B and the effector (to be
-/// written with [`strider_core::Pose::set_chain_globals`]) and the solve's report.
+/// A solved chain: the new global transforms of bone A, bone B and the effector, their
+/// local transforms when the chain is a limb, and the solve's report.
 #[derive(Clone, Copy, Debug)]
 pub struct ChainSolution {
     /// Bone A, bone B and the effector, rig space.
     pub globals: [Transform; 3],
+    /// Bone A's new global relative to its parent's (the global itself for a bone
+    /// without a parent), B's relative to A's and the effector's relative to B's, as
+    /// [`strider_core::Pose::set_chain_globals`] computes them for a chain whose B is A's
+    /// child and whose effector is B's: the two to be written with
+    /// [`strider_core::Pose::set_chain_with_locals`]. `None` when the parent's global is
+    /// not finite (then `set_chain_globals`).
+    pub locals: Option<[Transform; 3]>,
     /// As [`TwoBoneIk::solve_with_axes`] reports it.
     pub report: IkReport,
 }
@@ -357,6 +367,50 @@ fn frame_times<const N: usize>(frame: &[V<N>; 3], [lx, ly, lz]: [f32; 3]) -> V<N
     ]
 }
 
+/// `v` rotated by the unit rotation `q`, in the order of operations of
+/// [`crate::kernels::parts::rotate_parts`] (glam's `Quat * Vec3A`).
+#[inline(always)]
+fn rotate<const N: usize>(q: Q<N>, v: V<N>) -> V<N> {
+    let [x, y, z, w] = q;
+    let two = L::splat(2.0);
+    let k = w * w - ((x * x + y * y) + z * z);
+    let d = ((v[0] * x + v[1] * y) + v[2] * z) * two;
+    let w2 = w * two;
+    let c = cross([x, y, z], v);
+    [
+        (v[0] * k + x * d) + c[0] * w2,
+        (v[1] * k + y * d) + c[1] * w2,
+        (v[2] * k + z * d) + c[2] * w2,
+    ]
+}
+
+/// The transform `(translation, rotation, scale)` relative to `parent`, as
+/// `Transform::relative_to`: rotation `p.r⁻¹ · r` normalised (divided by its length, as
+/// glam's `Quat::normalize`), scale `s / p.s` and translation `(p.r⁻¹ · (t − p.t)) / p.s`,
+/// with 0 on an axis where the parent's scale is 0.
+#[inline(always)]
+fn relative_to<const N: usize>(
+    (t, r, s): (V<N>, Q<N>, V<N>),
+    (pt, pr, ps): (V<N>, Q<N>, V<N>),
+) -> (V<N>, Q<N>, V<N>) {
+    let (zero, one) = (L::splat(0.0), L::splat(1.0));
+    let inverse = |c: L<f32, N>| c.eq(zero).pick(zero, one / c);
+    let inv_s = [inverse(ps[0]), inverse(ps[1]), inverse(ps[2])];
+    let inv_r = [-pr[0], -pr[1], -pr[2], pr[3]];
+    let moved = rotate(inv_r, sub(t, pt));
+    let q = mul(inv_r, r);
+    let len = dot4(q, q).sqrt();
+    (
+        [
+            inv_s[0] * moved[0],
+            inv_s[1] * moved[1],
+            inv_s[2] * moved[2],
+        ],
+        [q[0] / len, q[1] / len, q[2] / len, q[3] / len],
+        [inv_s[0] * s[0], inv_s[1] * s[1], inv_s[2] * s[2]],
+    )
+}
+
 /// `Σ (x − x)` over the components of `v`: 0 exactly when every one is finite.
 #[inline(always)]
 fn spread<const N: usize, const C: usize>(v: &[L<f32, N>; C]) -> L<f32, N> {
@@ -416,7 +470,16 @@ pub struct ChainLanes<const N: usize> {
     rot_e: Q<N>,
     goal_rot: Q<N>,
     /// Bone A's, bone B's and the effector's scales, kept as they are.
-    scales: [[glam::Vec3; 3]; N],
+    scale_a: V<N>,
+    scale_b: V<N>,
+    scale_e: V<N>,
+    /// Bone A's parent's global transform (the identity for none), whether there is one,
+    /// and whether it is finite.
+    parent_t: V<N>,
+    parent_r: Q<N>,
+    parent_s: V<N>,
+    has_parent: [bool; N],
+    parent_finite: [bool; N],
     /// Whether the chain's scales and the target's are finite.
     finite_scales: [bool; N],
     weight: [f32; N],
@@ -431,6 +494,11 @@ pub struct ChainLanes<const N: usize> {
     qa: Q<N>,
     qb: Q<N>,
     qe: Q<N>,
+    /// The chain's new locals: translations, rotations and scales of bone A, bone B and
+    /// the effector.
+    local_t: [V<N>; 3],
+    local_r: [Q<N>; 3],
+    local_s: [V<N>; 3],
     distance: [f32; N],
     solved: [bool; N],
 }
@@ -447,7 +515,14 @@ impl<const N: usize> Default for ChainLanes<N> {
             rot_b: [L([0.0; N]); 4],
             rot_e: [L([0.0; N]); 4],
             goal_rot: [L([0.0; N]); 4],
-            scales: [[glam::Vec3::ONE; 3]; N],
+            scale_a: [L([1.0; N]); 3],
+            scale_b: [L([1.0; N]); 3],
+            scale_e: [L([1.0; N]); 3],
+            parent_t: [L([0.0; N]); 3],
+            parent_r: [L([0.0; N]); 4],
+            parent_s: [L([1.0; N]); 3],
+            has_parent: [false; N],
+            parent_finite: [false; N],
             finite_scales: [false; N],
             weight: [0.0; N],
             stretch: [None; N],
@@ -458,6 +533,9 @@ impl<const N: usize> Default for ChainLanes<N> {
             qa: [L([0.0; N]); 4],
             qb: [L([0.0; N]); 4],
             qe: [L([0.0; N]); 4],
+            local_t: [[L([0.0; N]); 3]; 3],
+            local_r: [[L([0.0; N]); 4]; 3],
+            local_s: [[L([0.0; N]); 3]; 3],
             distance: [0.0; N],
             solved: [false; N],
         }
@@ -485,7 +563,15 @@ impl<const N: usize> ChainLanes<N> {
         // `Pole::Location`: the pole is the vector from bone A.
         let from_root = [p[0] - root[0], p[1] - root[1], p[2] - root[2]];
         put(&mut self.pole, m, if location { from_root } else { p });
-        self.scales[m] = [ga.scale, gb.scale, ge.scale];
+        put(&mut self.scale_a, m, ga.scale.to_array());
+        put(&mut self.scale_b, m, gb.scale.to_array());
+        put(&mut self.scale_e, m, ge.scale.to_array());
+        let parent = x.parent.unwrap_or(Transform::IDENTITY);
+        put(&mut self.parent_t, m, parent.translation.to_array());
+        put(&mut self.parent_r, m, parent.rotation.to_array());
+        put(&mut self.parent_s, m, parent.scale.to_array());
+        self.has_parent[m] = x.parent.is_some();
+        self.parent_finite[m] = parent.is_finite();
         self.finite_scales[m] = strider_core::all_finite([
             glam::Vec3A::from(ga.scale),
             glam::Vec3A::from(gb.scale),
@@ -568,9 +654,9 @@ impl<const N: usize> ChainLanes<N> {
             normal,
         );
         let rb = self.rot_b;
-        let relative = mul([-rb[0], -rb[1], -rb[2], rb[3]], self.rot_e);
+        let e_in_b = mul([-rb[0], -rb[1], -rb[2], rb[3]], self.rot_e);
         let own = L(self.own_rotation);
-        self.qe = own.pick_all(unit(self.goal_rot), unit(mul(qb, relative)));
+        self.qe = own.pick_all(unit(self.goal_rot), unit(mul(qb, e_in_b)));
         self.new_mid = new_mid;
         self.new_end = new_end;
         self.qa = qa;
@@ -582,7 +668,30 @@ impl<const N: usize> ChainLanes<N> {
         self.solved = solved.0;
     }
 
-    /// Chain `m`'s answer from the last [`ChainLanes::solve`]: the globals and report
+    /// The new locals of the chains the last [`ChainLanes::solve`] solved (see
+    /// [`ChainSolution::locals`]). Apart from `solve` so that each, compiled alone, keeps
+    /// its operations on vector registers. Always inlined, as `solve`.
+    #[inline(always)]
+    pub fn relate(&mut self) {
+        // As `Pose::set_chain_globals`: A's relative to its parent's global, B's to A's
+        // new one, the effector's to B's.
+        let (r, qa, sa) = (self.root, self.qa, self.scale_a);
+        let (mid, qb, sb) = (self.new_mid, self.qb, self.scale_b);
+        let (end, qe, se) = (self.new_end, self.qe, self.scale_e);
+        let parent = (self.parent_t, self.parent_r, self.parent_s);
+        let (ta, ra, a_s) = relative_to((r, qa, sa), parent);
+        let has_parent = L(self.has_parent);
+        self.local_t[0] = has_parent.pick_all(ta, r);
+        self.local_r[0] = has_parent.pick_all(ra, qa);
+        self.local_s[0] = has_parent.pick_all(a_s, sa);
+        (self.local_t[1], self.local_r[1], self.local_s[1]) =
+            relative_to((mid, qb, sb), (r, qa, sa));
+        (self.local_t[2], self.local_r[2], self.local_s[2]) =
+            relative_to((end, qe, se), (mid, qb, sb));
+    }
+
+    /// Chain `m`'s answer from the last [`ChainLanes::solve`] (and [`ChainLanes::relate`]
+    /// for its locals): the globals and report
     /// [`TwoBoneIk::solve_with_axes`] gives, bit for bit; `None` when the lanes did not
     /// solve it (the caller then solves it with `solve_with_axes`).
     #[inline(always)]
@@ -593,13 +702,20 @@ impl<const N: usize> ChainLanes<N> {
         }
         let quat = |q: &Q<N>| glam::Quat::from_array(get(q, m));
         let vec = |v: &V<N>| glam::Vec3::from_array(get(v, m));
-        let [sa, sb, se] = self.scales[m];
+        let local = |k: usize| {
+            Transform::new(
+                vec(&self.local_t[k]),
+                quat(&self.local_r[k]),
+                vec(&self.local_s[k]),
+            )
+        };
         Some(ChainSolution {
             globals: [
-                Transform::new(vec(&self.root), quat(&self.qa), sa),
-                Transform::new(vec(&self.new_mid), quat(&self.qb), sb),
-                Transform::new(vec(&self.new_end), quat(&self.qe), se),
+                Transform::new(vec(&self.root), quat(&self.qa), vec(&self.scale_a)),
+                Transform::new(vec(&self.new_mid), quat(&self.qb), vec(&self.scale_b)),
+                Transform::new(vec(&self.new_end), quat(&self.qe), vec(&self.scale_e)),
             ],
+            locals: self.parent_finite[m].then(|| [local(0), local(1), local(2)]),
             report: IkReport {
                 reached: self.distance[m] <= REACH_TOLERANCE,
                 distance_to_target: self.distance[m],
