@@ -219,12 +219,12 @@ pub(crate) unsafe fn sphere_traces(o: &[u32], lane0: Bases, members: &[Ctx<'_>])
 /// ([`solve_chains`](strider_nodes::kernels::two_bone_ik::solve_chains)), the others one by
 /// one as the handler solves them. Either way each member's pose and slots end as the
 /// handler leaves them, bit for bit. Returns false, doing nothing, when the members' axes
-/// differ (the handler then solves each). Inlined into the batch loop, so that the lanes'
-/// arithmetic runs on the loop's machine code (`crate::batch_code`).
+/// differ (the handler then solves each). Out of the batch loop, as [`run_per_member`];
+/// the lanes' arithmetic runs on the loop's machine code all the same (`solve_chains`).
 ///
 /// # Safety
 /// As [`run_per_member`], with `o` a `TwoBoneIK`'s operands.
-#[inline(always)]
+#[inline(never)]
 pub(crate) unsafe fn two_bone_iks(o: &[u32], lane0: Bases, members: &mut [Ctx<'_>]) -> bool {
     let (primary, secondary) = (item0(lane0.vec3s, o[4]), item0(lane0.vec3s, o[5]));
     let bits = |v: Vec3| v.to_array().map(f32::to_bits);
@@ -242,14 +242,15 @@ pub(crate) unsafe fn two_bone_iks(o: &[u32], lane0: Bases, members: &mut [Ctx<'_
     let mut lanes = ChainLanes::<BATCH>::default();
     let mut chains = [None; BATCH];
     for (m, cx) in members.iter_mut().enumerate() {
-        let bones = [o[0], o[1], o[2]].map(|k| bone(cx.pose, cx.slots.bones[k as usize]));
-        let [Some(a), Some(b), Some(c)] = bones else {
+        // Written out: `array::map` leaves a call behind here.
+        let bone_of = |k: u32| bone(cx.pose, cx.slots.bones[k as usize]);
+        let (Some(a), Some(b), Some(c)) = (bone_of(o[0]), bone_of(o[1]), bone_of(o[2])) else {
             continue;
         };
         chains[m] = Some([a, b, c]);
         // Repeated bones are the one-chain solve's to turn down.
         if a != b && b != c && a != c {
-            let globals = [a, b, c].map(|x| cx.pose.global(x));
+            let globals = [cx.pose.global(a), cx.pose.global(b), cx.pose.global(c)];
             let parent = cx.pose.skeleton().parent(a).map(|p| cx.pose.global(p));
             // SAFETY: as above.
             let input = unsafe { chain_input(o, lane0, m, (p0, s0), globals, parent) };
