@@ -65,8 +65,42 @@ struct L<T, const N: usize>([T; N]);
 type V<const N: usize> = [L<f32, N>; 3];
 /// `N` rotations `[x, y, z, w]`, one [`L`] per component.
 type Q<const N: usize> = [L<f32, N>; 4];
-/// `N` true-or-false values.
-type B<const N: usize> = L<bool, N>;
+/// `N` true-or-false values as masks: every bit set for true, none for false (a bool
+/// per chain is compared, combined and chosen by one lane at a time).
+type B<const N: usize> = L<u32, N>;
+
+/// `c` as a mask.
+#[inline(always)]
+fn mask(c: bool) -> u32 {
+    u32::from(c).wrapping_neg()
+}
+
+/// A number chosen by a mask, bit for bit: the bits of `a` where `m` is set, else `b`'s.
+trait Choose: Copy + Default {
+    fn choose(m: u32, a: Self, b: Self) -> Self;
+}
+
+impl Choose for f32 {
+    #[inline(always)]
+    fn choose(m: u32, a: Self, b: Self) -> Self {
+        f32::from_bits((a.to_bits() & m) | (b.to_bits() & !m))
+    }
+}
+
+impl Choose for f64 {
+    #[inline(always)]
+    fn choose(m: u32, a: Self, b: Self) -> Self {
+        let m = u64::from(m) | (u64::from(m) << 32);
+        f64::from_bits((a.to_bits() & m) | (b.to_bits() & !m))
+    }
+}
+
+impl Choose for u32 {
+    #[inline(always)]
+    fn choose(m: u32, a: Self, b: Self) -> Self {
+        (a & m) | (b & !m)
+    }
+}
 
 impl<T: Copy, const N: usize> L<T, N> {
     #[inline(always)]
@@ -98,19 +132,31 @@ impl<T: Copy, const N: usize> L<T, N> {
 }
 
 impl<const N: usize> B<N> {
+    /// The masks of `N` bools.
+    #[inline(always)]
+    fn of(c: [bool; N]) -> Self {
+        L(c).map(mask)
+    }
+
+    /// Whether each mask is set.
+    #[inline(always)]
+    fn bools(self) -> [bool; N] {
+        self.map(|m| m != 0).0
+    }
+
     /// `a` where true, else `b` (a select per number, not a branch).
     #[inline(always)]
-    fn pick<T: Copy + Default>(self, a: L<T, N>, b: L<T, N>) -> L<T, N> {
+    fn pick<T: Choose>(self, a: L<T, N>, b: L<T, N>) -> L<T, N> {
         let mut out = [T::default(); N];
         for (m, o) in out.iter_mut().enumerate() {
-            *o = if self.0[m] { a.0[m] } else { b.0[m] };
+            *o = T::choose(self.0[m], a.0[m], b.0[m]);
         }
         L(out)
     }
 
     /// [`B::pick`] of each component.
     #[inline(always)]
-    fn pick_all<T: Copy + Default, const C: usize>(
+    fn pick_all<T: Choose, const C: usize>(
         self,
         mut a: [L<T, N>; C],
         b: [L<T, N>; C],
@@ -167,7 +213,7 @@ macro_rules! arithmetic {
             #[inline(always)]
             fn min(self, o: Self) -> Self { self.zip(o, <$t>::min) }
             #[inline(always)]
-            fn le(self, o: Self) -> B<N> { self.zip(o, |a, b| a <= b) }
+            fn le(self, o: Self) -> B<N> { self.zip(o, |a, b| mask(a <= b)) }
         }
     )*};
 }
@@ -181,23 +227,23 @@ impl<const N: usize> L<f32, N> {
     }
     #[inline(always)]
     fn finite(self) -> B<N> {
-        self.map(f32::is_finite)
+        self.map(|a| mask(a.is_finite()))
     }
     #[inline(always)]
     fn lt(self, o: Self) -> B<N> {
-        self.zip(o, |a, b| a < b)
+        self.zip(o, |a, b| mask(a < b))
     }
     #[inline(always)]
     fn gt(self, o: Self) -> B<N> {
-        self.zip(o, |a, b| a > b)
+        self.zip(o, |a, b| mask(a > b))
     }
     #[inline(always)]
     fn ge(self, o: Self) -> B<N> {
-        self.zip(o, |a, b| a >= b)
+        self.zip(o, |a, b| mask(a >= b))
     }
     #[inline(always)]
     fn eq(self, o: Self) -> B<N> {
-        self.zip(o, |a, b| a == b)
+        self.zip(o, |a, b| mask(a == b))
     }
 }
 
@@ -655,7 +701,7 @@ impl<const N: usize> ChainLanes<N> {
         );
         let rb = self.rot_b;
         let e_in_b = mul([-rb[0], -rb[1], -rb[2], rb[3]], self.rot_e);
-        let own = L(self.own_rotation);
+        let own = B::of(self.own_rotation);
         self.qe = own.pick_all(unit(self.goal_rot), unit(mul(qb, e_in_b)));
         self.new_mid = new_mid;
         self.new_end = new_end;
@@ -663,9 +709,9 @@ impl<const N: usize> ChainLanes<N> {
         self.qb = qb;
         // Less than full weight blends (NaN counts as 0): the one-chain solve does that.
         let full = L(self.weight).ge(L::splat(1.0));
-        let finite = spread.eq(L::splat(0.0)) & L(self.finite_scales);
-        let solved = L(self.live) & full & finite & aimed & sided & long & a_ok & b_ok;
-        self.solved = solved.0;
+        let finite = spread.eq(L::splat(0.0)) & B::of(self.finite_scales);
+        let solved = B::of(self.live) & full & finite & aimed & sided & long & a_ok & b_ok;
+        self.solved = solved.bools();
     }
 
     /// The new locals of the chains the last [`ChainLanes::solve`] solved (see
@@ -680,7 +726,7 @@ impl<const N: usize> ChainLanes<N> {
         let (end, qe, se) = (self.new_end, self.qe, self.scale_e);
         let parent = (self.parent_t, self.parent_r, self.parent_s);
         let (ta, ra, a_s) = relative_to((r, qa, sa), parent);
-        let has_parent = L(self.has_parent);
+        let has_parent = B::of(self.has_parent);
         self.local_t[0] = has_parent.pick_all(ta, r);
         self.local_r[0] = has_parent.pick_all(ra, qa);
         self.local_s[0] = has_parent.pick_all(a_s, sa);
