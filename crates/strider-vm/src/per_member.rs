@@ -533,26 +533,62 @@ mod tests {
     /// (`batch`) or by the handler on each member alone; `None` when the batch path does
     /// not take the op.
     fn run(op: Op, o: &[u32], n: usize, batch: bool) -> Option<(Vec<Slots>, Vec<Pose>)> {
-        let mut slots: Vec<Slots> = (0..n).map(member_slots).collect();
-        let mut poses: Vec<Pose> = (0..n).map(member_pose).collect();
+        // SAFETY: the operands are slots below `SLOTS` of the lanes, and arrays and bone
+        // slots below `SLOTS` of every member.
+        let batched =
+            |lane0: Bases, cxs: &mut [Ctx<'_>]| unsafe { run_per_member(op, o, lane0, cxs) };
+        let slots = (0..n).map(member_slots).collect();
+        run_members(op, o, slots, batch.then_some(&batched))
+    }
+
+    /// A batch path under test: given the lanes loaded from the members, and the members,
+    /// whether it took the op.
+    type BatchRun<'f> = dyn Fn(Bases, &mut [Ctx<'_>]) -> bool + 'f;
+
+    /// What `op` leaves in the members' `slots` and their poses: run for the batch at
+    /// once by `batched` (given the lanes loaded from the members, and the members) or,
+    /// without it, by the handler on each member alone; `None` when `batched` does not
+    /// take the op. The operands must be slots below `SLOTS`.
+    fn run_members(
+        op: Op,
+        o: &[u32],
+        mut slots: Vec<Slots>,
+        batched: Option<&BatchRun<'_>>,
+    ) -> Option<(Vec<Slots>, Vec<Pose>)> {
+        let mut poses: Vec<Pose> = (0..slots.len()).map(member_pose).collect();
         let mut ran = true;
-        with_contexts(&mut slots, &mut poses, |cxs| {
-            if batch {
+        with_contexts(&mut slots, &mut poses, |cxs| match batched {
+            Some(batched) => {
                 let lens = ScalarLens([SLOTS; 6]);
                 let mut lanes = Lanes::default();
                 lanes.load(Copies::all(&lens), cxs);
-                // SAFETY: the operands are slots below `SLOTS` of the lanes loaded above,
-                // and arrays and bone slots below `SLOTS` of every member.
-                ran = unsafe { run_per_member(op, o, lanes.bases(), cxs) };
+                ran = batched(lanes.bases(), cxs);
                 lanes.store(Copies::all(&lens), cxs);
-            } else {
+            }
+            None => {
                 for cx in cxs.iter_mut() {
-                    // SAFETY: as above.
+                    // SAFETY: the operands are slots below `SLOTS` of every member.
                     unsafe { step(op, o, cx, 1) };
                 }
             }
         });
         ran.then_some((slots, poses))
+    }
+
+    /// Asserts that two runs left every member's slots and pose the same, bit for bit.
+    fn same_members(a: &mut (Vec<Slots>, Vec<Pose>), b: &mut (Vec<Slots>, Vec<Pose>), what: &str) {
+        let n = a.0.len();
+        assert_eq!(n, b.0.len(), "{what}");
+        for m in 0..n {
+            assert!(
+                a.0[m].bit_eq(&b.0[m]),
+                "{what}: member {m} of {n}: slots differ"
+            );
+            assert!(
+                same_pose(&mut a.1[m], &mut b.1[m]),
+                "{what}: member {m} of {n}: poses differ"
+            );
+        }
     }
 
     /// Every local and global of two poses, bit for bit.
@@ -613,19 +649,11 @@ mod tests {
             assert_eq!(layout.len(), operands.len(), "{op:?}");
             let o = window(&operands);
             for n in [BATCH, 5, 1] {
-                let (batched, mut poses) =
+                let mut batched =
                     run(op, &o, n, true).unwrap_or_else(|| panic!("{op:?} is batched"));
-                let (alone, mut alone_poses) = run(op, &o, n, false).expect("the handler");
-                for m in 0..n {
-                    assert!(
-                        batched[m].bit_eq(&alone[m]),
-                        "{op:?} {operands:?}: member {m} of {n}: slots differ"
-                    );
-                    assert!(
-                        same_pose(&mut poses[m], &mut alone_poses[m]),
-                        "{op:?} {operands:?}: member {m} of {n}: poses differ"
-                    );
-                }
+                let mut alone = run(op, &o, n, false).expect("the handler");
+                same_members(&mut batched, &mut alone, &format!("{op:?} {operands:?}"));
+                let batched = batched.0;
                 // The batch did something: some member's slots changed (a test that
                 // compares two runs that do nothing would pass).
                 if matches!(op, Op::ArrayAt(_) | Op::GetTransform) {
@@ -793,7 +821,7 @@ mod tests {
         // have a repeated bone, no effector, a weight of 0.5 or NaN (the one-chain solve's
         // cases), or their own axes (`shared` false: the member's index in them).
         let run = |n: usize, batch: bool, shared: bool| {
-            let mut slots: Vec<Slots> = (0..n)
+            let slots = (0..n)
                 .map(|m| {
                     let mut s = member_slots(m);
                     let chain = match m % 6 {
@@ -809,39 +837,17 @@ mod tests {
                     s
                 })
                 .collect();
-            let mut poses: Vec<Pose> = (0..n).map(member_pose).collect();
-            let mut ran = true;
-            with_contexts(&mut slots, &mut poses, |cxs| {
-                if batch {
-                    let lens = ScalarLens([SLOTS; 6]);
-                    let mut lanes = Lanes::default();
-                    lanes.load(Copies::all(&lens), cxs);
-                    // SAFETY: the operands are slots below `SLOTS` of the lanes loaded
-                    // above, and bone slots below `SLOTS` of every member.
-                    ran = unsafe { two_bone_iks(&o, lanes.bases(), cxs) };
-                    lanes.store(Copies::all(&lens), cxs);
-                } else {
-                    for cx in cxs.iter_mut() {
-                        // SAFETY: as above.
-                        unsafe { step(Op::TwoBoneIK, &o, cx, 1) };
-                    }
-                }
-            });
-            ran.then_some((slots, poses))
+            // SAFETY: the operands are slots below `SLOTS` of the lanes, and bone slots
+            // below `SLOTS` of every member.
+            let batched =
+                |lane0: Bases, cxs: &mut [Ctx<'_>]| unsafe { two_bone_iks(&o, lane0, cxs) };
+            run_members(Op::TwoBoneIK, &o, slots, batch.then_some(&batched))
         };
         for n in [BATCH, 7, 1] {
-            let (slots, mut poses) = run(n, true, true).expect("the batch path takes it");
-            let (alone, mut alone_poses) = run(n, false, true).expect("the handler");
-            for m in 0..n {
-                assert!(
-                    slots[m].bit_eq(&alone[m]),
-                    "member {m} of {n}: slots differ"
-                );
-                assert!(
-                    same_pose(&mut poses[m], &mut alone_poses[m]),
-                    "member {m} of {n}: poses differ"
-                );
-            }
+            let mut batched = run(n, true, true).expect("the batch path takes it");
+            let mut alone = run(n, false, true).expect("the handler");
+            same_members(&mut batched, &mut alone, "TwoBoneIK");
+            let alone = alone.0;
             // The chains were solved (reached or not: a distance to the target), and the
             // repeated bone and the missing effector were not.
             for (m, s) in alone.iter().enumerate() {

@@ -28,10 +28,15 @@ pub fn unit_parts(q: [f32; 4]) -> [f32; 4] {
     }
 }
 
-/// The product `a · b` of two rotations `[x, y, z, w]` (`b` applied first).
+/// The product `a · b` of two rotations `[x, y, z, w]` (`b` applied first). Of any
+/// number type with these operations: `f32`, or one per chain of a batch (the two-bone
+/// IK's lanes), in the same order.
 #[must_use]
 #[inline(always)]
-pub fn mul_parts(a: [f32; 4], b: [f32; 4]) -> [f32; 4] {
+pub fn mul_parts<T>(a: [T; 4], b: [T; 4]) -> [T; 4]
+where
+    T: Copy + core::ops::Add<Output = T> + core::ops::Mul<Output = T> + core::ops::Neg<Output = T>,
+{
     let [lx, ly, lz, lw] = a;
     let [rx, ry, rz, rw] = b;
     [

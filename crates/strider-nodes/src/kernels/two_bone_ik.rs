@@ -1520,6 +1520,36 @@ mod tests {
         }
     }
 
+    /// A pelvis at `pelvis`, a bone `a` under it at a random offset, and `b`, `c` placed
+    /// `l1` and `l2` along `primary` from their parents, each turned at random, and a `toe`
+    /// under `c`.
+    fn random_leg(
+        rng: &mut Rng,
+        pelvis: Transform,
+        primary: Vec3,
+        (l1, l2): (f32, f32),
+    ) -> Arc<Skeleton> {
+        let turned =
+            |rng: &mut Rng, offset: Vec3| Transform::from_translation_rotation(offset, rng.quat());
+        let a = {
+            let offset = rng.dir() * 10.0;
+            turned(rng, offset)
+        };
+        let b = turned(rng, primary * l1);
+        let c = turned(rng, primary * l2);
+        let toe = Transform::from_translation(rng.dir() * 10.0);
+        Arc::new(
+            Skeleton::new(vec![
+                bone("pelvis", None, pelvis),
+                bone("a", Some("pelvis"), a),
+                bone("b", Some("a"), b),
+                bone("c", Some("b"), c),
+                bone("toe", Some("c"), toe),
+            ])
+            .unwrap(),
+        )
+    }
+
     #[test]
     fn random_solve_positions() {
         let mut rng = Rng(0x9E37_79B9_7F4A_7C15);
@@ -1618,32 +1648,7 @@ mod tests {
                 Vec3::splat(scale),
             );
             let (l1, l2) = (rng.range(1.0, 60.0), rng.range(1.0, 60.0));
-            let s = Arc::new(
-                Skeleton::new(vec![
-                    bone("pelvis", None, pelvis),
-                    bone(
-                        "a",
-                        Some("pelvis"),
-                        Transform::from_translation_rotation(rng.dir() * 10.0, rng.quat()),
-                    ),
-                    bone(
-                        "b",
-                        Some("a"),
-                        Transform::from_translation_rotation(primary * l1, rng.quat()),
-                    ),
-                    bone(
-                        "c",
-                        Some("b"),
-                        Transform::from_translation_rotation(primary * l2, rng.quat()),
-                    ),
-                    bone(
-                        "toe",
-                        Some("c"),
-                        Transform::from_translation(rng.dir() * 10.0),
-                    ),
-                ])
-                .unwrap(),
-            );
+            let s = random_leg(&mut rng, pelvis, primary, (l1, l2));
             let (a, b, c) = (BoneIndex(1), BoneIndex(2), BoneIndex(3));
             let mut pose = Pose::new(s);
             let before = pose.globals().to_vec();
@@ -1891,40 +1896,12 @@ mod tests {
                     1 => (rng.range(1.0, 60.0), 0.0),
                     _ => (rng.range(1.0, 60.0), rng.range(1.0, 60.0)),
                 };
-                let s = Arc::new(
-                    Skeleton::new(vec![
-                        bone(
-                            "pelvis",
-                            None,
-                            Transform::new(
-                                Vec3::new(rng.range(-50.0, 50.0), 0.0, rng.range(80.0, 120.0)),
-                                rng.quat(),
-                                Vec3::splat(rng.range(0.5, 2.0)),
-                            ),
-                        ),
-                        bone(
-                            "a",
-                            Some("pelvis"),
-                            Transform::from_translation_rotation(rng.dir() * 10.0, rng.quat()),
-                        ),
-                        bone(
-                            "b",
-                            Some("a"),
-                            Transform::from_translation_rotation(primary * l1, rng.quat()),
-                        ),
-                        bone(
-                            "c",
-                            Some("b"),
-                            Transform::from_translation_rotation(primary * l2, rng.quat()),
-                        ),
-                        bone(
-                            "toe",
-                            Some("c"),
-                            Transform::from_translation(rng.dir() * 9.0),
-                        ),
-                    ])
-                    .unwrap(),
+                let pelvis = Transform::new(
+                    Vec3::new(rng.range(-50.0, 50.0), 0.0, rng.range(80.0, 120.0)),
+                    rng.quat(),
+                    Vec3::splat(rng.range(0.5, 2.0)),
                 );
+                let s = random_leg(&mut rng, pelvis, primary, (l1, l2));
                 let mut pose = Pose::new(s);
                 if case == 11 {
                     // Bone B and the effector turned by no rotation at all.

@@ -19,6 +19,7 @@
 use super::{
     BoneAxes, IkReport, LEN_EPS, PARALLEL_EPS, Pole, REACH_TOLERANCE, TwoBoneIk, stretch_scale,
 };
+use crate::kernels::parts::mul_parts;
 use core::ops::{Add, BitAnd, Div, Mul, Neg, Sub};
 use strider_core::Transform;
 
@@ -342,20 +343,6 @@ fn dot4<const N: usize>(q: Q<N>, r: Q<N>) -> L<f32, N> {
     (q[0] * r[0] + q[2] * r[2]) + (q[1] * r[1] + q[3] * r[3])
 }
 
-/// The product `a · b` of two rotations (`b` applied first), in the order of operations
-/// of [`crate::kernels::parts::mul_parts`] (glam's).
-#[inline(always)]
-fn mul<const N: usize>(a: Q<N>, b: Q<N>) -> Q<N> {
-    let [lx, ly, lz, lw] = a;
-    let [rx, ry, rz, rw] = b;
-    [
-        (lx * rw + lw * rx) + (-(lz * ry) + ly * rz),
-        (-(lx * rz) + lw * ry) + (lz * rx + ly * rw),
-        (lx * ry + lw * rz) + (lz * rw + -(ly * rx)),
-        (-(lx * rx) + lw * rw) + (-(lz * rz) + -(ly * ry)),
-    ]
-}
-
 /// `q` normalised as `unit_q` (`(x² + z²) + (y² + w²)`, one division per component), or the
 /// identity where its length is zero or not finite.
 #[inline(always)]
@@ -444,7 +431,7 @@ fn relative_to<const N: usize>(
     let inv_s = [inverse(ps[0]), inverse(ps[1]), inverse(ps[2])];
     let inv_r = [-pr[0], -pr[1], -pr[2], pr[3]];
     let moved = rotate(inv_r, sub(t, pt));
-    let q = mul(inv_r, r);
+    let q = mul_parts(inv_r, r);
     let len = dot4(q, q).sqrt();
     (
         [
@@ -700,9 +687,9 @@ impl<const N: usize> ChainLanes<N> {
             normal,
         );
         let rb = self.rot_b;
-        let e_in_b = mul([-rb[0], -rb[1], -rb[2], rb[3]], self.rot_e);
+        let e_in_b = mul_parts([-rb[0], -rb[1], -rb[2], rb[3]], self.rot_e);
         let own = B::of(self.own_rotation);
-        self.qe = own.pick_all(unit(self.goal_rot), unit(mul(qb, e_in_b)));
+        self.qe = own.pick_all(unit(self.goal_rot), unit(mul_parts(qb, e_in_b)));
         self.new_mid = new_mid;
         self.new_end = new_end;
         self.qa = qa;
