@@ -27,7 +27,9 @@ use crate::exec::{
 use crate::lanes::block;
 use glam::{Quat, Vec3};
 use strider_core::{LineQuery, SphereQuery, TraceHit, Transform, WorldQuery};
-use strider_nodes::kernels::two_bone_ik::{BoneAxes, ChainInput, ChainLanes, Pole, TwoBoneIk};
+use strider_nodes::kernels::two_bone_ik::{
+    BoneAxes, ChainInput, ChainLanes, LANES_MATCH_GLAM, Pole, TwoBoneIk,
+};
 use strider_nodes::{Elem, Op};
 
 /// Member 0's item of the block of [`BATCH`] lanes of slot `slot` of the array at `base`;
@@ -216,11 +218,13 @@ pub(crate) unsafe fn sphere_traces(o: &[u32], lane0: Bases, members: &[Ctx<'_>])
 /// pole, pole kind; weight; stretch on, start, max; effector rotation; reached, distance)
 /// for a whole batch whose members share their local axes: the chains the IK solves
 /// without a fallback are solved together on lanes
-/// ([`solve_chains`](strider_nodes::kernels::two_bone_ik::solve_chains)), the others one by
-/// one as the handler solves them. Either way each member's pose and slots end as the
-/// handler leaves them, bit for bit. Returns false, doing nothing, when the members' axes
-/// differ (the handler then solves each). Out of the batch loop, as [`run_per_member`];
-/// the lanes' arithmetic runs on the loop's machine code all the same (`solve_chains`).
+/// ([`ChainLanes`], through [`solve_chains`]), the others one by one as the handler solves
+/// them. Either way each member's pose and slots end as the handler leaves them, bit for
+/// bit. Returns false, doing nothing, when the members' axes differ or cannot be solved on
+/// lanes, or on a build where the lanes' arithmetic is not glam's
+/// ([`LANES_MATCH_GLAM`]): the handler then solves each member. Out of the batch loop, as
+/// [`run_per_member`]; the lanes' arithmetic runs on the loop's machine code all the same
+/// ([`solve_chains`]).
 ///
 /// # Safety
 /// As [`run_per_member`], with `o` a `TwoBoneIK`'s operands.
@@ -235,10 +239,13 @@ pub(crate) unsafe fn two_bone_iks(o: &[u32], lane0: Bases, members: &mut [Ctx<'_
         let (p, s) = unsafe { (*primary.add(m), *secondary.add(m)) };
         bits(p) == bits(p0) && bits(s) == bits(s0)
     });
-    if !shared {
+    if !(shared && LANES_MATCH_GLAM) {
         return false;
     }
     let axes = BoneAxes::new(p0, s0);
+    if !ChainLanes::<BATCH>::solves_with(&axes) {
+        return false;
+    }
     let mut lanes = ChainLanes::<BATCH>::default();
     let mut chains = [None; BATCH];
     for (m, cx) in members.iter_mut().enumerate() {
@@ -262,6 +269,8 @@ pub(crate) unsafe fn two_bone_iks(o: &[u32], lane0: Bases, members: &mut [Ctx<'_
     for (m, cx) in members.iter_mut().enumerate() {
         let report = match (chains[m], lanes.solution(m)) {
             (Some(bones), Some(answer)) => {
+                #[cfg(test)]
+                tests::SOLVED_ON_LANES.with(|solved| solved.set(solved.get() + 1));
                 let limb = answer.locals.is_some_and(|locals| {
                     cx.pose.set_chain_with_locals(bones, answer.globals, locals)
                 });
@@ -281,7 +290,8 @@ pub(crate) unsafe fn two_bone_iks(o: &[u32], lane0: Bases, members: &mut [Ctx<'_
         let (hit, miss) = report.map_or((false, f32::INFINITY), |r| {
             (r.reached, r.distance_to_target)
         });
-        // SAFETY: as above; every member's inputs were read before any output is written.
+        // SAFETY: as above. Each member's items are its own, and a member's outputs are
+        // written after its inputs were read (again, for a chain solved alone).
         unsafe {
             *reached.add(m) = hit;
             *distance.add(m) = miss;
@@ -452,6 +462,13 @@ mod tests {
 
     /// How many scalar slots of each type, and arrays of each element type, a member has.
     const SLOTS: usize = 8;
+
+    thread_local! {
+        /// How many chains `two_bone_iks` took from the lanes, so that a test can check
+        /// that the lanes solved some.
+        pub(super) static SOLVED_ON_LANES: std::cell::Cell<usize> =
+            const { std::cell::Cell::new(0) };
+    }
 
     /// A three-bone chain whose rest pose is turned, moved and scaled at every bone.
     fn chain() -> Arc<Skeleton> {
@@ -819,7 +836,9 @@ mod tests {
         // or by the handler on each alone; `None` when the batch path does not take it.
         // Most members have a chain and full weight, so that the lanes solve them; some
         // have a repeated bone, no effector, a weight of 0.5 or NaN (the one-chain solve's
-        // cases), or their own axes (`shared` false: the member's index in them).
+        // cases), bones that are not a limb (written one by one), or their own axes
+        // (`shared` false: the member's index in them). Stretch starts at 0.8 of the
+        // chain's reach, for the members that stretch.
         let run = |n: usize, batch: bool, shared: bool| {
             let slots = (0..n)
                 .map(|m| {
@@ -827,6 +846,7 @@ mod tests {
                     let chain = match m % 6 {
                         3 => [0, 0, 2],
                         4 => [0, 1, -1],
+                        5 => [0, 2, 1],
                         _ => [0, 1, 2],
                     };
                     s.bones[..3].copy_from_slice(&chain);
@@ -834,6 +854,7 @@ mod tests {
                     s.vec3s[6] = Vec3::new(1.0, 2.0, -1.0 - tilt);
                     s.vec3s[7] = Vec3::Z;
                     s.floats[6] = [1.0, 1.0, 0.5, 1.0, f32::NAN, 1.0, 2.0][m % 7];
+                    (s.floats[2], s.floats[3]) = (0.8, 1.3);
                     s
                 })
                 .collect();
@@ -844,7 +865,13 @@ mod tests {
             run_members(Op::TwoBoneIK, &o, slots, batch.then_some(&batched))
         };
         for n in [BATCH, 7, 1] {
+            SOLVED_ON_LANES.with(|solved| solved.set(0));
             let mut batched = run(n, true, true).expect("the batch path takes it");
+            let on_lanes = SOLVED_ON_LANES.with(std::cell::Cell::get);
+            assert!(
+                on_lanes > 0 || !LANES_MATCH_GLAM,
+                "{n} members: none on lanes"
+            );
             let mut alone = run(n, false, true).expect("the handler");
             same_members(&mut batched, &mut alone, "TwoBoneIK");
             let alone = alone.0;

@@ -45,7 +45,7 @@ use glam::{Mat3A, Quat, Vec3, Vec3A};
 use strider_core::{BoneIndex, Pose, Transform};
 
 mod lanes;
-pub use lanes::{ChainInput, ChainLanes, ChainSolution};
+pub use lanes::{ChainInput, ChainLanes, ChainSolution, LANES_MATCH_GLAM};
 
 /// Lengths (cm) at or below this are treated as zero: a bone this short has no direction.
 const LEN_EPS: f32 = 1e-4;
@@ -1875,8 +1875,10 @@ mod tests {
     /// globals or a non-finite target (position or scale), which the lanes must leave to
     /// the one-chain solve. It fails if the lanes solve fewer chains than 95 % of the
     /// ordinary ones (a lane path that gives up on everything would pass the comparison
-    /// alone).
+    /// alone). Where glam computes otherwise ([`LANES_MATCH_GLAM`]) there is nothing to
+    /// compare.
     #[test]
+    #[cfg(all(target_arch = "x86_64", not(target_feature = "fma")))]
     fn lanes_solve_the_common_case_as_one_chain_does() {
         const N: usize = 16;
         let mut rng = Rng(0x2545_F491_4F6C_DD1D);
@@ -1904,7 +1906,7 @@ mod tests {
                 let s = random_leg(&mut rng, pelvis, primary, (l1, l2));
                 let mut pose = Pose::new(s);
                 if case == 11 {
-                    // Bone B and the effector turned by no rotation at all.
+                    // Bone B's rotation not a number: its global and the effector's too.
                     let nan = Quat::from_xyzw(f32::NAN, 0.0, 0.0, 1.0);
                     pose.set_local(
                         BoneIndex(2),

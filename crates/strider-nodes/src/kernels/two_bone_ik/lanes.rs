@@ -1,13 +1,14 @@
-//! The two-bone IK's common case for up to `N` chains at once ([`solve_chains`]), one
+//! The two-bone IK's common case for up to `N` chains at once ([`ChainLanes`]), one
 //! array per component, so that the compiler runs the same arithmetic for several chains
 //! in one vector instruction.
 //!
 //! The common case is a chain that [`TwoBoneIk::solve_with_axes`] solves without any of its
 //! fallbacks: finite globals and target, a target away from bone A, a usable pole, bones of
 //! non-zero length, full weight, and both local axes usable (its one-step frame rotation).
-//! For such a chain the result here is `solve_with_axes`'s, bit for bit: every value is
-//! computed with the same operations in the same order (glam's, on separate components, as
-//! in [`super::super::parts`]), and the cases of the law of cosines and of reading a
+//! For such a chain the result here is `solve_with_axes`'s, bit for bit, on x86-64 builds
+//! without fused multiply-add ([`LANES_MATCH_GLAM`]): every value is computed with the
+//! same operations in the same order (glam's SSE2 code's, on separate components, as in
+//! [`super::super::parts`]), and the cases of the law of cosines and of reading a
 //! rotation off a frame are chosen per chain as selects rather than branches. Chains that
 //! need a fallback are left to `solve_with_axes` (their answer is `None`), so the two paths
 //! together give the one-chain answer for every input.
@@ -23,11 +24,20 @@ use crate::kernels::parts::mul_parts;
 use core::ops::{Add, BitAnd, Div, Mul, Neg, Sub};
 use strider_core::Transform;
 
+/// Whether this build's glam computes with the operations and order the lanes copy (its
+/// SSE2 code, without fused multiply-add), so that the lanes' answers are the one-chain
+/// solve's bit for bit. Elsewhere (other processors' SIMD code, or `fma`, which rounds a
+/// product and a sum once) a caller that needs the one-chain answers solves each chain
+/// alone.
+pub const LANES_MATCH_GLAM: bool = cfg!(all(target_arch = "x86_64", not(target_feature = "fma")));
+
 /// One chain's input to [`ChainLanes::set`]: its settings and the current globals of bone A,
 /// bone B and the effector, and the target (all rig space, cm).
 #[derive(Clone, Copy, Debug)]
 pub struct ChainInput {
-    /// The solve's settings (its axes are the shared [`BoneAxes`] given beside).
+    /// The solve's settings. Its `primary_axis` and `secondary_axis` are not read: the
+    /// lanes take the axes shared by all chains ([`BoneAxes`], given to
+    /// [`ChainLanes::solve`]).
     pub ik: TwoBoneIk,
     /// The current global transforms of bone A, bone B and the effector.
     pub globals: [Transform; 3],
@@ -330,7 +340,8 @@ fn direction<const N: usize>(v: V<N>) -> (V<N>, B<N>) {
     )
 }
 
-/// Whether `LEN_EPS` is exceeded by a finite squared length `len_sq` (`has_direction`).
+/// Whether `v`'s squared length is finite and above `LEN_EPS²` (`has_direction`; where the
+/// squared length overflows, the one-chain solve looks further and the lanes give up).
 #[inline(always)]
 fn has_direction<const N: usize>(v: V<N>) -> B<N> {
     let len_sq = dot(v, v);
@@ -615,6 +626,14 @@ impl<const N: usize> ChainLanes<N> {
         self.stretch[m] = x.ik.stretch;
         self.own_rotation[m] = x.ik.set_effector_rotation;
         self.live[m] = true;
+    }
+
+    /// Whether chains with the local axes `axes` can be solved on lanes at all: when both
+    /// axes are usable (the one-chain solve's one-step frame rotation); otherwise
+    /// [`ChainLanes::solve`] solves none.
+    #[must_use]
+    pub fn solves_with(axes: &BoneAxes) -> bool {
+        axes.local_inverse.is_some()
     }
 
     /// Solves every chain set since the lanes were made that
