@@ -911,8 +911,20 @@ fn every_public_kernel_has_a_benchmark() {
     // benches/kernels.rs times every kernel of strider_nodes::kernels (docs/performance.md).
     let bench = std::fs::read_to_string("benches/kernels.rs").expect("benches/kernels.rs");
     let mut missing = Vec::new();
-    for entry in std::fs::read_dir("crates/strider-nodes/src/kernels").expect("kernels dir") {
-        let path = entry.expect("entry").path();
+    // The kernels' sources, and those of their submodules (`two_bone_ik/lanes.rs`).
+    let mut sources = Vec::new();
+    let mut dirs = vec![std::path::PathBuf::from("crates/strider-nodes/src/kernels")];
+    while let Some(dir) = dirs.pop() {
+        for entry in std::fs::read_dir(&dir).expect("kernels dir") {
+            let path = entry.expect("entry").path();
+            if path.is_dir() {
+                dirs.push(path);
+            } else {
+                sources.push(path);
+            }
+        }
+    }
+    for path in sources {
         let text = std::fs::read_to_string(&path).expect("kernel source");
         for line in text.lines() {
             let Some(rest) = line.strip_prefix("pub fn ") else {
