@@ -257,6 +257,15 @@ pub(crate) fn trace_outputs(
     }
 }
 
+/// A two-bone IK's local axes (primary, secondary) as bits: equal keys are the same axes,
+/// bit for bit, so [`BoneAxes::new`] of one serves the other.
+#[inline(always)]
+pub(crate) fn axes_key(primary: Vec3, secondary: Vec3) -> [[u32; 3]; 2] {
+    // Written out: `array::map` leaves calls behind in the batch's IK.
+    let bits = |v: Vec3| [v.x.to_bits(), v.y.to_bits(), v.z.to_bits()];
+    [bits(primary), bits(secondary)]
+}
+
 /// The bone axes of a two-bone IK instruction's last solve, kept while it runs for a
 /// batch's members: the next member with the same axes, bit for bit (a crowd's legs, whose
 /// axes are the graph's constants), solves with them instead of preparing its own.
@@ -267,7 +276,7 @@ impl PreparedAxes {
     /// [`BoneAxes::new`] of `primary` and `secondary` (local bone axes).
     #[inline(always)]
     fn get(&mut self, primary: Vec3, secondary: Vec3) -> &BoneAxes {
-        let key = [primary, secondary].map(|v| v.to_array().map(f32::to_bits));
+        let key = axes_key(primary, secondary);
         if self.0.as_ref().is_some_and(|(kept, _)| *kept != key) {
             self.0 = None;
         }

@@ -21,7 +21,7 @@
 #![allow(unsafe_code)]
 
 use crate::exec::{
-    BATCH, Bases, Ctx, array_get, array_set, bone, bone_transform, read_hit, trace_ends,
+    BATCH, Bases, Ctx, array_get, array_set, axes_key, bone, bone_transform, read_hit, trace_ends,
     trace_outputs, trace_query,
 };
 use crate::lanes::block;
@@ -231,13 +231,13 @@ pub(crate) unsafe fn sphere_traces(o: &[u32], lane0: Bases, members: &[Ctx<'_>])
 #[inline(never)]
 pub(crate) unsafe fn two_bone_iks(o: &[u32], lane0: Bases, members: &mut [Ctx<'_>]) -> bool {
     let (primary, secondary) = (item0(lane0.vec3s, o[4]), item0(lane0.vec3s, o[5]));
-    let bits = |v: Vec3| v.to_array().map(f32::to_bits);
     // SAFETY: slots of the program's lanes (the caller's contract), `m < BATCH`.
     let (p0, s0) = unsafe { (*primary, *secondary) };
+    let key = axes_key(p0, s0);
     let shared = (1..members.len()).all(|m| {
         // SAFETY: as above.
         let (p, s) = unsafe { (*primary.add(m), *secondary.add(m)) };
-        bits(p) == bits(p0) && bits(s) == bits(s0)
+        axes_key(p, s) == key
     });
     if !(shared && LANES_MATCH_GLAM) {
         return false;
