@@ -114,13 +114,12 @@ pub(crate) fn array_get<T: Copy>(array: &[T], index: i32, zero: &T) -> T {
     *item.unwrap_or(zero)
 }
 
-/// `ArraySetAt`: item `index` of array variable `array` (of `arrays`, an instance's arrays
-/// of one element type) becomes `value`; a negative index, or one at or past the end,
-/// changes nothing (and a negative one does not look the array up).
+/// `ArraySetAt`: item `index` of `array` becomes `value`; a negative index, or one at or
+/// past the end, changes nothing.
 #[inline(always)]
-pub(crate) fn array_set<T>(arrays: &mut [Vec<T>], array: usize, index: i32, value: T) {
+pub(crate) fn array_set<T>(array: &mut [T], index: i32, value: T) {
     if index >= 0
-        && let Some(x) = arrays[array].get_mut(index as usize)
+        && let Some(x) = array.get_mut(index as usize)
     {
         *x = value;
     }
@@ -910,7 +909,7 @@ macro_rules! execute {
                 macro_rules! set {
                     ($sc:ident, $ar:expr, $zero:expr) => {{
                         let value = scalar!($sc, 2);
-                        array_set(&mut $ar, at!(0), index, value);
+                        array_set(&mut $ar[at!(0)], index, value);
                     }};
                 }
                 by_elem!(e, $s, set);

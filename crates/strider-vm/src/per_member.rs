@@ -115,9 +115,13 @@ pub(crate) unsafe fn run_per_member(
         ($sc:ident, $ar:ident, $zero:expr, |$m:ident| $then:expr) => {{
             let (array, index, out) = (o[0] as usize, lane!(ints, 1), lane!($sc, 2));
             for ($m, cx) in members.iter().enumerate() {
-                // SAFETY: as above; the index is read before the element is written (they
-                // may share a slot).
-                unsafe { *out.add($m) = array_get(&cx.slots.$ar[array], *index.add($m), &$zero) };
+                // SAFETY: as above; every member has the program's array variables, and
+                // operand 0 is one of them (the op's layout). The index is read before the
+                // element is written (they may share a slot).
+                unsafe {
+                    let array = cx.slots.$ar.get_unchecked(array);
+                    *out.add($m) = array_get(array, *index.add($m), &$zero);
+                }
                 $then;
             }
         }};
@@ -130,9 +134,11 @@ pub(crate) unsafe fn run_per_member(
         ($sc:ident, $ar:ident, $zero:expr) => {{
             let (array, index, value) = (o[0] as usize, lane!(ints, 1), lane!($sc, 2));
             for (m, cx) in members.iter_mut().enumerate() {
-                // SAFETY: as above.
-                let (i, value) = unsafe { (*index.add(m), *value.add(m)) };
-                array_set(&mut cx.slots.$ar, array, i, value);
+                // SAFETY: as above; the array as in `array_at!`.
+                unsafe {
+                    let (i, value) = (*index.add(m), *value.add(m));
+                    array_set(cx.slots.$ar.get_unchecked_mut(array), i, value);
+                }
             }
         }};
     }
