@@ -209,6 +209,7 @@ impl Pose {
     /// global, `locals[2]` `c`'s relative to `b`'s. For solvers that compute many chains
     /// at once (the batched two-bone IK). Returns false, changing nothing, when the bones
     /// are not such a limb.
+    #[inline]
     pub fn set_chain_with_locals(
         &mut self,
         bones: [BoneIndex; 3],
@@ -229,6 +230,7 @@ impl Pose {
 
     /// Stores a limb's new globals and locals: its bones' globals are current, the rest of
     /// `a`'s subtree stale.
+    #[inline]
     fn store_limb(
         &mut self,
         [a, b, c]: [BoneIndex; 3],
