@@ -12,24 +12,19 @@
 //! past a removed instruction.
 
 use crate::program::{NO_ORIGIN, Program};
-use crate::sharing::{leaders, remove_instructions};
+use crate::sharing::{Layouts, leaders, remove_instructions};
 use fixedbitset::FixedBitSet;
-use std::borrow::Cow;
-use strider_nodes::{Op, Operand};
+use strider_nodes::Op;
 
 /// Fuses every pair of adjacent instructions that has a fused op, left to right; the
 /// second instruction of a pair is removed and its origin kept as the fused instruction's
-/// second origin ([`Program::second_origin_id`]).
-pub(crate) fn fuse(program: &mut Program) {
+/// second origin ([`Program::second_origin_id`]). `layouts` are the instructions' operand
+/// layouts, kept in step (a fused instruction's is its op's).
+pub(crate) fn fuse(program: &mut Program, layouts: &mut Layouts) {
     let n = program.code.len();
-    let layouts: Vec<Cow<'static, [Operand]>> = program
-        .code
-        .iter()
-        .map(|instr| instr.op.operands().unwrap_or_default())
-        .collect();
     // A fused op never jumps, so a pair's second instruction starts a block only when
     // something jumps to it or an event starts there.
-    let leader = leaders(program, &layouts);
+    let leader = leaders(program, layouts);
     let mut dropped = FixedBitSet::with_capacity(n);
     program.second_origins = vec![NO_ORIGIN; n];
     let mut pc = 0;
@@ -42,6 +37,7 @@ pub(crate) fn fuse(program: &mut Program) {
         match fused {
             Some((op, _)) if contiguous && !leader.contains(pc + 1) => {
                 program.code[pc].op = op;
+                layouts[pc] = op.operands().unwrap_or_default();
                 program.second_origins[pc] = program.instr_origins[pc + 1];
                 dropped.insert(pc + 1);
                 pc += 2;
@@ -49,16 +45,17 @@ pub(crate) fn fuse(program: &mut Program) {
             _ => pc += 1,
         }
     }
-    remove_instructions(program, &layouts, &dropped);
+    remove_instructions(program, layouts, &dropped);
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::sharing::layouts;
     use crate::{EmptyWorld, FrameInput, Instance, ProgramBuilder};
     use std::sync::Arc;
     use strider_core::{Bone, Skeleton, Transform};
-    use strider_nodes::{Value, ValueType};
+    use strider_nodes::{Operand, Value, ValueType};
 
     /// `forward`, by hand (slots named as in the comments; `a = 2, b = 3, c = 4`):
     ///
@@ -113,7 +110,8 @@ mod tests {
         for flag in [true, false] {
             let (plain, [x, y, z, w, u, r]) = program(flag);
             let mut fused = plain.clone();
-            fuse(&mut fused);
+            let mut shapes = layouts(&fused);
+            fuse(&mut fused, &mut shapes);
             let ops: Vec<Op> = fused.code().iter().map(|i| i.op).collect();
             let forward = fused.forward as usize;
             assert_eq!(
@@ -168,7 +166,8 @@ mod tests {
         pb.set_origin(None);
         pb.emit(Op::End, &[]);
         let mut program = pb.finish();
-        fuse(&mut program);
+        let mut shapes = layouts(&program);
+        fuse(&mut program, &mut shapes);
         assert_eq!(program.code()[0].op, Op::MulFMulF);
         assert_eq!(program.origin_id(0), Some(first));
         assert_eq!(program.second_origin_id(0), Some(second));
@@ -223,7 +222,8 @@ mod tests {
             pb.emit(Op::End, &[]);
             let plain = pb.finish();
             let mut fused = plain.clone();
-            fuse(&mut fused);
+            let mut shapes = layouts(&fused);
+            fuse(&mut fused, &mut shapes);
             assert_eq!(fused.code()[fused.forward as usize].op, op);
             // Debug prints each float as the shortest text that reads back to its bits.
             let (a, b) = (run(plain), run(fused));

@@ -1,6 +1,7 @@
 //! [`Program`]: the compiled, immutable form of a graph, and [`ProgramBuilder`], the
 //! compiler's way of making one.
 
+use crate::sharing::Layouts;
 use crate::slots::{ScalarLens, Slots};
 use rustc_hash::FxHashMap;
 use std::borrow::Cow;
@@ -582,16 +583,7 @@ impl ProgramBuilder {
                 "the {name} entry {entry} is not one of the {len} instructions"
             );
         }
-        let layouts: Vec<Cow<'static, [Operand]>> = p
-            .code
-            .iter()
-            .map(|instr| {
-                instr
-                    .op
-                    .operands()
-                    .unwrap_or_else(|| panic!("{:?} has no operand layout", instr.op))
-            })
-            .collect();
+        let mut layouts = crate::sharing::layouts(p);
         for (pc, (instr, layout)) in p.code.iter().zip(&layouts).enumerate() {
             for (k, &operand) in layout.iter().enumerate() {
                 let value = p.operands[instr.args as usize + k];
@@ -606,11 +598,11 @@ impl ProgramBuilder {
             }
         }
         if share {
-            crate::sharing::share(p, &layouts);
-            crate::fusion::fuse(p);
+            crate::sharing::share(p, &mut layouts);
+            crate::fusion::fuse(p, &mut layouts);
         }
         p.scalar_lens = ScalarLens::of(&p.initial);
-        p.written_lens = written_lens(p);
+        p.written_lens = written_lens(p, &layouts);
         if !share {
             p.kept_lens = p.written_lens;
         }
@@ -622,11 +614,11 @@ impl ProgramBuilder {
     }
 }
 
-/// One past the highest slot of each scalar type that an instruction of `p` writes.
-fn written_lens(p: &Program) -> ScalarLens {
+/// One past the highest slot of each scalar type that an instruction of `p` (operand
+/// layouts `layouts`) writes.
+fn written_lens(p: &Program, layouts: &Layouts) -> ScalarLens {
     let mut lens = ScalarLens::default();
-    for instr in &p.code {
-        let layout = instr.op.operands().unwrap_or_default();
+    for (instr, layout) in p.code.iter().zip(layouts) {
         for (k, &operand) in layout.iter().enumerate() {
             if let Operand::Slot(ty, access) = operand
                 && access != strider_nodes::Access::Read

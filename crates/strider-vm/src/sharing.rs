@@ -157,6 +157,27 @@ fn successors(
     [falls_through.then_some(pc + 1), target]
 }
 
+/// Each instruction's operand layout ([`Op::operands`]), in program order: worked out once
+/// when a program is finished, and kept in step as sharing and fusion remove instructions.
+pub(crate) type Layouts = Vec<Cow<'static, [Operand]>>;
+
+/// The operand layouts of `program`'s instructions.
+///
+/// # Panics
+/// If an instruction's op has no layout (no node compiles to it).
+pub(crate) fn layouts(program: &Program) -> Layouts {
+    program
+        .code
+        .iter()
+        .map(|instr| {
+            instr
+                .op
+                .operands()
+                .unwrap_or_else(|| panic!("{:?} has no operand layout", instr.op))
+        })
+        .collect()
+}
+
 /// The first instruction of every basic block (and one past the last): the entries, the
 /// jump targets and whatever follows an instruction that does not simply fall through.
 /// `layouts` are the instructions' operand layouts.
@@ -195,7 +216,7 @@ struct Block {
 /// operands, the initial memory image, the variables' slots and the pin table (which keeps
 /// only the values that still own their slot). `layouts` are the instructions' operand
 /// layouts ([`Op::operands`]); the program's operands must all name existing slots.
-pub(crate) fn share(program: &mut Program, layouts: &[Cow<'static, [Operand]>]) {
+pub(crate) fn share(program: &mut Program, layouts: &mut Layouts) {
     let ids = Ids::new(ScalarLens::of(&program.initial).0);
     let n_ids = ids.count();
     let n = program.code.len();
@@ -405,7 +426,7 @@ pub(crate) fn share(program: &mut Program, layouts: &[Cow<'static, [Operand]>]) 
     }
 
     // Rewrite.
-    for (instr, layout) in program.code.iter().zip(layouts) {
+    for (instr, layout) in program.code.iter().zip(layouts.iter()) {
         for (k, operand) in layout.iter().enumerate() {
             if let Operand::Slot(ty, _) = *operand
                 && let Some(id) = ids.id(ty, program.operands[instr.args as usize + k])
@@ -614,11 +635,11 @@ fn coalesce_copies(
 }
 
 /// Removes the instructions in `dropped` (here, copies that now read and write one slot;
-/// the second halves of fused pairs in `fusion`): a jump or an entry to one goes to the
-/// instruction after it. `layouts` are the instructions' operand layouts before removal.
+/// the second halves of fused pairs in `fusion`), and their `layouts` (the instructions'
+/// operand layouts): a jump or an entry to one goes to the instruction after it.
 pub(crate) fn remove_instructions(
     program: &mut Program,
-    layouts: &[Cow<'static, [Operand]>],
+    layouts: &mut Layouts,
     dropped: &FixedBitSet,
 ) {
     if dropped.is_clear() {
@@ -634,7 +655,7 @@ pub(crate) fn remove_instructions(
         }
     }
     new_pc.push(next);
-    for (pc, (instr, layout)) in program.code.iter().zip(layouts).enumerate() {
+    for (pc, (instr, layout)) in program.code.iter().zip(layouts.iter()).enumerate() {
         if dropped.contains(pc) {
             continue;
         }
@@ -654,6 +675,8 @@ pub(crate) fn remove_instructions(
     };
     let mut pc = 0;
     program.code.retain(|_| keep(&mut pc));
+    let mut pc = 0;
+    layouts.retain(|_| keep(&mut pc));
     let mut pc = 0;
     program.instr_origins.retain(|_| keep(&mut pc));
     if !program.second_origins.is_empty() {
