@@ -3,10 +3,12 @@
 //! known, or the list of every problem found.
 
 use crate::literal::{self, Fit};
+use fixedbitset::FixedBitSet;
 use petgraph::algo::{kosaraju_scc, toposort};
 use petgraph::graph::{DiGraph, NodeIndex};
 use rustc_hash::{FxHashMap, FxHashSet};
 use smallvec::SmallVec;
+use std::borrow::Cow;
 use strider_graph::diagnostic::{Diagnostics, Loc, SourceMap};
 use strider_graph::{
     Diagnostic, EventKind, Expr, ExprKind, FunctionDecl, Graph, Ident, LoadedGraph, NodeDecl,
@@ -331,20 +333,28 @@ pub(crate) fn check(loaded: &LoadedGraph) -> Result<Checked, Vec<Diagnostic>> {
         functions.push(body);
     }
     let main = &loaded.main;
-    let construction: Vec<Step> = main
-        .events
-        .iter()
-        .filter(|e| e.kind == EventKind::Construction)
-        .flat_map(|e| e.steps.clone())
-        .collect();
-    let forward: Vec<Step> = main
-        .events
-        .iter()
-        .filter(|e| e.kind == EventKind::Forward)
-        .flat_map(|e| e.steps.clone())
-        .collect();
+    // Each event's steps, one after another; borrowed where the graph has one such event
+    // (as it usually does), else the events' steps joined.
+    let event_steps = |kind: EventKind| -> Cow<'_, [Step]> {
+        let mut events = main.events.iter().filter(|e| e.kind == kind);
+        match (events.next(), events.next()) {
+            (None, _) => Cow::Borrowed(&[]),
+            (Some(only), None) => Cow::Borrowed(&only.steps),
+            _ => Cow::Owned(
+                main.events
+                    .iter()
+                    .filter(|e| e.kind == kind)
+                    .flat_map(|e| e.steps.iter().cloned())
+                    .collect(),
+            ),
+        }
+    };
+    let (construction, forward) = (
+        event_steps(EventKind::Construction),
+        event_steps(EventKind::Forward),
+    );
     let mut sc = Scope::new(&ctx, None);
-    let mut graph = sc.check_body(&main.nodes, &[&construction, &forward], &mut diags);
+    let mut graph = sc.check_body(&main.nodes, &[&*construction, &*forward], &mut diags);
     let mut lists = std::mem::take(&mut graph.exec_lists());
     graph.forward = lists.pop().unwrap_or_default();
     graph.construction = lists.pop().unwrap_or_default();
@@ -631,6 +641,9 @@ impl<'a, 'c> Scope<'a, 'c> {
         diags: &mut Diagnostics,
     ) -> Body {
         let mut body = Body::default();
+        // Room for a name per node and input: the ids, inputs and loop names declared here.
+        self.names
+            .reserve(nodes.len() + self.function.map_or(0, |f| f.inputs.len()));
         if let Some(f) = self.function {
             for (i, p) in f.inputs.iter().enumerate() {
                 self.declare(&p.name, Name::Input(i), diags);
@@ -1601,7 +1614,7 @@ impl<'a, 'c> Scope<'a, 'c> {
         if self.loops.is_empty() {
             return; // no loop names to misuse
         }
-        let mut seen = FxHashSet::default();
+        let mut seen = FixedBitSet::with_capacity(self.nodes.len());
         let mut stack: Vec<(&Arg, Loc)> = vec![(arg, at)];
         while let Some((arg, at)) = stack.pop() {
             match &arg.src {
@@ -1615,7 +1628,7 @@ impl<'a, 'c> Scope<'a, 'c> {
                         ))
                         .emit();
                 }
-                Src::Node { node, .. } if seen.insert(*node) => {
+                Src::Node { node, .. } if !seen.put(*node) => {
                     if let Some(n) = &self.nodes[*node].resolved
                         && n.pure
                     {

@@ -342,7 +342,16 @@ pub(crate) fn generate(loaded: &LoadedGraph, checked: &Checked, options: Options
         fn_decls,
         node_sources,
         event: Event::Construction,
-        node_origins: FxHashMap::default(),
+        // Every node of every function once, and the graph's once in each event.
+        node_origins: FxHashMap::with_capacity_and_hasher(
+            checked
+                .functions
+                .iter()
+                .map(|f| f.nodes.len())
+                .sum::<usize>()
+                + 2 * checked.graph.nodes.len(),
+            Default::default(),
+        ),
         avail: Vec::new(),
         reads: ReadsTable::default(),
         call_facts: checked.functions.iter().map(CallFacts::of).collect(),

@@ -116,6 +116,9 @@ impl std::error::Error for ParseError {}
 pub struct LineIndex {
     text: String,
     line_starts: Vec<usize>,
+    /// Whether the text is all ASCII: then a column is a byte count (graphs are mostly
+    /// ASCII, and the compiler asks for the line and column of every node it emits).
+    ascii: bool,
 }
 
 impl LineIndex {
@@ -129,7 +132,12 @@ impl LineIndex {
         let line_starts = std::iter::once(0)
             .chain(memchr::memchr_iter(b'\n', text.as_bytes()).map(|i| i + 1))
             .collect();
-        LineIndex { text, line_starts }
+        let ascii = text.is_ascii();
+        LineIndex {
+            text,
+            line_starts,
+            ascii,
+        }
     }
 
     /// The text indexed.
@@ -149,11 +157,13 @@ impl LineIndex {
             .partition_point(|&start| start <= offset)
             .max(1);
         let start = self.line_starts.get(line - 1).copied().unwrap_or(0);
-        let column = self
-            .text
-            .get(start..offset)
-            .map_or(0, |s| s.chars().count())
-            + 1;
+        let column = if self.ascii {
+            offset.saturating_sub(start)
+        } else {
+            self.text
+                .get(start..offset)
+                .map_or(0, |s| s.chars().count())
+        } + 1;
         (line, column)
     }
 }
@@ -1096,6 +1106,10 @@ Graph(
             [(1, 1), (1, 3), (2, 1), (2, 1), (2, 2), (3, 1), (3, 1)]
         );
         assert_eq!(LineIndex::new("").line_col(5), (1, 1));
+        // All ASCII: columns are byte counts, the same edges.
+        let ascii = LineIndex::new("ab\ncd");
+        let cols: Vec<_> = [0, 2, 3, 4, 5, 999].map(|o| ascii.line_col(o)).into();
+        assert_eq!(cols, [(1, 1), (1, 3), (2, 1), (2, 2), (2, 3), (2, 3)]);
     }
 
     #[test]
