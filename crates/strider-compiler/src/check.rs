@@ -641,7 +641,7 @@ impl<'a, 'c> Scope<'a, 'c> {
         diags: &mut Diagnostics,
     ) -> Body {
         let mut body = Body::default();
-        // Room for a name per node and input: the ids, inputs and loop names declared here.
+        // Room for a name per node and input (ids and inputs; loop names may add more).
         self.names
             .reserve(nodes.len() + self.function.map_or(0, |f| f.inputs.len()));
         if let Some(f) = self.function {

@@ -21,7 +21,9 @@
 //! instruction, that the last instruction cannot fall through past the end, and pads the
 //! operand list by `MAX_OPERANDS` past every instruction's first operand.
 //!
-//! Array slots, bones, names and the elements of arrays keep their bounds checks.
+//! Bones, names and the elements of arrays keep their bounds checks. Array variables keep
+//! theirs here too; `ProgramBuilder::finish` makes sure every array operand names one of
+//! the program's, which the batch's array reads and writes rely on (`per_member`).
 
 // Unchecked slot access and instruction fetch (see above) are this module's only unsafe
 // code.

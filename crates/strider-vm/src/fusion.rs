@@ -22,6 +22,7 @@ use strider_nodes::Op;
 /// layouts, kept in step (a fused instruction's is its op's).
 pub(crate) fn fuse(program: &mut Program, layouts: &mut Layouts) {
     let n = program.code.len();
+    debug_assert_eq!(layouts.len(), n, "a layout per instruction");
     // A fused op never jumps, so a pair's second instruction starts a block only when
     // something jumps to it or an event starts there.
     let leader = leaders(program, layouts);

@@ -133,6 +133,18 @@ mod tests {
     }
 
     #[test]
+    #[should_panic(expected = "names array variable 7 of Int, which the program does not have")]
+    fn an_array_the_program_lacks_is_refused() {
+        use strider_nodes::{Elem, Op, ValueType};
+        let mut pb = ProgramBuilder::new("bad_array");
+        let (index, out) = (pb.alloc(ValueType::Int), pb.alloc(ValueType::Int));
+        let _ = pb.alloc(ValueType::Array(Elem::Int));
+        pb.emit(Op::ArrayAt(Elem::Int), &[7, index, out]);
+        pb.emit(Op::End, &[]);
+        let _ = pb.finish();
+    }
+
+    #[test]
     #[should_panic(expected = "the forward entry 5 is not one of the 1 instructions")]
     fn an_entry_past_the_end_is_refused() {
         let mut pb = ProgramBuilder::new("bad_entry");

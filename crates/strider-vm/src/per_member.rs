@@ -115,9 +115,10 @@ pub(crate) unsafe fn run_per_member(
         ($sc:ident, $ar:ident, $zero:expr, |$m:ident| $then:expr) => {{
             let (array, index, out) = (o[0] as usize, lane!(ints, 1), lane!($sc, 2));
             for ($m, cx) in members.iter().enumerate() {
-                // SAFETY: as above; every member has the program's array variables, and
-                // operand 0 is one of them (the op's layout). The index is read before the
-                // element is written (they may share a slot).
+                // SAFETY: as above; every member has the program's array variables (its
+                // slots are the program's initial ones), and operand 0 names one of them
+                // (`ProgramBuilder::finish` checks every array operand). The index is read
+                // before the element is written (they may share a slot).
                 unsafe {
                     let array = cx.slots.$ar.get_unchecked(array);
                     *out.add($m) = array_get(array, *index.add($m), &$zero);

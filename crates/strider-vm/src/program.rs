@@ -545,8 +545,9 @@ impl ProgramBuilder {
     ///
     /// # Panics
     /// If an instruction's op has no operand layout (an op no node compiles to and the
-    /// compiler does not emit), or a jump target or an event's entry is not an instruction
-    /// of the program: a program built that way could not be run safely.
+    /// compiler does not emit), a jump target or an event's entry is not an instruction
+    /// of the program, or an array operand names an array variable the program does not
+    /// have: a program built that way could not be run safely.
     #[must_use]
     pub fn finish(self) -> Program {
         self.finish_with(false)
@@ -588,6 +589,14 @@ impl ProgramBuilder {
             for (k, &operand) in layout.iter().enumerate() {
                 let value = p.operands[instr.args as usize + k];
                 match operand {
+                    // The batch's array reads and writes find a member's array variable
+                    // without a bounds check (`per_member`).
+                    Operand::Slot(ValueType::Array(e), _) => assert!(
+                        p.initial.has_array(e, value),
+                        "instruction {pc} ({:?}) names array variable {value} of {e:?}, which \
+                         the program does not have",
+                        instr.op
+                    ),
                     Operand::Slot(ty, _) => p.initial.cover_slot(ty, value),
                     Operand::Target => assert!(
                         (value as usize) < len,
@@ -617,6 +626,7 @@ impl ProgramBuilder {
 /// One past the highest slot of each scalar type that an instruction of `p` (operand
 /// layouts `layouts`) writes.
 fn written_lens(p: &Program, layouts: &Layouts) -> ScalarLens {
+    debug_assert_eq!(layouts.len(), p.code.len(), "a layout per instruction");
     let mut lens = ScalarLens::default();
     for (instr, layout) in p.code.iter().zip(layouts) {
         for (k, &operand) in layout.iter().enumerate() {

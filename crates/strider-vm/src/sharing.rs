@@ -214,9 +214,16 @@ struct Block {
 
 /// Shares the program's scalar slots as the [module docs](self) describe; rewrites the
 /// operands, the initial memory image, the variables' slots and the pin table (which keeps
-/// only the values that still own their slot). `layouts` are the instructions' operand
-/// layouts ([`Op::operands`]); the program's operands must all name existing slots.
+/// only the values that still own their slot), and removes the copies that coalescing
+/// leaves reading and writing one slot, with their entries of `layouts` (the
+/// instructions' operand layouts, [`Op::operands`]). The program's operands must all name
+/// existing slots.
 pub(crate) fn share(program: &mut Program, layouts: &mut Layouts) {
+    debug_assert_eq!(
+        layouts.len(),
+        program.code.len(),
+        "a layout per instruction"
+    );
     let ids = Ids::new(ScalarLens::of(&program.initial).0);
     let n_ids = ids.count();
     let n = program.code.len();

@@ -125,7 +125,8 @@ impl Slots {
     }
 
     /// Grows the array of scalar type `ty` so that slot `index` exists (other types: no
-    /// effect; their accesses are bounds-checked).
+    /// effect; a program's array variables are checked to exist when it is finished, and
+    /// bone and name slots are bounds-checked).
     pub(crate) fn cover_slot(&mut self, ty: ValueType, index: u32) {
         let len = index as usize + 1;
         match ty {
@@ -136,6 +137,20 @@ impl Slots {
             ValueType::Quat => grow_to(&mut self.quats, len, Quat::IDENTITY),
             ValueType::Transform => grow_to(&mut self.transforms, len, Transform::IDENTITY),
             ValueType::Bone | ValueType::Name | ValueType::Array(_) => {}
+        }
+    }
+
+    /// Whether array variable `index` of element type `e` exists.
+    pub(crate) fn has_array(&self, e: Elem, index: u32) -> bool {
+        let i = index as usize;
+        match e {
+            Elem::Bool => i < self.bool_arrays.len(),
+            Elem::Int => i < self.int_arrays.len(),
+            Elem::Float => i < self.float_arrays.len(),
+            Elem::Vec3 => i < self.vec3_arrays.len(),
+            Elem::Quat => i < self.quat_arrays.len(),
+            Elem::Transform => i < self.transform_arrays.len(),
+            Elem::Bone => i < self.bone_arrays.len(),
         }
     }
 
