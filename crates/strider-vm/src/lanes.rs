@@ -15,6 +15,9 @@
 
 use crate::exec::{BATCH, Bases, Ctx};
 use crate::slots::ScalarLens;
+use crate::transpose::{
+    quat_columns, quat_rows, rotation_columns, scale_columns, vec3_columns, vec3_rows,
+};
 use glam::{Quat, Vec3};
 use std::cell::RefCell;
 use strider_core::Transform;
@@ -607,32 +610,60 @@ pub(crate) unsafe fn run_wide(
         Op::MaxV => lanes!(vec3s[2] = |a: vec3s[0], b: vec3s[1]| a.max(b)),
         Op::AbsV => lanes!(vec3s[1] = |a: vec3s[0]| a.abs()),
         Op::LerpV => lanes!(vec3s[3] = |a: vec3s[0], b: vec3s[1], t: floats[2]| a.lerp(b, t)),
-        Op::LengthV => lanes!(floats[1] = |; ref a: vec3s[0]| a.length()),
-        Op::DistanceV => lanes!(floats[2] = |; ref a: vec3s[0], b: vec3s[1]| a.distance(b)),
-        Op::DotV => lanes!(floats[2] = |; ref a: vec3s[0], b: vec3s[1]| a.dot(b)),
+        // Lengths, distances and dot products on the vectors' components: glam's sums,
+        // `(x + y) + z`, in the same order.
+        Op::LengthV => {
+            // SAFETY: as in `lanes!`; the output is of another type than the input.
+            let [x, y, z] = vec3_columns(unsafe { &*block(lane0.vec3s, o[0]) });
+            let out = unsafe { &mut *block(lane0.floats, o[1]) };
+            for (m, r) in out.iter_mut().enumerate() {
+                *r = ((x[m] * x[m] + y[m] * y[m]) + z[m] * z[m]).sqrt();
+            }
+        }
+        Op::DistanceV => {
+            // SAFETY: as above.
+            let [ax, ay, az] = vec3_columns(unsafe { &*block(lane0.vec3s, o[0]) });
+            let [bx, by, bz] = vec3_columns(unsafe { &*block(lane0.vec3s, o[1]) });
+            let out = unsafe { &mut *block(lane0.floats, o[2]) };
+            for (m, r) in out.iter_mut().enumerate() {
+                let (x, y, z) = (ax[m] - bx[m], ay[m] - by[m], az[m] - bz[m]);
+                *r = ((x * x + y * y) + z * z).sqrt();
+            }
+        }
+        Op::DotV => {
+            // SAFETY: as above.
+            let [ax, ay, az] = vec3_columns(unsafe { &*block(lane0.vec3s, o[0]) });
+            let [bx, by, bz] = vec3_columns(unsafe { &*block(lane0.vec3s, o[1]) });
+            let out = unsafe { &mut *block(lane0.floats, o[2]) };
+            for (m, r) in out.iter_mut().enumerate() {
+                *r = (ax[m] * bx[m] + ay[m] * by[m]) + az[m] * bz[m];
+            }
+        }
         Op::CrossV => lanes!(vec3s[2] = |a: vec3s[0], b: vec3s[1]| a.cross(b)),
         Op::UnitV => lanes!(vec3s[1] = |a: vec3s[0]| k::unit_v(a)),
         Op::MakeVector => {
-            lanes!(vec3s[3] = |; ref x: floats[0], y: floats[1], z: floats[2]| Vec3::new(x, y, z))
+            // SAFETY: as in `lanes!`; the inputs are copies, of another type than the output.
+            let xyz = unsafe { [0, 1, 2].map(|k| *block(lane0.floats, o[k])) };
+            vec3_rows(&xyz, unsafe { &mut *block(lane0.vec3s, o[3]) });
         }
         Op::BreakVector => {
-            lanes!(floats[1] = |; ref v: vec3s[0]| v.x);
-            lanes!(floats[2] = |; ref v: vec3s[0]| v.y);
-            lanes!(floats[3] = |; ref v: vec3s[0]| v.z);
+            // SAFETY: as above; `x`, `y` and `z` are written in that order (the last wins
+            // when two are one slot, as in the handler).
+            let xyz = vec3_columns(unsafe { &*block(lane0.vec3s, o[0]) });
+            for (k, column) in [1, 2, 3].into_iter().zip(xyz) {
+                unsafe { *block(lane0.floats, o[k]) = column };
+            }
         }
         Op::RotateVector => {
             // SAFETY: as in `lanes!`; both blocks are read before the output is written.
             let (q, v) = unsafe { (&*block(lane0.quats, o[0]), &*block(lane0.vec3s, o[1])) };
-            let (q, v) = (columns(q, |q| q.to_array()), columns(v, |v| v.to_array()));
+            let (q, v) = (quat_columns(q), vec3_columns(v));
             let mut r = [[0.0; BATCH]; 3];
             for m in 0..BATCH {
                 set_lane(&mut r, m, parts::rotate_parts(lane(&q, m), lane(&v, m)));
             }
             // SAFETY: as above.
-            let out = unsafe { &mut *block(lane0.vec3s, o[2]) };
-            for (m, out) in out.iter_mut().enumerate() {
-                *out = Vec3::from_array(lane(&r, m));
-            }
+            vec3_rows(&r, unsafe { &mut *block(lane0.vec3s, o[2]) });
         }
         Op::MakeTransform => {
             // SAFETY: as in `lanes!`; the inputs are of other types than the output.
@@ -643,15 +674,17 @@ pub(crate) unsafe fn run_wide(
                     &*block(lane0.vec3s, o[2]),
                 )
             };
-            let r = columns(r, |r| r.to_array());
+            let r = quat_columns(r);
             let mut unit = [[0.0; BATCH]; 4];
             for m in 0..BATCH {
                 set_lane(&mut unit, m, parts::unit_parts(lane(&r, m)));
             }
+            let mut rotations = [Quat::IDENTITY; BATCH];
+            quat_rows(&unit, &mut rotations);
             // SAFETY: as above; in another array than the inputs'.
             let out = unsafe { &mut *block(lane0.transforms, o[3]) };
             for (m, out) in out.iter_mut().enumerate() {
-                *out = Transform::new(t[m], Quat::from_array(lane(&unit, m)), s[m]);
+                *out = Transform::new(t[m], rotations[m], s[m]);
             }
         }
         Op::BreakTransform => {
@@ -659,11 +692,28 @@ pub(crate) unsafe fn run_wide(
             lanes!(quats[2] = |; ref x: transforms[0]| x.rotation);
             lanes!(vec3s[3] = |; ref x: transforms[0]| x.scale);
         }
-        Op::TransformPoint => {
-            lanes!(vec3s[2] = |p: vec3s[1]; ref t: transforms[0]| t.transform_point(p))
-        }
-        Op::TransformVector => {
-            lanes!(vec3s[2] = |v: vec3s[1]; ref t: transforms[0]| t.transform_vector(v))
+        // `translation + rotation · (scale ⊙ v)` on components, as glam computes it.
+        Op::TransformPoint | Op::TransformVector => {
+            // SAFETY: as in `lanes!`; the inputs are read before the output is written.
+            let (t, v) = unsafe { (&*block(lane0.transforms, o[0]), &*block(lane0.vec3s, o[1])) };
+            let (r, s, v) = (rotation_columns(t), scale_columns(t), vec3_columns(v));
+            let position =
+                (op == Op::TransformPoint).then(|| columns(t, |t| t.translation.to_array()));
+            let mut moved = [[0.0; BATCH]; 3];
+            for m in 0..BATCH {
+                let scaled = std::array::from_fn(|c| s[c][m] * v[c][m]);
+                let turned = parts::rotate_parts(lane(&r, m), scaled);
+                set_lane(&mut moved, m, turned);
+            }
+            if let Some(p) = position {
+                for (moved, p) in moved.iter_mut().zip(p) {
+                    for (x, p) in moved.iter_mut().zip(p) {
+                        *x += p;
+                    }
+                }
+            }
+            // SAFETY: as above.
+            vec3_rows(&moved, unsafe { &mut *block(lane0.vec3s, o[2]) });
         }
 
         Op::MulFMulF => {
@@ -779,9 +829,9 @@ pub(crate) unsafe fn run_wide(
                 )
             };
             let position = columns(t, |t| t.translation.to_array());
-            let rotation = columns(t, |t| t.rotation.to_array());
-            let scale = columns(t, |t| t.scale.to_array());
-            let (p, r) = (columns(p, |p| p.to_array()), columns(r, |r| r.to_array()));
+            let rotation = rotation_columns(t);
+            let scale: [Vec3; BATCH] = std::array::from_fn(|m| t[m].scale);
+            let (p, r) = (vec3_columns(p), quat_columns(r));
             let (mut moved, mut turned) = ([[0.0; BATCH]; 3], [[0.0; BATCH]; 4]);
             for m in 0..BATCH {
                 let r = parts::unit_parts(lane(&r, m));
@@ -792,14 +842,13 @@ pub(crate) unsafe fn run_wide(
                 let q = parts::mul_parts(r, lane(&rotation, m));
                 set_lane(&mut turned, m, parts::unit_parts(q));
             }
+            let (mut positions, mut rotations) = ([Vec3::ZERO; BATCH], [Quat::IDENTITY; BATCH]);
+            vec3_rows(&moved, &mut positions);
+            quat_rows(&turned, &mut rotations);
             // SAFETY: as above.
             let out = unsafe { &mut *block(lane0.transforms, o[3]) };
             for (m, out) in out.iter_mut().enumerate() {
-                *out = Transform::new(
-                    Vec3::from_array(lane(&moved, m)),
-                    Quat::from_array(lane(&turned, m)),
-                    Vec3::from_array(lane(&scale, m)),
-                );
+                *out = Transform::new(positions[m], rotations[m], scale[m]);
             }
         }
 

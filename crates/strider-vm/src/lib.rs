@@ -33,6 +33,7 @@ pub mod profile;
 pub mod program;
 mod sharing;
 pub mod slots;
+mod transpose;
 
 pub use batch_code::{BatchCode, allow_avx2, batch_code};
 pub use instance::{
