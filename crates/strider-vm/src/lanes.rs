@@ -16,7 +16,8 @@
 use crate::exec::{BATCH, Bases, Ctx};
 use crate::slots::ScalarLens;
 use crate::transpose::{
-    quat_columns, quat_rows, rotation_columns, scale_columns, vec3_columns, vec3_rows,
+    QuatColumns, Vec3Columns, quat_columns, quat_rows, rotation_columns, scale_columns,
+    vec3_columns, vec3_rows,
 };
 use glam::{Quat, Vec3};
 use std::cell::RefCell;
@@ -215,6 +216,101 @@ fn set_lane<const C: usize>(cols: &mut [[f32; BATCH]; C], m: usize, x: [f32; C])
     for (col, x) in cols.iter_mut().zip(x) {
         col[m] = x;
     }
+}
+
+/// A block of transforms as component arrays: translation, rotation, scale.
+#[inline(always)]
+fn transform_columns(block: &[Transform; BATCH]) -> (Vec3Columns, QuatColumns, Vec3Columns) {
+    (
+        columns(block, |t| t.translation.to_array()),
+        rotation_columns(block),
+        scale_columns(block),
+    )
+}
+
+/// Transforms from component arrays: translation, rotation, scale.
+#[inline(always)]
+fn transform_rows(t: &Vec3Columns, r: &QuatColumns, s: &Vec3Columns) -> [Transform; BATCH] {
+    let (mut translations, mut rotations, mut scales) = (
+        [Vec3::ZERO; BATCH],
+        [Quat::IDENTITY; BATCH],
+        [Vec3::ZERO; BATCH],
+    );
+    vec3_rows(t, &mut translations);
+    quat_rows(r, &mut rotations);
+    vec3_rows(s, &mut scales);
+    std::array::from_fn(|m| Transform::new(translations[m], rotations[m], scales[m]))
+}
+
+/// `a[m] · b[m]` for every lane (`Transform`'s product: `b` placed in `a`'s frame), on
+/// component arrays, in glam's order of operations: translation `a.t + a.r · (a.s ⊙ b.t)`,
+/// rotation `a.r · b.r` normalised, scale `a.s ⊙ b.s`.
+#[inline(always)]
+fn transform_products(a: &[Transform; BATCH], b: &[Transform; BATCH]) -> [Transform; BATCH] {
+    let (at, ar, a_scale) = transform_columns(a);
+    let (bt, br, b_scale) = transform_columns(b);
+    let (mut t, mut r, mut s) = ([[0.0; BATCH]; 3], [[0.0; BATCH]; 4], [[0.0; BATCH]; 3]);
+    for m in 0..BATCH {
+        let scaled = std::array::from_fn(|c| a_scale[c][m] * bt[c][m]);
+        let turned = parts::rotate_parts(lane(&ar, m), scaled);
+        set_lane(&mut t, m, std::array::from_fn(|c| at[c][m] + turned[c]));
+        let q = parts::mul_parts(lane(&ar, m), lane(&br, m));
+        set_lane(&mut r, m, parts::normalize_parts(q));
+        set_lane(
+            &mut s,
+            m,
+            std::array::from_fn(|c| a_scale[c][m] * b_scale[c][m]),
+        );
+    }
+    transform_rows(&t, &r, &s)
+}
+
+/// `1 / x`, or 0 where `x` is ±0 (`Transform`'s inverse scale, per component).
+#[inline(always)]
+fn reciprocal_or_zero(x: f32) -> f32 {
+    if x == 0.0 { 0.0 } else { 1.0 / x }
+}
+
+/// `a[m]` relative to `parent[m]` for every lane ([`Transform::relative_to`]), on component
+/// arrays, in its order of operations: with `p.r⁻¹` the conjugate and `1 / p.s` zero on a
+/// zero axis, translation `(1 / p.s) ⊙ (p.r⁻¹ · (a.t − p.t))`, rotation `p.r⁻¹ · a.r`
+/// normalised, scale `(1 / p.s) ⊙ a.s`. Without `a` ([`Transform::inverse`]): translation
+/// `(1 / p.s) ⊙ (p.r⁻¹ · −p.t)`, rotation `p.r⁻¹`, scale `1 / p.s`.
+#[inline(always)]
+fn transforms_relative(
+    a: Option<&[Transform; BATCH]>,
+    parent: &[Transform; BATCH],
+) -> [Transform; BATCH] {
+    let (pt, pr, p_scale) = transform_columns(parent);
+    let own = a.map(transform_columns);
+    let (mut t, mut r, mut s) = ([[0.0; BATCH]; 3], [[0.0; BATCH]; 4], [[0.0; BATCH]; 3]);
+    for m in 0..BATCH {
+        let inv_scale: [f32; 3] = std::array::from_fn(|c| reciprocal_or_zero(p_scale[c][m]));
+        let [x, y, z, w] = lane(&pr, m);
+        let inv_rotation = [-x, -y, -z, w];
+        let offset = match &own {
+            Some((at, _, _)) => std::array::from_fn(|c| at[c][m] - pt[c][m]),
+            None => std::array::from_fn(|c| -pt[c][m]),
+        };
+        let turned = parts::rotate_parts(inv_rotation, offset);
+        set_lane(&mut t, m, std::array::from_fn(|c| inv_scale[c] * turned[c]));
+        match &own {
+            Some((_, ar, a_scale)) => {
+                let q = parts::mul_parts(inv_rotation, lane(ar, m));
+                set_lane(&mut r, m, parts::normalize_parts(q));
+                set_lane(
+                    &mut s,
+                    m,
+                    std::array::from_fn(|c| inv_scale[c] * a_scale[c][m]),
+                );
+            }
+            None => {
+                set_lane(&mut r, m, inv_rotation);
+                set_lane(&mut s, m, inv_scale);
+            }
+        }
+    }
+    transform_rows(&t, &r, &s)
 }
 
 /// Bit-for-bit equality of lane values (`-0.0` differs from `0.0`; a NaN equals only the
@@ -808,14 +904,44 @@ pub(crate) unsafe fn run_wide(
         }
         Op::FindQuatBetween => lanes!(n; quats[2] = |; ref a: vec3s[0], b: vec3s[1]|
             k::find_quat_between(a, b)),
-        Op::MulT => lanes!(n, in place; transforms[2] = |a: transforms[0], b: transforms[1]| a * b),
-        Op::InverseT => lanes!(n, in place; transforms[1] = |a: transforms[0]| a.inverse()),
+        Op::MulT => {
+            // SAFETY: as in `lanes!`; both blocks are read before the output is written.
+            let out = unsafe {
+                transform_products(
+                    &*block(lane0.transforms, o[0]),
+                    &*block(lane0.transforms, o[1]),
+                )
+            };
+            // SAFETY: as above.
+            unsafe { *block(lane0.transforms, o[2]) = out };
+        }
+        Op::InverseT => {
+            // SAFETY: as in `lanes!`; the block is read before the output is written.
+            let out = unsafe { transforms_relative(None, &*block(lane0.transforms, o[0])) };
+            // SAFETY: as above.
+            unsafe { *block(lane0.transforms, o[1]) = out };
+        }
         Op::MakeRelative => {
-            lanes!(n, in place; transforms[2] = |a: transforms[0], b: transforms[1]|
-            a.relative_to(&b))
+            // SAFETY: as for `MulT`.
+            let out = unsafe {
+                transforms_relative(
+                    Some(&*block(lane0.transforms, o[0])),
+                    &*block(lane0.transforms, o[1]),
+                )
+            };
+            // SAFETY: as above.
+            unsafe { *block(lane0.transforms, o[2]) = out };
         }
         Op::MakeAbsolute => {
-            lanes!(n, in place; transforms[2] = |a: transforms[0], b: transforms[1]| b * a)
+            // SAFETY: as for `MulT`; the parent's transform (operand 1) comes first.
+            let out = unsafe {
+                transform_products(
+                    &*block(lane0.transforms, o[1]),
+                    &*block(lane0.transforms, o[0]),
+                )
+            };
+            // SAFETY: as above.
+            unsafe { *block(lane0.transforms, o[2]) = out };
         }
         Op::RotateAroundPoint => {
             // `k::rotate_around_point` on component arrays: every input is read before the

@@ -9,8 +9,8 @@
 //! give the same bits.
 //!
 //! The order of operations is glam's (0.33, SSE2, without FMA): on x86-64 builds without
-//! `fma` the results equal glam's `Quat::length`, `Quat / f32`, `Quat * Quat` and
-//! `Quat * Vec3` bit for bit; elsewhere they may differ from glam in the last bit, never
+//! `fma` the results equal glam's `Quat::length`, `Quat / f32`, `Quat::normalize`,
+//! `Quat * Quat` and `Quat * Vec3` bit for bit; elsewhere they may differ from glam in the last bit, never
 //! between the one-character and the crowd paths. No fused multiply-add is used (Rust
 //! never fuses on its own), so the results are the same on every target.
 
@@ -26,6 +26,17 @@ pub fn unit_parts(q: [f32; 4]) -> [f32; 4] {
     } else {
         [0.0, 0.0, 0.0, 1.0]
     }
+}
+
+/// `[x, y, z, w]` divided by its length, as glam's `Quat::normalize` computes it: without
+/// [`unit_parts`]' fallback, so a zero or non-finite rotation gives NaNs (or zeros), as
+/// glam's does. The length sums the squares as `(x² + z²) + (y² + w²)`.
+#[must_use]
+#[inline(always)]
+pub fn normalize_parts(q: [f32; 4]) -> [f32; 4] {
+    let [x, y, z, w] = q;
+    let len = ((x * x + z * z) + (y * y + w * w)).sqrt();
+    [x / len, y / len, z / len, w / len]
 }
 
 /// The product `a · b` of two rotations `[x, y, z, w]` (`b` applied first). Of any
@@ -130,6 +141,12 @@ mod tests {
                 for (m, g) in unit_parts(a).iter().zip((ga / len).to_array()) {
                     assert!(close(*m, g), "unit {a:?}");
                 }
+            }
+            for (m, g) in normalize_parts(a).iter().zip(ga.normalize().to_array()) {
+                assert!(
+                    close(*m, g) || (m.is_nan() && g.is_nan()),
+                    "normalize {a:?}"
+                );
             }
             for &b in &qs {
                 let ours = mul_parts(a, b);
