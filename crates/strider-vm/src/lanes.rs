@@ -388,6 +388,30 @@ pub(crate) unsafe fn agree(lane0: Bases, slot: u32, n: usize) -> Option<bool> {
     }
 }
 
+/// `BreakTransform` (operands `o`: transform; translation, rotation, scale) on every lane
+/// of the batch whose member 0's lane is `lane0`: each part written for all lanes before
+/// the next, in the handler's order (the last write wins where two parts share a slot).
+///
+/// # Safety
+/// As [`run_wide`], with `o` a `BreakTransform`'s operands.
+#[inline(always)]
+pub(crate) unsafe fn break_transforms(o: &[u32], lane0: Bases) {
+    // SAFETY: as in `run_wide`'s `lanes!`; the parts are of other types than the
+    // transform.
+    unsafe {
+        let t = &*block(lane0.transforms, o[0]);
+        for (r, x) in (*block(lane0.vec3s, o[1])).iter_mut().zip(t) {
+            *r = x.translation;
+        }
+        for (r, x) in (*block(lane0.quats, o[2])).iter_mut().zip(t) {
+            *r = x.rotation;
+        }
+        for (r, x) in (*block(lane0.vec3s, o[3])).iter_mut().zip(t) {
+            *r = x.scale;
+        }
+    }
+}
+
 /// Runs `op` (operands `o`) on every lane of the batch whose member 0's lane is `lane0`,
 /// when it is one of the ops whose handler computes scalar slots from scalar slots only,
 /// and returns true; returns false, doing nothing, for every other op.
@@ -783,11 +807,8 @@ pub(crate) unsafe fn run_wide(
                 *out = Transform::new(t[m], rotations[m], s[m]);
             }
         }
-        Op::BreakTransform => {
-            lanes!(vec3s[1] = |; ref x: transforms[0]| x.translation);
-            lanes!(quats[2] = |; ref x: transforms[0]| x.rotation);
-            lanes!(vec3s[3] = |; ref x: transforms[0]| x.scale);
-        }
+        // SAFETY: `o` is a `BreakTransform`'s operands (this function's contract).
+        Op::BreakTransform => unsafe { break_transforms(o, lane0) },
         // `translation + rotation · (scale ⊙ v)` on components, as glam computes it.
         Op::TransformPoint | Op::TransformVector => {
             // SAFETY: as in `lanes!`; the inputs are read before the output is written.

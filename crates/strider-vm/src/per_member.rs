@@ -7,7 +7,10 @@
 //! work. The ops here find every operand's block of lanes ([`crate::lanes`]) once, then
 //! visit the members, each with its own arrays and pose: the same element functions as
 //! the handlers ([`array_get`], [`array_set`], [`bone_transform`]), on the same values, in
-//! the same order, so the results are the handlers', bit for bit.
+//! the same order for each member, so the results are the handlers', bit for bit. A read
+//! fused with the `BreakTransform` of its result runs for every member first, then the
+//! break for the whole batch ([`break_transforms`]): a member's break reads only its own
+//! lane, which no other member's read writes.
 //!
 //! Two kinds of op go further, with one piece of work for the whole batch: the traces ask
 //! the world once for every member ([`sphere_traces`], [`line_traces`]), and the two-bone
@@ -24,7 +27,7 @@ use crate::exec::{
     BATCH, Bases, Ctx, array_get, array_set, axes_key, bone, bone_transform, read_hit, trace_ends,
     trace_outputs, trace_query,
 };
-use crate::lanes::block;
+use crate::lanes::{block, break_transforms};
 use glam::{Quat, Vec3};
 use strider_core::{LineQuery, SphereQuery, TraceHit, Transform, WorldQuery};
 use strider_nodes::kernels::two_bone_ik::{
@@ -66,33 +69,6 @@ pub(crate) unsafe fn run_per_member(
             item0(lane0.$a, o[$k])
         };
     }
-    // The blocks a fused `BreakTransform` reads and writes (operands from `$b`: the
-    // transform to break, its translation, rotation and scale).
-    macro_rules! break_blocks {
-        ($b:expr) => {
-            (
-                lane!(transforms, $b),
-                lane!(vec3s, $b + 1),
-                lane!(quats, $b + 2),
-                lane!(vec3s, $b + 3),
-            )
-        };
-    }
-    // `BreakTransform` of member `$m`'s transform in `$blocks` (`break_blocks!`), read
-    // after the fused read has written its result (the two may share a slot, as the
-    // compiler lays them out, or not); its parts written in the handler's order.
-    macro_rules! break_transform {
-        ($m:expr, $blocks:expr) => {{
-            let (t, tr, rot, sc) = $blocks;
-            // SAFETY: slots of the program's lanes (the caller's contract), `$m < BATCH`.
-            unsafe {
-                let x: Transform = *t.add($m);
-                *tr.add($m) = x.translation;
-                *rot.add($m) = x.rotation;
-                *sc.add($m) = x.scale;
-            }
-        }};
-    }
     // Runs `$m!(lanes, arrays, default)` for scalar element type `$e` (the lane array of its
     // slots, the slots' field of its array variables, its default); bones, whose slots are
     // not in the lanes, are left to the handlers.
@@ -110,25 +86,21 @@ pub(crate) unsafe fn run_per_member(
         };
     }
     // `ArrayAt` (operands: array, index, element) of element type `$sc` (arrays `$ar`,
-    // default `$zero`), then `$then` for each member `$m`.
+    // default `$zero`).
     macro_rules! array_at {
-        ($sc:ident, $ar:ident, $zero:expr, |$m:ident| $then:expr) => {{
+        ($sc:ident, $ar:ident, $zero:expr) => {{
             let (array, index, out) = (o[0] as usize, lane!(ints, 1), lane!($sc, 2));
-            for ($m, cx) in members.iter().enumerate() {
+            for (m, cx) in members.iter().enumerate() {
                 // SAFETY: as above; every member has the program's array variables (its
                 // slots are the program's initial ones), and operand 0 names one of them
                 // (`ProgramBuilder::finish` checks every array operand). The index is read
                 // before the element is written (they may share a slot).
                 unsafe {
                     let array = cx.slots.$ar.get_unchecked(array);
-                    *out.add($m) = array_get(array, *index.add($m), &$zero);
+                    *out.add(m) = array_get(array, *index.add(m), &$zero);
                 }
-                $then;
             }
         }};
-        ($sc:ident, $ar:ident, $zero:expr) => {
-            array_at!($sc, $ar, $zero, |_m| {})
-        };
     }
     // `ArraySetAt` (operands: array, index, element); the default is not needed.
     macro_rules! array_set_at {
@@ -143,39 +115,40 @@ pub(crate) unsafe fn run_per_member(
             }
         }};
     }
-    // `GetTransform` (operands `$b`..: bone, space, initial, result), then `$then` for each
-    // member `$m`.
+    // `GetTransform` (operands: bone, space, initial, result).
     macro_rules! get_transform {
-        ($b:expr, |$m:ident| $then:expr) => {{
+        () => {{
             let (bone, space, initial, out) = (
-                o[$b] as usize,
-                lane!(ints, $b + 1),
-                lane!(bools, $b + 2),
-                lane!(transforms, $b + 3),
+                o[0] as usize,
+                lane!(ints, 1),
+                lane!(bools, 2),
+                lane!(transforms, 3),
             );
-            for ($m, cx) in members.iter_mut().enumerate() {
+            for (m, cx) in members.iter_mut().enumerate() {
                 // SAFETY: as above.
-                let (space, initial) = unsafe { (*space.add($m), *initial.add($m)) };
+                let (space, initial) = unsafe { (*space.add(m), *initial.add(m)) };
                 let x = bone_transform(cx.pose, cx.slots.bones[bone], space, initial);
                 // SAFETY: as above.
-                unsafe { *out.add($m) = x };
-                $then;
+                unsafe { *out.add(m) = x };
             }
         }};
     }
     match op {
         Op::ArrayAt(e) => scalar_elem!(e, array_at),
+        // The fused reads, then their breaks for the whole batch: a member's break reads
+        // only its own lane of the transform, and the reads read none of the parts' slots
+        // (they are of other types), so the order across members does not matter.
         Op::ArrayAtBreakTransform => {
-            let blocks = break_blocks!(3);
-            array_at!(transforms, transform_arrays, Transform::IDENTITY, |m| {
-                break_transform!(m, blocks)
-            });
+            array_at!(transforms, transform_arrays, Transform::IDENTITY);
+            // SAFETY: the caller's contract; the break's operands start at operand 3.
+            unsafe { break_transforms(&o[3..], lane0) };
         }
         Op::ArraySetAt(e) => scalar_elem!(e, array_set_at),
-        Op::GetTransform => get_transform!(0, |_m| {}),
+        Op::GetTransform => get_transform!(),
         Op::GetTransformBreakTransform => {
-            let blocks = break_blocks!(4);
-            get_transform!(0, |m| break_transform!(m, blocks));
+            get_transform!();
+            // SAFETY: as above; the break's operands start at operand 4.
+            unsafe { break_transforms(&o[4..], lane0) };
         }
         _ => return false,
     }
