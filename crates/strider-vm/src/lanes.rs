@@ -242,6 +242,27 @@ fn transform_rows(t: &Vec3Columns, r: &QuatColumns, s: &Vec3Columns) -> [Transfo
     std::array::from_fn(|m| Transform::new(translations[m], rotations[m], scales[m]))
 }
 
+/// The exponential lerps' weights `exp_alpha(speed, dt)` of the first `n` lanes (0 for the
+/// others), computed once for each run of members with the same speed and time step, bit
+/// for bit (so the same weight), as a crowd's members usually have.
+#[inline(always)]
+fn weights(speed: &[f32; BATCH], dts: &[f32; BATCH], n: usize) -> [f32; BATCH] {
+    let mut alphas = [0.0f32; BATCH];
+    let mut last: Option<(u32, u32, f32)> = None;
+    for (m, alpha) in alphas.iter_mut().enumerate().take(n) {
+        let (s, d) = (speed[m].to_bits(), dts[m].to_bits());
+        *alpha = match last {
+            Some((ls, ld, w)) if ls == s && ld == d => w,
+            _ => {
+                let w = loco::exp_alpha(speed[m], dts[m]);
+                last = Some((s, d, w));
+                w
+            }
+        };
+    }
+    alphas
+}
+
 /// `a[m] · b[m]` for every lane (`Transform`'s product: `b` placed in `a`'s frame), on
 /// component arrays, in glam's order of operations: translation `a.t + a.r · (a.s ⊙ b.t)`,
 /// rotation `a.r · b.r` normalised, scale `a.s ⊙ b.s`.
@@ -577,7 +598,7 @@ pub(crate) unsafe fn run_wide(
     // The exponential lerps (operands: current, target, speed, result), whose weight
     // `exp_alpha(speed, dt)` is computed once for each run of members with the same speed
     // and dt (bit for bit, so the same weight), as a crowd's members usually have. The
-    // weights come first, member by member; then the lerp itself, as one loop over the
+    // weights come first, member by member (`weights`); then the lerp itself, as one loop over the
     // first `$lanes` lanes: a float lerp over every lane vectorises (lanes past the members
     // get weight 0 and are never read), a slerp runs for the members only.
     macro_rules! by_weight {
@@ -590,19 +611,7 @@ pub(crate) unsafe fn run_wide(
                     &*block(lane0.floats, o[2]),
                 )
             };
-            let mut alphas = [0.0f32; BATCH];
-            let mut last: Option<(u32, u32, f32)> = None;
-            for (m, alpha) in alphas.iter_mut().enumerate().take(n) {
-                let (s, d) = (speed[m].to_bits(), dts[m].to_bits());
-                *alpha = match last {
-                    Some((ls, ld, w)) if ls == s && ld == d => w,
-                    _ => {
-                        let w = loco::exp_alpha(speed[m], dts[m]);
-                        last = Some((s, d, w));
-                        w
-                    }
-                };
-            }
+            let alphas = weights(speed, dts, n);
             // SAFETY: as above; the lerped values are copies, so this is the only reference.
             let out = unsafe { &mut *block(lane0.$a, o[3]) };
             for (m, r) in out.iter_mut().enumerate().take($lanes) {
@@ -1049,6 +1058,30 @@ pub(crate) unsafe fn run_wide(
             unsafe { *block(lane0.floats, o[0]) = *dts };
         }
         Op::FloatLerp => by_weight!(floats, loco::lerp_by_weight, BATCH),
+        Op::VectorLerp => {
+            // Operands: current, target, speed, most distance per second, result. Each
+            // member's weight as in `by_weight!`, used where the member has no limit.
+            // SAFETY: as in `lanes!`; the inputs are copies, so the output is the only
+            // reference to its block.
+            let (current, target, speed, most) = unsafe {
+                (
+                    *block(lane0.vec3s, o[0]),
+                    *block(lane0.vec3s, o[1]),
+                    *block(lane0.floats, o[2]),
+                    *block(lane0.floats, o[3]),
+                )
+            };
+            let alphas = weights(&speed, dts, n);
+            // SAFETY: as above.
+            let out = unsafe { &mut *block(lane0.vec3s, o[4]) };
+            for (m, r) in out.iter_mut().enumerate().take(n) {
+                *r = if most[m] > 0.0 {
+                    loco::lerp_max_step(current[m], target[m], dts[m], speed[m], most[m])
+                } else {
+                    loco::lerp_by_weight_v(current[m], target[m], alphas[m])
+                };
+            }
+        }
         Op::QuatLerp => by_weight!(quats, loco::slerp_by_weight, n),
         Op::FInterpToF => lanes!(n; floats[3] = |a: floats[0], b: floats[1], speed: floats[2]; dt|
             loco::finterp_to(a, b, dt, speed)),
@@ -1358,8 +1391,8 @@ mod tests {
                 }
             }
         }
-        // The 137 ops `run_wide` has arms for (a miss here means `every_op` lacks one).
-        assert_eq!(count, 137);
+        // The 138 ops `run_wide` has arms for (a miss here means `every_op` lacks one).
+        assert_eq!(count, 138);
     }
 
     /// The exponential lerps compute their weight once per run of members with the same

@@ -834,14 +834,18 @@ pub fn lerp_by_weight(current: f32, target: f32, alpha: f32) -> f32 {
 /// same fallbacks per vector. Exactly frame-rate independent.
 #[must_use]
 pub fn lerp_exponential_v(current: Vec3, target: Vec3, dt: f32, speed: f32) -> Vec3 {
+    lerp_by_weight_v(current, target, exp_alpha(speed, dt))
+}
+
+/// [`lerp_exponential_v`] with its weight `alpha = exp_alpha(speed, dt)` already computed
+/// (a crowd whose characters share `speed` and `dt` computes it once).
+#[inline]
+#[must_use]
+pub fn lerp_by_weight_v(current: Vec3, target: Vec3, alpha: f32) -> Vec3 {
     if !target.is_finite() {
         return finite_v_or(current, Vec3::ZERO);
     }
-    if !current.is_finite() {
-        return target;
-    }
-    let alpha = exp_alpha(speed, dt);
-    if alpha >= 1.0 {
+    if !current.is_finite() || alpha >= 1.0 {
         return target;
     }
     finite_v_or(current + (target - current) * alpha, target)
