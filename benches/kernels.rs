@@ -149,6 +149,9 @@ fn quats(c: &mut Criterion) {
     g.bench_function("unit_parts", |x| {
         x.iter(|| parts::unit_parts(black_box(pa)))
     });
+    g.bench_function("normalize_parts", |x| {
+        x.iter(|| parts::normalize_parts(black_box(pa)))
+    });
     g.bench_function("mul_parts", |x| {
         x.iter(|| parts::mul_parts(black_box(pa), black_box(pb)))
     });
@@ -354,6 +357,9 @@ fn smoothing(c: &mut Criterion) {
     });
     g.bench_function("lerp_by_weight", |x| {
         x.iter(|| loco::lerp_by_weight(black_box(3.0), black_box(8.0), black_box(0.15)))
+    });
+    g.bench_function("lerp_by_weight_v", |x| {
+        x.iter(|| loco::lerp_by_weight_v(black_box(cur), black_box(tgt), black_box(0.15)))
     });
     g.bench_function("slerp_by_weight", |x| {
         x.iter(|| loco::slerp_by_weight(black_box(qa), black_box(qb), black_box(0.15)))

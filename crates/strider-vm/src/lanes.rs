@@ -25,6 +25,7 @@ use strider_core::Transform;
 use strider_nodes::kernels as k;
 use strider_nodes::kernels::locomotion as loco;
 use strider_nodes::kernels::parts;
+use strider_nodes::kernels::two_bone_ik::LANES_MATCH_GLAM;
 use strider_nodes::{Elem, Op, ValueType};
 
 /// A batch's scalar slots, interleaved by member: slot `k` of member `m` is item
@@ -218,7 +219,9 @@ fn set_lane<const C: usize>(cols: &mut [[f32; BATCH]; C], m: usize, x: [f32; C])
     }
 }
 
-/// A block of transforms as component arrays: translation, rotation, scale.
+/// A block of transforms as component arrays: translation, rotation, scale. The
+/// translations are gathered a float at a time: four floats from a translation on would
+/// take in the padding after it, which holds no value.
 #[inline(always)]
 fn transform_columns(block: &[Transform; BATCH]) -> (Vec3Columns, QuatColumns, Vec3Columns) {
     (
@@ -438,8 +441,11 @@ pub(crate) unsafe fn break_transforms(o: &[u32], lane0: Bases) {
 /// and returns true; returns false, doing nothing, for every other op.
 ///
 /// Each lane gets exactly what the op's handler in [`crate::exec`] computes for one
-/// member (the same expression, applied lane by lane), so results are bit-identical to
-/// running the handler member by member — but for the bits of a NaN: when both operands of
+/// member: the same expression applied lane by lane, or for the ops on vectors,
+/// rotations and transforms whose math mixes a value's components, the same operations
+/// in the same order on component arrays (`parts`; the transform ops only where that is
+/// glam's order, [`LANES_MATCH_GLAM`]). So results are bit-identical to running the
+/// handler member by member — but for the bits of a NaN: when both operands of
 /// an operation are NaN, which one's sign and payload the result carries is left open (by
 /// Rust, and by the processor's vector and scalar instructions alike), and the vectorised
 /// loop may pick the other one. A NaN stays a NaN. Lanes past the batch's members hold
@@ -744,6 +750,7 @@ pub(crate) unsafe fn run_wide(
         Op::LengthV => {
             // SAFETY: as in `lanes!`; the output is of another type than the input.
             let [x, y, z] = vec3_columns(unsafe { &*block(lane0.vec3s, o[0]) });
+            // SAFETY: as above.
             let out = unsafe { &mut *block(lane0.floats, o[1]) };
             for (m, r) in out.iter_mut().enumerate() {
                 *r = ((x[m] * x[m] + y[m] * y[m]) + z[m] * z[m]).sqrt();
@@ -753,6 +760,7 @@ pub(crate) unsafe fn run_wide(
             // SAFETY: as above.
             let [ax, ay, az] = vec3_columns(unsafe { &*block(lane0.vec3s, o[0]) });
             let [bx, by, bz] = vec3_columns(unsafe { &*block(lane0.vec3s, o[1]) });
+            // SAFETY: as above.
             let out = unsafe { &mut *block(lane0.floats, o[2]) };
             for (m, r) in out.iter_mut().enumerate() {
                 let (x, y, z) = (ax[m] - bx[m], ay[m] - by[m], az[m] - bz[m]);
@@ -763,6 +771,7 @@ pub(crate) unsafe fn run_wide(
             // SAFETY: as above.
             let [ax, ay, az] = vec3_columns(unsafe { &*block(lane0.vec3s, o[0]) });
             let [bx, by, bz] = vec3_columns(unsafe { &*block(lane0.vec3s, o[1]) });
+            // SAFETY: as above.
             let out = unsafe { &mut *block(lane0.floats, o[2]) };
             for (m, r) in out.iter_mut().enumerate() {
                 *r = (ax[m] * bx[m] + ay[m] * by[m]) + az[m] * bz[m];
@@ -780,6 +789,7 @@ pub(crate) unsafe fn run_wide(
             // when two are one slot, as in the handler).
             let xyz = vec3_columns(unsafe { &*block(lane0.vec3s, o[0]) });
             for (k, column) in [1, 2, 3].into_iter().zip(xyz) {
+                // SAFETY: as above.
                 unsafe { *block(lane0.floats, o[k]) = column };
             }
         }
@@ -818,6 +828,28 @@ pub(crate) unsafe fn run_wide(
         }
         // SAFETY: `o` is a `BreakTransform`'s operands (this function's contract).
         Op::BreakTransform => unsafe { break_transforms(o, lane0) },
+        // The transform ops on component arrays compute with `parts`, glam's operations in
+        // the order of its SSE2 code; where glam computes otherwise (`LANES_MATCH_GLAM`:
+        // other processors, or `fma`), lane by lane with glam, as the handlers do.
+        Op::TransformPoint if !LANES_MATCH_GLAM => {
+            lanes!(vec3s[2] = |p: vec3s[1]; ref t: transforms[0]| t.transform_point(p))
+        }
+        Op::TransformVector if !LANES_MATCH_GLAM => {
+            lanes!(vec3s[2] = |v: vec3s[1]; ref t: transforms[0]| t.transform_vector(v))
+        }
+        Op::MulT if !LANES_MATCH_GLAM => {
+            lanes!(n, in place; transforms[2] = |a: transforms[0], b: transforms[1]| a * b)
+        }
+        Op::InverseT if !LANES_MATCH_GLAM => {
+            lanes!(n, in place; transforms[1] = |a: transforms[0]| a.inverse())
+        }
+        Op::MakeRelative if !LANES_MATCH_GLAM => {
+            lanes!(n, in place; transforms[2] = |a: transforms[0], b: transforms[1]|
+            a.relative_to(&b))
+        }
+        Op::MakeAbsolute if !LANES_MATCH_GLAM => {
+            lanes!(n, in place; transforms[2] = |a: transforms[0], b: transforms[1]| b * a)
+        }
         // `translation + rotation · (scale ⊙ v)` on components, as glam computes it.
         Op::TransformPoint | Op::TransformVector => {
             // SAFETY: as in `lanes!`; the inputs are read before the output is written.

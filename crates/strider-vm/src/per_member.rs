@@ -8,9 +8,10 @@
 //! visit the members, each with its own arrays and pose: the same element functions as
 //! the handlers ([`array_get`], [`array_set`], [`bone_transform`]), on the same values, in
 //! the same order for each member, so the results are the handlers', bit for bit. A read
-//! fused with the `BreakTransform` of its result runs for every member first, then the
-//! break for the whole batch ([`break_transforms`]): a member's break reads only its own
-//! lane, which no other member's read writes.
+//! fused with a `BreakTransform` (of its result, as the compiler fuses them) runs for every
+//! member first, then the break for the whole batch ([`break_transforms`]): a member's
+//! break reads only its own lane, which no other member's read writes, and the reads read
+//! none of the break's outputs.
 //!
 //! Two kinds of op go further, with one piece of work for the whole batch: the traces ask
 //! the world once for every member ([`sphere_traces`], [`line_traces`]), and the two-bone
@@ -46,8 +47,9 @@ fn item0<T>(base: *mut T, slot: u32) -> *mut T {
 /// member 0 items start at `lane0`, when it is one of the ops that read an element of a
 /// member's array (`ArrayAt` of any element type but bones, alone or followed by
 /// `BreakTransform`), write one (`ArraySetAt`, the same types), or read a bone's transform
-/// (`GetTransform`, alone or followed by `BreakTransform`); returns true. Returns false,
-/// doing nothing, for every other op.
+/// (`GetTransform`, alone or followed by `BreakTransform`); returns true. A fused
+/// `BreakTransform` runs after every member's read, on all the lanes at once. Returns
+/// false, doing nothing, for every other op.
 ///
 /// # Safety
 /// `op` and `o` must be an instruction of a program built by

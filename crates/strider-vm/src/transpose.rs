@@ -162,7 +162,8 @@ mod sse {
     #[inline(always)]
     pub(super) unsafe fn quat_rows(cols: &QuatColumns, to: *mut f32) {
         for g in 0..BATCH / 4 {
-            // SAFETY: as in `quat_columns`.
+            // SAFETY: within the columns' `BATCH` floats, and floats `16 g .. 16 g + 16` of
+            // `4 * BATCH` (the caller's contract).
             unsafe {
                 let rows = std::array::from_fn(|c| _mm_loadu_ps(cols[c].as_ptr().add(4 * g)));
                 for (k, v) in transpose(rows).into_iter().enumerate() {
@@ -363,7 +364,11 @@ mod tests {
             Transform::new(
                 Vec3::splat(pattern(m)),
                 block[m],
-                Vec3::splat(pattern(m + 1)),
+                Vec3::new(
+                    pattern(3 * m + 100),
+                    pattern(3 * m + 101),
+                    pattern(3 * m + 102),
+                ),
             )
         });
         assert_eq!(bits(&rotation_columns(&transforms)), bits(&cols));

@@ -10,9 +10,11 @@
 //!
 //! The order of operations is glam's (0.33, SSE2, without FMA): on x86-64 builds without
 //! `fma` the results equal glam's `Quat::length`, `Quat / f32`, `Quat::normalize`,
-//! `Quat * Quat` and `Quat * Vec3` bit for bit; elsewhere they may differ from glam in the last bit, never
-//! between the one-character and the crowd paths. No fused multiply-add is used (Rust
-//! never fuses on its own), so the results are the same on every target.
+//! `Quat * Quat` and `Quat * Vec3` bit for bit; elsewhere they may differ from glam in the
+//! last bit, never between the one-character and the crowd paths (a crowd's op that
+//! computes with these where its one-character handler calls glam does so only where they
+//! agree). No fused multiply-add is used (Rust never fuses on its own), so the results are
+//! the same on every target.
 
 /// `[x, y, z, w]` normalised, or the identity when its length is zero or not finite
 /// (a rotation, unitless). The length sums the squares as `(x² + z²) + (y² + w²)`.
