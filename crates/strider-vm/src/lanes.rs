@@ -604,9 +604,9 @@ pub(crate) unsafe fn run_wide(
     // The exponential lerps (operands: current, target, speed, result), whose weight
     // `exp_alpha(speed, dt)` is computed once for each run of members with the same speed
     // and dt (bit for bit, so the same weight), as a crowd's members usually have. The
-    // weights come first, member by member (`weights`); then the lerp itself, as one loop over the
-    // first `$lanes` lanes: a float lerp over every lane vectorises (lanes past the members
-    // get weight 0 and are never read), a slerp runs for the members only.
+    // weights come first, member by member (`weights`); then the lerp itself, as one loop
+    // over the first `$lanes` lanes: a float lerp over every lane vectorises (lanes past
+    // the members get weight 0 and are never read), a slerp runs for the members only.
     macro_rules! by_weight {
         ($a:ident, $apply:path, $lanes:expr) => {{
             // SAFETY: as in `lanes!`.

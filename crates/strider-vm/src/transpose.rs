@@ -120,18 +120,8 @@ mod sse {
     /// `from` must be valid for reads of `4 * BATCH` floats.
     #[inline(always)]
     pub(super) unsafe fn quat_columns(from: *const f32) -> QuatColumns {
-        let mut cols = [[0.0; BATCH]; 4];
-        for g in 0..BATCH / 4 {
-            // SAFETY: floats `16 g .. 16 g + 16` of `4 * BATCH` (the caller's contract),
-            // and within the columns' `BATCH` floats.
-            unsafe {
-                let rows = std::array::from_fn(|k| _mm_loadu_ps(from.add(16 * g + 4 * k)));
-                for (col, v) in cols.iter_mut().zip(transpose(rows)) {
-                    _mm_storeu_ps(col.as_mut_ptr().add(4 * g), v);
-                }
-            }
-        }
-        cols
+        // SAFETY: the rotations lie four floats apart (the caller's contract).
+        unsafe { strided_quat_columns(from, 4) }
     }
 
     /// `BATCH` runs of four floats (from `from`, one every `stride` floats: the rotations
