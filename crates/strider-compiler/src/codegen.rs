@@ -760,15 +760,9 @@ impl<'a> Gen<'a> {
 
     /// Forgets the kept values of `frame` that `writes` may change.
     fn forget(&mut self, frame: usize, writes: &Writes) {
-        let (checked, body) = (self.checked, self.frames[frame].body);
-        let (reads, avail) = (&mut self.reads, &mut self.avail[frame]);
-        let changed: SmallVec<[usize; 16]> = avail
-            .ones()
-            .filter(|&n| writes.touch(reads.node(checked, body, n)))
-            .collect();
-        for n in changed {
-            avail.set(n, false);
-        }
+        let body = self.frames[frame].body;
+        self.reads
+            .forget(self.checked, body, writes, &mut self.avail[frame]);
     }
 
     /// Forgets the kept values of `frame` that `step`, just emitted, may have changed: the

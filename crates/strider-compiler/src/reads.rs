@@ -9,6 +9,7 @@
 //! are never kept across loop iterations.
 
 use crate::check::{Body, CStep, Checked, NodeKind, Src, VarRef};
+use fixedbitset::FixedBitSet;
 use rustc_hash::FxHashMap;
 use strider_nodes::Op;
 
@@ -31,14 +32,14 @@ pub(crate) struct Reads {
 }
 
 impl Reads {
-    fn merge(&mut self, other: &Reads) {
+    /// Adds what `other` reads; [`Reads::normalise`] must follow.
+    fn add(&mut self, other: &Reads) {
         self.globals.extend_from_slice(&other.globals);
         self.locals.extend_from_slice(&other.locals);
         self.execs.extend_from_slice(&other.execs);
         self.pose |= other.pose;
         self.loop_vars |= other.loop_vars;
         self.stateful |= other.stateful;
-        self.normalise();
     }
 
     fn normalise(&mut self) {
@@ -212,6 +213,38 @@ pub(crate) struct ReadsTable {
     nodes: Vec<Vec<Option<Reads>>>,
     /// Function → the globals and pose its whole body reads (for calls of it).
     functions: FxHashMap<usize, Reads>,
+    /// Per body (as `nodes`): the inverse of `nodes`, once built (see [`Readers`]).
+    readers: Vec<Option<Readers>>,
+}
+
+/// For everything a step may write, the pure nodes of one body whose values read it: the
+/// inverse of [`Reads`]. Forgetting what a step changed is then a few word operations per
+/// thing written, not a test of every kept value against it.
+#[derive(Default)]
+struct Readers {
+    /// The nodes that read the pose.
+    pose: FixedBitSet,
+    /// The nodes that read any graph variable.
+    any_global: FixedBitSet,
+    /// Per graph variable, the nodes that read it (shorter when no node reads the later ones).
+    globals: Vec<FixedBitSet>,
+    /// Per local of the body, the nodes that read it.
+    locals: Vec<FixedBitSet>,
+    /// Per exec node of the body, the nodes that read its outputs.
+    execs: Vec<FixedBitSet>,
+}
+
+impl Readers {
+    /// Marks node `n` (of a body of `len` nodes) as a reader of item `key` of `sets`.
+    fn mark(sets: &mut Vec<FixedBitSet>, key: usize, n: usize, len: usize) {
+        if sets.len() <= key {
+            sets.resize_with(key + 1, FixedBitSet::new);
+        }
+        if sets[key].is_empty() {
+            sets[key].grow(len);
+        }
+        sets[key].insert(n);
+    }
 }
 
 impl ReadsTable {
@@ -230,6 +263,75 @@ impl ReadsTable {
             self.fill(checked, b, at, n);
         }
         self.nodes[at][n].as_ref().expect("filled")
+    }
+
+    /// Removes from `kept` (pure nodes of `body` whose values are kept) those that `writes`
+    /// may change: the nodes `n` with `writes.touch(self.node(checked, body, n))`.
+    pub(crate) fn forget(
+        &mut self,
+        checked: &Checked,
+        body: Option<usize>,
+        writes: &Writes,
+        kept: &mut FixedBitSet,
+    ) {
+        if writes.everything {
+            kept.clear();
+            return;
+        }
+        let r = self.readers(checked, body);
+        if writes.pose {
+            kept.difference_with(&r.pose);
+        }
+        if writes.any_global {
+            kept.difference_with(&r.any_global);
+        }
+        for &e in &writes.execs {
+            if let Some(set) = r.execs.get(e) {
+                kept.difference_with(set);
+            }
+        }
+        for v in &writes.vars {
+            let set = match *v {
+                VarRef::Global(g) => r.globals.get(g),
+                VarRef::Local(l) => r.locals.get(l),
+            };
+            if let Some(set) = set {
+                kept.difference_with(set);
+            }
+        }
+    }
+
+    /// The [`Readers`] of `body`, built on first use from the reads of its pure nodes.
+    fn readers(&mut self, checked: &Checked, body: Option<usize>) -> &Readers {
+        let at = body.map_or(0, |f| f + 1);
+        if self.readers.len() <= at {
+            self.readers.resize_with(at + 1, || None);
+        }
+        if self.readers[at].is_none() {
+            let b = body_of(checked, body);
+            let len = b.nodes.len();
+            let mut r = Readers {
+                pose: FixedBitSet::with_capacity(len),
+                any_global: FixedBitSet::with_capacity(len),
+                ..Readers::default()
+            };
+            for n in (0..len).filter(|&n| b.nodes[n].pure) {
+                let reads = self.node(checked, body, n);
+                r.pose.set(n, reads.pose);
+                r.any_global.set(n, !reads.globals.is_empty());
+                for &g in &reads.globals {
+                    Readers::mark(&mut r.globals, g, n, len);
+                }
+                for &l in &reads.locals {
+                    Readers::mark(&mut r.locals, l, n, len);
+                }
+                for &e in &reads.execs {
+                    Readers::mark(&mut r.execs, e, n, len);
+                }
+            }
+            self.readers[at] = Some(r);
+        }
+        self.readers[at].as_ref().expect("built")
     }
 
     /// Works out the reads of node `n` of body `b` (table `at`, see [`ReadsTable::node`])
@@ -260,7 +362,7 @@ impl ReadsTable {
                     Src::Local(l) => reads.locals.push(l),
                     Src::Node { node: dep, .. } if b.nodes[dep].pure => {
                         if let Some(r) = &self.nodes[at][dep] {
-                            reads.merge(r);
+                            reads.add(r);
                         }
                     }
                     // An exec node's outputs change when that node runs again.

@@ -160,9 +160,14 @@ impl LineIndex {
         let column = if self.ascii {
             offset.saturating_sub(start)
         } else {
-            self.text
-                .get(start..offset)
-                .map_or(0, |s| s.chars().count())
+            // A comment elsewhere may hold the text's only non-ASCII chars: most lines are
+            // ASCII up to the offset, and then the column is a byte count again.
+            let before = self.text.get(start..offset).unwrap_or_default();
+            if before.is_ascii() {
+                before.len()
+            } else {
+                before.chars().count()
+            }
         } + 1;
         (line, column)
     }
@@ -176,6 +181,9 @@ pub fn parse(src: &str) -> Result<Spanned<Value<'_>>, ParseError> {
         bytes: src.as_bytes(),
         pos,
         open: Vec::new(),
+        values: Vec::new(),
+        fields: Vec::new(),
+        entries: Vec::new(),
     };
     p.attributes()?;
     let value = p.value()?;
@@ -227,7 +235,19 @@ struct Parser<'a> {
     pos: usize,
     /// Open delimiters and their offsets, innermost last; its length is the nesting depth.
     open: Vec<(u8, usize)>,
+    /// The items of the lists and tuples being read, innermost last (see
+    /// [`Parser::sequence`]).
+    values: Vec<Spanned<Value<'a>>>,
+    /// The fields of the structs being read, innermost last.
+    fields: Vec<Field<'a>>,
+    /// The entries of the maps being read, innermost last.
+    entries: Vec<Entry<'a>>,
 }
+
+/// A struct's field: its name and value.
+type Field<'a> = (Spanned<&'a str>, Spanned<Value<'a>>);
+/// A map's entry: its key and value.
+type Entry<'a> = (Spanned<Value<'a>>, Spanned<Value<'a>>);
 
 impl<'a> Parser<'a> {
     // ----- cursor helpers and diagnostics -------------------------------------------------
@@ -409,12 +429,14 @@ impl<'a> Parser<'a> {
             Some(b'(') => self.parenthesised(None, start),
             Some(b'[') => {
                 self.enter(b'[')?;
-                let items = self.sequence(b']', "the list element", Self::value)?;
+                let items =
+                    self.sequence(b']', "the list element", |p| &mut p.values, Self::value)?;
                 Ok(spanned(Value::List(items), start, self.pos))
             }
             Some(b'{') => {
                 self.enter(b'{')?;
-                let entries = self.sequence(b'}', "the map entry", Self::map_entry)?;
+                let entries =
+                    self.sequence(b'}', "the map entry", |p| &mut p.entries, Self::map_entry)?;
                 Ok(spanned(Value::Map(entries), start, self.pos))
             }
             Some(b'"') => self.string(),
@@ -441,30 +463,49 @@ impl<'a> Parser<'a> {
 
     /// Comma-separated items up to `close` (trailing comma allowed). The opening delimiter
     /// has been consumed by [`Parser::enter`]; this consumes the closing one.
+    /// Reads `item`s separated by commas up to `close`. The items of every open sequence
+    /// wait on one stack of their type (`stack`) and each sequence ends as a vector of its
+    /// exact length: one allocation per list, not one per doubling of its length.
     fn sequence<T>(
         &mut self,
         close: u8,
         after: &str,
-        mut item: impl FnMut(&mut Self) -> PResult<T>,
+        stack: fn(&mut Self) -> &mut Vec<T>,
+        item: impl FnMut(&mut Self) -> PResult<T>,
     ) -> PResult<Vec<T>> {
-        let mut items = Vec::new();
+        let base = stack(self).len();
+        if let Err(e) = self.sequence_items(close, after, stack, item) {
+            stack(self).truncate(base);
+            return Err(e);
+        }
+        self.open.pop();
+        Ok(stack(self).split_off(base))
+    }
+
+    /// [`Parser::sequence`]'s loop: pushes the items on `stack`.
+    fn sequence_items<T>(
+        &mut self,
+        close: u8,
+        after: &str,
+        stack: fn(&mut Self) -> &mut Vec<T>,
+        mut item: impl FnMut(&mut Self) -> PResult<T>,
+    ) -> PResult<()> {
         loop {
             self.skip_ws()?;
             if self.eat(close) {
-                break;
+                return Ok(());
             }
-            items.push(item(self)?);
+            let x = item(self)?;
+            stack(self).push(x);
             self.skip_ws()?;
             if self.eat(b',') {
                 continue;
             }
             if self.eat(close) {
-                break;
+                return Ok(());
             }
             return Err(self.separator_error(close, after));
         }
-        self.open.pop();
-        Ok(items)
     }
 
     fn separator_error(&self, close: u8, after: &str) -> ParseError {
@@ -486,7 +527,7 @@ impl<'a> Parser<'a> {
         err
     }
 
-    fn map_entry(&mut self) -> PResult<(Spanned<Value<'a>>, Spanned<Value<'a>>)> {
+    fn map_entry(&mut self) -> PResult<Entry<'a>> {
         let key = self.value()?;
         self.skip_ws()?;
         if !self.eat(b':') {
@@ -496,7 +537,7 @@ impl<'a> Parser<'a> {
         Ok((key, self.value()?))
     }
 
-    fn field(&mut self) -> PResult<(Spanned<&'a str>, Spanned<Value<'a>>)> {
+    fn field(&mut self) -> PResult<Field<'a>> {
         let Some(name) = self.ident() else {
             return Err(self.expected("a field name (`name: value`) or `)`"));
         };
@@ -575,9 +616,15 @@ impl<'a> Parser<'a> {
             self.open.pop();
             Value::Unit
         } else if self.at_field() {
-            Value::Struct(name, self.sequence(b')', "the field value", Self::field)?)
+            Value::Struct(
+                name,
+                self.sequence(b')', "the field value", |p| &mut p.fields, Self::field)?,
+            )
         } else {
-            Value::Tuple(name, self.sequence(b')', "the value", Self::value)?)
+            Value::Tuple(
+                name,
+                self.sequence(b')', "the value", |p| &mut p.values, Self::value)?,
+            )
         };
         Ok(spanned(value, start, self.pos))
     }
@@ -1110,6 +1157,14 @@ Graph(
         let ascii = LineIndex::new("ab\ncd");
         let cols: Vec<_> = [0, 2, 3, 4, 5, 999].map(|o| ascii.line_col(o)).into();
         assert_eq!(cols, [(1, 1), (1, 3), (2, 1), (2, 2), (2, 3), (2, 3)]);
+        // Lines differ: `°` (2 bytes) and `—` (3 bytes) count one column each on their own
+        // lines; the ASCII line between them counts bytes.
+        let mixed = LineIndex::new("a°b\ncd\n—x");
+        let cols: Vec<_> = [3, 4, 6, 7, 9, 11, 13].map(|o| mixed.line_col(o)).into();
+        assert_eq!(
+            cols,
+            [(1, 3), (1, 4), (2, 2), (2, 3), (3, 1), (3, 2), (3, 3)]
+        );
     }
 
     #[test]
