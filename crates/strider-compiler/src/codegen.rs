@@ -331,8 +331,18 @@ pub(crate) fn generate(loaded: &LoadedGraph, checked: &Checked, options: Options
         &loaded.main.nodes,
         &[&construction_doc, &forward_doc],
     ));
+    // Every node of every function once, and the graph's once in each event.
+    let node_origins = checked
+        .functions
+        .iter()
+        .map(|f| f.nodes.len())
+        .sum::<usize>()
+        + 2 * checked.graph.nodes.len();
+    let mut pb = ProgramBuilder::new(&name);
+    // The nodes' origins (some nodes are never emitted), and the steps' (fewer).
+    pb.reserve_origins(node_origins + node_origins / 4);
     let mut g = Gen {
-        pb: ProgramBuilder::new(&name),
+        pb,
         checked,
         globals: Vec::new(),
         consts: FxHashMap::default(),
@@ -342,16 +352,7 @@ pub(crate) fn generate(loaded: &LoadedGraph, checked: &Checked, options: Options
         fn_decls,
         node_sources,
         event: Event::Construction,
-        // Every node of every function once, and the graph's once in each event.
-        node_origins: FxHashMap::with_capacity_and_hasher(
-            checked
-                .functions
-                .iter()
-                .map(|f| f.nodes.len())
-                .sum::<usize>()
-                + 2 * checked.graph.nodes.len(),
-            Default::default(),
-        ),
+        node_origins: FxHashMap::with_capacity_and_hasher(node_origins, Default::default()),
         avail: Vec::new(),
         reads: ReadsTable::default(),
         call_facts: checked.functions.iter().map(CallFacts::of).collect(),

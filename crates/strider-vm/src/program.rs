@@ -485,6 +485,12 @@ impl ProgramBuilder {
         id
     }
 
+    /// Makes room for `additional` more origins: a caller that knows about how many it will
+    /// add saves the table's regrowth (each origin is a few strings).
+    pub fn reserve_origins(&mut self, additional: usize) {
+        self.program.origins.reserve(additional);
+    }
+
     /// Adds `origin` to the origin table without looking for an equal one: for a caller
     /// that knows no equal origin will be needed again (the compiler adds each node's origin
     /// once per body and event). [`ProgramBuilder::intern_origin`] does not see it.
