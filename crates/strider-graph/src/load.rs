@@ -4,6 +4,7 @@ use crate::diagnostic::{Diagnostic, Diagnostics, FileId, Loc, SourceMap};
 use crate::document::Graph;
 use crate::parse::Parser;
 use crate::reader;
+use bumpalo::Bump;
 use std::path::{Path, PathBuf};
 
 /// A graph and the libraries it imports (transitively), parsed, with their sources.
@@ -75,7 +76,8 @@ struct Loader {
 
 impl Loader {
     fn parse(&mut self, file: FileId) -> Option<Graph> {
-        match reader::parse(self.sources.text(file)) {
+        let arena = Bump::new();
+        match reader::parse(self.sources.text(file), &arena) {
             Ok(root) => {
                 let mut p = Parser {
                     sources: &self.sources,

@@ -220,7 +220,7 @@ impl Parser<'_> {
         ];
         self.check_fields(fields, KNOWN, "Graph");
         let mut version_seen = false;
-        for (name, v) in fields {
+        for (name, v) in fields.iter() {
             match name.value {
                 "version" => {
                     version_seen = true;
@@ -590,7 +590,7 @@ impl Parser<'_> {
                     loc,
                 })
             }
-            Value::Tuple(Some(name), items) if name.value == "var" => match items.as_slice() {
+            Value::Tuple(Some(name), items) if name.value == "var" => match *items {
                 [
                     Spanned {
                         value: Value::String(s),
@@ -627,14 +627,14 @@ impl Parser<'_> {
             Value::Ident(w) => LiteralKind::Word(w.to_string()),
             Value::List(items) => {
                 let mut out = Vec::new();
-                for item in items {
+                for item in items.iter() {
                     out.push(self.literal(item)?);
                 }
                 LiteralKind::List(out)
             }
             Value::Tuple(None, items) => {
                 let mut nums = Vec::new();
-                for item in items {
+                for item in items.iter() {
                     nums.push(self.number(item, "a vector or quaternion component")?);
                 }
                 if nums.len() != 3 && nums.len() != 4 {
@@ -650,7 +650,7 @@ impl Parser<'_> {
                 }
                 LiteralKind::Numbers(nums)
             }
-            Value::Tuple(Some(name), items) => match (name.value, items.as_slice()) {
+            Value::Tuple(Some(name), items) => match (name.value, *items) {
                 (
                     "bone",
                     [
@@ -718,7 +718,7 @@ impl Parser<'_> {
                 }
                 self.check_fields(fields, &["translation", "rotation", "scale"], "a transform");
                 let mut t = (None, None, None);
-                for (f, fv) in fields {
+                for (f, fv) in fields.iter() {
                     let lit = self.literal(fv).map(Box::new);
                     match f.value {
                         "translation" => t.0 = lit,
@@ -770,7 +770,7 @@ impl Parser<'_> {
             }
         };
         match (name, &v.value) {
-            ("Set", Value::Tuple(_, items)) => match items.as_slice() {
+            ("Set", Value::Tuple(_, items)) => match *items {
                 [var, value] => {
                     let var = self.string(var, "the variable name")?;
                     let value = self.expr(value)?;
@@ -785,7 +785,7 @@ impl Parser<'_> {
                     None
                 }
             },
-            ("Run", Value::Tuple(_, items)) => match items.as_slice() {
+            ("Run", Value::Tuple(_, items)) => match *items {
                 [id] => self.string(id, "the node id").map(Step::Run),
                 _ => {
                     self.err(v.span, "`Run` takes one node id: `Run(\"node\")`")
@@ -803,7 +803,7 @@ impl Parser<'_> {
             }),
             ("Return", Value::Struct(_, fields)) => {
                 let mut values = Vec::new();
-                for (f, fv) in fields {
+                for (f, fv) in fields.iter() {
                     if let Some(value) = self.expr(fv) {
                         values.push(PinArg {
                             name: Ident {
@@ -820,7 +820,7 @@ impl Parser<'_> {
                 self.check_fields(fields, &["condition", "then", "else"], "Branch");
                 let mut condition = None;
                 let (mut then, mut otherwise) = (Vec::new(), Vec::new());
-                for (f, fv) in fields {
+                for (f, fv) in fields.iter() {
                     match f.value {
                         "condition" => condition = self.expr(fv),
                         "then" => then = self.steps(fv),
@@ -847,7 +847,7 @@ impl Parser<'_> {
                 );
                 let (mut items, mut element, mut index, mut count, mut body) =
                     (None, None, None, None, Vec::new());
-                for (f, fv) in fields {
+                for (f, fv) in fields.iter() {
                     match f.value {
                         "items" => items = self.expr(fv),
                         "element" => element = self.string(fv, "the element's name"),
@@ -875,7 +875,7 @@ impl Parser<'_> {
             ("For", Value::Struct(_, fields)) => {
                 self.check_fields(fields, &["count", "index", "body"], "For");
                 let (mut count, mut index, mut body) = (None, None, Vec::new());
-                for (f, fv) in fields {
+                for (f, fv) in fields.iter() {
                     match f.value {
                         "count" => count = self.expr(fv),
                         "index" => index = self.string(fv, "the index's name"),

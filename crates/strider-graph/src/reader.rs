@@ -7,12 +7,16 @@
 //! uses the spans (through [`LineIndex`]) for its own messages.
 //!
 //! The tree borrows from the source text: identifiers, field names and strings without
-//! escapes are slices of it, so reading a graph allocates mainly for the lists (and for a
-//! string with an escape, a number with `_` separators).
+//! escapes are slices of it. Its lists (and the strings with escapes) live in an arena
+//! ([`Bump`]) the caller passes in: each list is one bump of a pointer, and the whole tree is
+//! freed at once with the arena, however many lists it has. The tree is `Copy` and has
+//! nothing to drop.
 //!
 //! It is a single recursive-descent cursor over the source text. Nesting is limited to
 //! 128 levels so hostile input yields a [`ParseError`] rather than a stack overflow.
 
+/// The arena [`parse`] allocates a document's lists in (re-exported for its callers).
+pub use bumpalo::Bump;
 use std::borrow::Cow;
 use std::fmt;
 
@@ -29,7 +33,7 @@ pub struct Span {
 }
 
 /// A value together with the span of source text it was read from.
-#[derive(Clone, Debug, PartialEq)]
+#[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Spanned<T> {
     /// The value itself.
     pub value: T,
@@ -37,9 +41,9 @@ pub struct Spanned<T> {
     pub span: Span,
 }
 
-/// One RON value, borrowing its names and strings from the source text `'a`; children
-/// carry their own spans.
-#[derive(Clone, Debug, PartialEq)]
+/// One RON value, borrowing its names and strings from the source text and its lists from
+/// the arena given to [`parse`] (both live for `'a`); children carry their own spans.
+#[derive(Clone, Copy, Debug, PartialEq)]
 pub enum Value<'a> {
     /// `true` or `false`.
     Bool(bool),
@@ -47,8 +51,9 @@ pub enum Value<'a> {
     Int(i64),
     /// A float literal, including `inf`, `-inf` and `NaN`.
     Float(f64),
-    /// A string literal or a raw string: borrowed, or owned when an escape was resolved.
-    String(Cow<'a, str>),
+    /// A string literal or a raw string: borrowed from the source, or in the arena when an
+    /// escape was resolved.
+    String(&'a str),
     /// A character literal such as `'a'`.
     Char(char),
     /// `()`
@@ -57,17 +62,14 @@ pub enum Value<'a> {
     /// `None`, `Z`, `Float`.
     Ident(&'a str),
     /// `[a, b, c]`
-    List(Vec<Spanned<Value<'a>>>),
+    List(&'a [Spanned<Value<'a>>]),
     /// `{ key: value, ... }` in source order; duplicate keys are kept (the caller reports them).
-    Map(Vec<(Spanned<Value<'a>>, Spanned<Value<'a>>)>),
+    Map(&'a [Entry<'a>]),
     /// `Name(a, b)` or `(a, b)`; name is None for an anonymous tuple. `Some(x)` is
     /// `Tuple(Some("Some"), [x])`. `Name()` is `Tuple(Some("Name"), [])`.
-    Tuple(Option<Spanned<&'a str>>, Vec<Spanned<Value<'a>>>),
+    Tuple(Option<Spanned<&'a str>>, &'a [Spanned<Value<'a>>]),
     /// `Name(field: v, ...)` or `(field: v, ...)` in source order; duplicate fields kept.
-    Struct(
-        Option<Spanned<&'a str>>,
-        Vec<(Spanned<&'a str>, Spanned<Value<'a>>)>,
-    ),
+    Struct(Option<Spanned<&'a str>>, &'a [Field<'a>]),
 }
 
 impl Value<'_> {
@@ -174,9 +176,12 @@ impl LineIndex {
 }
 
 /// Parses one RON value (the whole document), allowing trailing whitespace/comments only.
-pub fn parse(src: &str) -> Result<Spanned<Value<'_>>, ParseError> {
+/// The value's lists, and its strings with escapes, are allocated in `arena`: a document's
+/// thousands of lists cost a bump of a pointer each and are freed all at once with it.
+pub fn parse<'a>(src: &'a str, arena: &'a Bump) -> Result<Spanned<Value<'a>>, ParseError> {
     let pos = if src.starts_with('\u{feff}') { 3 } else { 0 };
     let mut p = Parser {
+        arena,
         src,
         bytes: src.as_bytes(),
         pos,
@@ -230,6 +235,8 @@ fn spanned<T>(value: T, start: usize, end: usize) -> Spanned<T> {
 
 /// Recursive-descent cursor over the source; `pos` always sits on a char boundary.
 struct Parser<'a> {
+    /// Where the lists and the strings with escapes go.
+    arena: &'a Bump,
     src: &'a str,
     bytes: &'a [u8],
     pos: usize,
@@ -464,22 +471,25 @@ impl<'a> Parser<'a> {
     /// Comma-separated items up to `close` (trailing comma allowed). The opening delimiter
     /// has been consumed by [`Parser::enter`]; this consumes the closing one.
     /// Reads `item`s separated by commas up to `close`. The items of every open sequence
-    /// wait on one stack of their type (`stack`) and each sequence ends as a vector of its
-    /// exact length: one allocation per list, not one per doubling of its length.
-    fn sequence<T>(
+    /// wait on one stack of their type (`stack`); each sequence ends copied into the arena
+    /// at its exact length.
+    fn sequence<T: Copy>(
         &mut self,
         close: u8,
         after: &str,
         stack: fn(&mut Self) -> &mut Vec<T>,
         item: impl FnMut(&mut Self) -> PResult<T>,
-    ) -> PResult<Vec<T>> {
+    ) -> PResult<&'a [T]> {
         let base = stack(self).len();
-        if let Err(e) = self.sequence_items(close, after, stack, item) {
-            stack(self).truncate(base);
-            return Err(e);
+        let read = self.sequence_items(close, after, stack, item);
+        let arena = self.arena;
+        let items = stack(self);
+        let slice = read.map(|()| &*arena.alloc_slice_copy(&items[base..]));
+        items.truncate(base);
+        if slice.is_ok() {
+            self.open.pop();
         }
-        self.open.pop();
-        Ok(stack(self).split_off(base))
+        slice
     }
 
     /// [`Parser::sequence`]'s loop: pushes the items on `stack`.
@@ -793,6 +803,10 @@ impl<'a> Parser<'a> {
             }
             self.pos += run + 1;
             if rest[run] == b'"' {
+                let out = match out {
+                    Cow::Borrowed(text) => text,
+                    Cow::Owned(text) => self.arena.alloc_str(&text),
+                };
                 return Ok(spanned(Value::String(out), start, self.pos));
             }
             let Some(c) = self.escape()? else { break };
@@ -880,11 +894,7 @@ impl<'a> Parser<'a> {
                 .is_some_and(|s| s.iter().all(|&b| b == b'#'))
             {
                 self.pos = end;
-                return Ok(spanned(
-                    Value::String(Cow::Borrowed(self.slice(body, quote))),
-                    start,
-                    end,
-                ));
+                return Ok(spanned(Value::String(self.slice(body, quote)), start, end));
             }
             quote += 1;
         }
@@ -916,6 +926,11 @@ impl<'a> Parser<'a> {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// [`super::parse`] with an arena of its own, kept for the rest of the test run.
+    fn parse(src: &str) -> Result<Spanned<Value<'_>>, ParseError> {
+        super::parse(src, Box::leak(Box::default()))
+    }
 
     /// Compact rendering of a value tree (spans dropped) for readable assertions.
     fn show(v: &Value) -> String {
@@ -1037,14 +1052,19 @@ Graph(
         // Escapes first, between and last, around plain runs; the empty string.
         assert_eq!(ok(r#""\tab\"c\\""#), r#""\tab\"c\\""#);
         assert_eq!(ok("\"\""), "\"\"");
+        let src = r#""no escapes""#;
         let Ok(Spanned {
             value: Value::String(s),
             ..
-        }) = parse(r#""no escapes""#)
+        }) = parse(src)
         else {
             panic!("a string");
         };
-        assert!(matches!(s, Cow::Borrowed("no escapes")), "borrowed: {s:?}");
+        assert_eq!(s, "no escapes");
+        assert!(
+            std::ptr::eq(s.as_ptr(), src[1..].as_ptr()),
+            "borrowed: {s:?}"
+        );
         assert_eq!(ok(r#"r"C:\path""#), r#""C:\\path""#);
         assert_eq!(ok(r###"r##"a "# b"##"###), r##""a \"# b""##);
         assert_eq!(ok("r#\"\"#"), "\"\"");
@@ -1248,7 +1268,7 @@ Graph(
         };
         let mut children: Vec<&Spanned<Value>> = Vec::new();
         match &v.value {
-            Value::List(items) | Value::Tuple(_, items) => children.extend(items),
+            Value::List(items) | Value::Tuple(_, items) => children.extend(items.iter()),
             Value::Map(entries) => entries.iter().for_each(|(k, v)| children.extend([k, v])),
             Value::Struct(_, fields) => fields.iter().for_each(|(name, value)| {
                 inside(name.span);

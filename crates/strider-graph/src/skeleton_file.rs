@@ -19,6 +19,7 @@
 
 use crate::diagnostic::{Diagnostic, Diagnostics, FileId, Loc, SourceMap};
 use crate::reader::{self, Spanned, Value};
+use bumpalo::Bump;
 use glam::{Quat, Vec3};
 use std::path::Path;
 use std::sync::Arc;
@@ -71,7 +72,8 @@ pub fn load_skeleton_str(path: &Path, text: String) -> Result<SkeletonFile, Vec<
     let mut sources = SourceMap::default();
     let file = sources.add(path, text);
     let mut diags = Diagnostics::default();
-    let root = match reader::parse(sources.text(file)) {
+    let arena = Bump::new();
+    let root = match reader::parse(sources.text(file), &arena) {
         Ok(r) => r,
         Err(e) => {
             diags
@@ -119,7 +121,7 @@ impl SkelReader<'_> {
             && items.len() == N
         {
             let mut out = [0.0; N];
-            for (o, item) in out.iter_mut().zip(items) {
+            for (o, item) in out.iter_mut().zip(items.iter()) {
                 *o = match item.value {
                     Value::Int(i) => i as f32,
                     Value::Float(f) => f as f32,
@@ -144,9 +146,9 @@ impl SkelReader<'_> {
             let inner = Spanned {
                 value: Value::Tuple(
                     None,
-                    match &v.value {
-                        Value::Tuple(_, i) => i.clone(),
-                        _ => Vec::new(),
+                    match v.value {
+                        Value::Tuple(_, i) => i,
+                        _ => &[],
                     },
                 ),
                 span: v.span,
@@ -183,7 +185,7 @@ impl SkelReader<'_> {
         let mut bone_spans = Vec::new();
         let mut contacts = Vec::new();
         let mut contact_spans = Vec::new();
-        for (f, fv) in fields {
+        for (f, fv) in fields.iter() {
             match f.value {
                 "version" => {
                     if !matches!(fv.value, Value::Int(1)) {
@@ -202,7 +204,7 @@ impl SkelReader<'_> {
                         self.err(fv.span, "expected `bones: [ ... ]`").emit();
                         continue;
                     };
-                    for item in items {
+                    for item in items.iter() {
                         if let Some(b) = self.bone(item) {
                             bones.push(b);
                             bone_spans.push(item.span);
@@ -214,7 +216,7 @@ impl SkelReader<'_> {
                         self.err(fv.span, "expected `contacts: [ ... ]`").emit();
                         continue;
                     };
-                    for item in items {
+                    for item in items.iter() {
                         if let Some(c) = self.contact(item) {
                             contacts.push(c);
                             contact_spans.push(item.span);
@@ -275,7 +277,7 @@ impl SkelReader<'_> {
         let mut name = None;
         let mut parent = None;
         let mut t = Transform::IDENTITY;
-        for (f, fv) in fields {
+        for (f, fv) in fields.iter() {
             match (f.value, &fv.value) {
                 ("name", Value::String(s)) => name = Some(s.to_string()),
                 ("parent", Value::String(s)) => parent = Some(s.to_string()),
@@ -330,7 +332,7 @@ impl SkelReader<'_> {
             return None;
         };
         let (mut name, mut bone, mut offset) = (None, None, Vec3::ZERO);
-        for (f, fv) in fields {
+        for (f, fv) in fields.iter() {
             match (f.value, &fv.value) {
                 ("name", Value::String(s)) => name = Some(s.to_string()),
                 ("bone", Value::String(s)) => bone = Some(s.to_string()),

@@ -21,7 +21,7 @@
 use std::fmt::Write as _;
 use std::path::{Path, PathBuf};
 use strider_graph::Diagnostic;
-use strider_graph::reader::{self, LineIndex, Span, Spanned, Value as Ron};
+use strider_graph::reader::{self, Bump, LineIndex, Span, Spanned, Value as Ron};
 use strider_nodes::{Value, ValueType};
 use strider_vm::{Instance, Program, VariableId};
 
@@ -68,7 +68,8 @@ impl Overrides {
     pub fn parse(path: &Path, text: &str, program: &Program) -> Result<Overrides, Vec<Diagnostic>> {
         let lines = LineIndex::new(text);
         let at = |span: Span| lines.line_col(span.start);
-        let root = reader::parse(text).map_err(|e| {
+        let arena = Bump::new();
+        let root = reader::parse(text, &arena).map_err(|e| {
             vec![diagnostic(
                 path,
                 at(e.span),
@@ -259,7 +260,7 @@ fn entry(program: &Program, name: &str, value: &Spanned<Ron>) -> Result<Override
         (ValueType::Float, v) => Value::Float(number(v).ok_or_else(mismatch)?),
         (ValueType::Vec3, Ron::Tuple(None, items)) if items.len() == 3 => {
             let mut xyz = [0.0; 3];
-            for (slot, item) in xyz.iter_mut().zip(items) {
+            for (slot, item) in xyz.iter_mut().zip(items.iter()) {
                 *slot = number(&item.value).ok_or_else(mismatch)?;
             }
             Value::Vec3(glam::Vec3::from_array(xyz))
