@@ -721,7 +721,7 @@ impl<'a> Gen<'a> {
         };
         for n in pulled_by(frame_body, body) {
             let r = self.reads.node(checked, function, n);
-            if !r.loop_vars && !r.stateful && !writes.touch(r) {
+            if !r.loop_vars() && !r.stateful() && !writes.touch(&r) {
                 self.pure_closure(frame, n);
             }
         }
@@ -752,7 +752,7 @@ impl<'a> Gen<'a> {
                     let (checked, function) = (self.checked, self.frames[frame].body);
                     writes.execs.contains(node)
                         || (self.body(frame).nodes[*node].pure
-                            && writes.touch(self.reads.node(checked, function, *node)))
+                            && writes.touch(&self.reads.node(checked, function, *node)))
                 }
                 Src::Input(_) | Src::Const { .. } => false,
                 Src::Loop { .. } => true,

@@ -10,45 +10,43 @@
 
 use crate::check::{Body, CStep, Checked, NodeKind, Src, VarRef};
 use fixedbitset::FixedBitSet;
-use rustc_hash::FxHashMap;
 use strider_nodes::Op;
 
-/// The mutable state a value was computed from.
-#[derive(Clone, Debug, Default, PartialEq, Eq)]
-pub(crate) struct Reads {
-    /// Graph variables (indices into `Checked::globals`), sorted, no duplicates.
-    pub globals: Vec<usize>,
-    /// Locals of the body the node sits in, sorted, no duplicates.
-    pub locals: Vec<usize>,
-    /// Exec nodes of the same body whose outputs it reads (as last written), sorted.
-    pub execs: Vec<usize>,
-    /// Whether it reads the pose (a bone transform).
-    pub pose: bool,
-    /// Whether it reads a loop's element, index or count.
-    pub loop_vars: bool,
-    /// Whether it is or pulls a stateful node (whose state advances when first evaluated
-    /// in a run, so it must not be evaluated where the graph would not evaluate it).
-    pub stateful: bool,
+/// The mutable state a value was computed from: a row of its body's [`BodyReads`] and
+/// flags.
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct Reads<'t> {
+    /// One bit per graph variable, local and exec node of the body it reads (the layout is
+    /// `body`'s).
+    row: &'t [u64],
+    /// [`POSE`], [`LOOP_VARS`], [`STATEFUL`].
+    flags: u8,
+    body: &'t BodyReads,
 }
 
-impl Reads {
-    /// Adds what `other` reads; [`Reads::normalise`] must follow.
-    fn add(&mut self, other: &Reads) {
-        self.globals.extend_from_slice(&other.globals);
-        self.locals.extend_from_slice(&other.locals);
-        self.execs.extend_from_slice(&other.execs);
-        self.pose |= other.pose;
-        self.loop_vars |= other.loop_vars;
-        self.stateful |= other.stateful;
+/// A [`Reads`] flag: the value reads the pose (a bone transform).
+const POSE: u8 = 1;
+/// A [`Reads`] flag: the value reads a loop's element, index or count.
+const LOOP_VARS: u8 = 2;
+/// A [`Reads`] flag: the value is or pulls a stateful node (whose state advances when first
+/// evaluated in a run, so it must not be evaluated where the graph would not evaluate it).
+const STATEFUL: u8 = 4;
+/// A flag of [`BodyReads::flags`]: the node's row is filled in.
+const KNOWN: u8 = 8;
+
+impl Reads<'_> {
+    /// Whether it reads a loop's element, index or count.
+    pub(crate) fn loop_vars(&self) -> bool {
+        self.flags & LOOP_VARS != 0
     }
 
-    fn normalise(&mut self) {
-        self.globals.sort_unstable();
-        self.globals.dedup();
-        self.locals.sort_unstable();
-        self.locals.dedup();
-        self.execs.sort_unstable();
-        self.execs.dedup();
+    /// Whether it is or pulls a stateful node.
+    pub(crate) fn stateful(&self) -> bool {
+        self.flags & STATEFUL != 0
+    }
+
+    fn bit(&self, b: usize) -> bool {
+        self.row[b / 64] & (1 << (b % 64)) != 0
     }
 }
 
@@ -94,14 +92,15 @@ pub(crate) struct Writes {
 impl Writes {
     /// Whether a value that reads `r` may be changed by these writes.
     pub(crate) fn touch(&self, r: &Reads) -> bool {
+        let layout = r.body;
         self.everything
-            || (self.pose && r.pose)
-            || (self.any_global && !r.globals.is_empty())
-            || self.execs.iter().any(|e| r.execs.binary_search(e).is_ok())
-            || self.vars.iter().any(|v| match v {
-                VarRef::Global(g) => r.globals.binary_search(g).is_ok(),
-                VarRef::Local(l) => r.locals.binary_search(l).is_ok(),
-            })
+            || (self.pose && r.flags & POSE != 0)
+            || (self.any_global && r.row[..layout.global_words].iter().any(|&w| w != 0))
+            || self
+                .execs
+                .iter()
+                .any(|&e| layout.exec_bit(e).is_some_and(|b| r.bit(b)))
+            || self.vars.iter().any(|&v| r.bit(layout.var_bit(v)))
     }
 
     /// Adds what `steps` of `body` may change (nested lists included; function bodies are
@@ -205,68 +204,130 @@ pub(crate) fn pulled_by(body: &Body, steps: &[CStep]) -> Vec<usize> {
     out
 }
 
-/// Memoised [`Reads`] of every node of every body, and of whole pure function bodies.
+/// Memoised [`Reads`] of every node of every body, and of whole function bodies.
+///
+/// Written here as a bit matrix rather than as sorted lists per node: a value reads what
+/// the values it pulls read, so each node's reads are the union of its inputs', and a union
+/// of rows is a few word operations with nothing to allocate, sort or free.
 #[derive(Default)]
 pub(crate) struct ReadsTable {
-    /// Per body (the graph first, then each function), per node: its reads, once known.
-    /// Indexed rather than hashed: code generation asks after every step it emits.
-    nodes: Vec<Vec<Option<Reads>>>,
-    /// Function → the globals and pose its whole body reads (for calls of it).
-    functions: FxHashMap<usize, Reads>,
-    /// Per body (as `nodes`): the inverse of `nodes`, once built (see [`Readers`]).
-    readers: Vec<Option<Readers>>,
+    /// Per body (the graph first, then each function), once laid out.
+    bodies: Vec<Option<BodyReads>>,
+    /// Per function: the graph variables (a row's first `global_words` words) and the
+    /// [`POSE`] and [`STATEFUL`] flags its whole body reads, for calls of it.
+    functions: Vec<Option<(Vec<u64>, u8)>>,
+}
+
+/// The reads of one body's nodes: row `n` of `rows` (`width` words) has bit `g` for graph
+/// variable `g`, bit [`BodyReads::var_bit`] for each local, bit [`BodyReads::exec_bit`] for
+/// each exec node whose outputs the node reads.
+#[derive(Debug)]
+pub(crate) struct BodyReads {
+    /// Words per row.
+    width: usize,
+    /// Words holding the graph variables' bits, first in a row.
+    global_words: usize,
+    /// The bit of local 0.
+    locals_at: usize,
+    /// The bit of the first exec node's outputs.
+    execs_at: usize,
+    /// Per node: an exec node's number among the body's exec nodes (in node order), so that
+    /// a row has bits for those only; `None` for a pure node (no value reads its outputs as
+    /// an exec node's: it reads what they read).
+    exec_number: Vec<Option<u32>>,
+    rows: Vec<u64>,
+    /// Per node: [`KNOWN`] once its row is filled in, and the [`Reads`] flags.
+    flags: Vec<u8>,
+    /// Built on first use (see [`Readers`]).
+    readers: Option<Readers>,
+}
+
+impl BodyReads {
+    fn new(globals: usize, b: &Body) -> Self {
+        let global_words = globals.div_ceil(64);
+        let locals_at = 64 * global_words;
+        let execs_at = locals_at + 64 * b.locals.len().div_ceil(64);
+        let mut execs = 0;
+        let exec_number = b
+            .nodes
+            .iter()
+            .map(|node| {
+                let number = (!node.pure).then_some(execs);
+                execs += u32::from(!node.pure);
+                number
+            })
+            .collect();
+        let width = execs_at / 64 + (execs as usize).div_ceil(64);
+        Self {
+            width,
+            global_words,
+            locals_at,
+            execs_at,
+            exec_number,
+            rows: vec![0; width * b.nodes.len()],
+            flags: vec![0; b.nodes.len()],
+            readers: None,
+        }
+    }
+
+    /// The bit of variable or local `v`.
+    fn var_bit(&self, v: VarRef) -> usize {
+        match v {
+            VarRef::Global(g) => g,
+            VarRef::Local(l) => self.locals_at + l,
+        }
+    }
+
+    /// The bit of exec node `n`'s outputs (`None` for a pure node).
+    fn exec_bit(&self, n: usize) -> Option<usize> {
+        self.exec_number[n].map(|k| self.execs_at + k as usize)
+    }
+
+    fn set(&mut self, n: usize, b: usize) {
+        self.rows[n * self.width + b / 64] |= 1 << (b % 64);
+    }
+
+    /// Adds row `from` (another node's) to row `n`.
+    fn add_row(&mut self, n: usize, from: usize) {
+        let w = self.width;
+        for k in 0..w {
+            self.rows[n * w + k] |= self.rows[from * w + k];
+        }
+    }
+
+    fn reads(&self, n: usize) -> Reads<'_> {
+        Reads {
+            row: &self.rows[n * self.width..(n + 1) * self.width],
+            flags: self.flags[n],
+            body: self,
+        }
+    }
 }
 
 /// For everything a step may write, the pure nodes of one body whose values read it: the
-/// inverse of [`Reads`]. Forgetting what a step changed is then a few word operations per
-/// thing written, not a test of every kept value against it.
-#[derive(Default)]
+/// inverse of [`BodyReads`]. Forgetting what a step changed is then a few word operations
+/// per thing written, not a test of every kept value against it.
+#[derive(Debug, Default)]
 struct Readers {
     /// The nodes that read the pose.
     pose: FixedBitSet,
     /// The nodes that read any graph variable.
     any_global: FixedBitSet,
-    /// Per graph variable, the nodes that read it (shorter when no node reads the later ones).
-    globals: Vec<FixedBitSet>,
-    /// Per local of the body, the nodes that read it.
-    locals: Vec<FixedBitSet>,
-    /// Per exec node of the body, the nodes that read its outputs.
-    execs: Vec<FixedBitSet>,
-}
-
-impl Readers {
-    /// Marks node `n` (of a body of `len` nodes) as a reader of item `key` of `sets`.
-    fn mark(sets: &mut Vec<FixedBitSet>, key: usize, n: usize, len: usize) {
-        if sets.len() <= key {
-            sets.resize_with(key + 1, FixedBitSet::new);
-        }
-        if sets[key].is_empty() {
-            sets[key].grow(len);
-        }
-        sets[key].insert(n);
-    }
+    /// Per bit of a row, the nodes that read it (empty when none does; shorter when none
+    /// reads the last bits).
+    by_bit: Vec<FixedBitSet>,
 }
 
 impl ReadsTable {
     /// What node `n` of `body` (`None`: the graph) reads. Iterative, so long chains of pure
     /// nodes cannot overflow the stack; the checker guarantees they are acyclic.
-    pub(crate) fn node(&mut self, checked: &Checked, body: Option<usize>, n: usize) -> &Reads {
-        let b = body_of(checked, body);
-        let at = body.map_or(0, |f| f + 1);
-        if self.nodes.len() <= at {
-            self.nodes.resize_with(at + 1, Vec::new);
-        }
-        if self.nodes[at].is_empty() {
-            self.nodes[at].resize_with(b.nodes.len(), || None);
-        }
-        if self.nodes[at][n].is_none() {
-            self.fill(checked, b, at, n);
-        }
-        self.nodes[at][n].as_ref().expect("filled")
+    pub(crate) fn node(&mut self, checked: &Checked, body: Option<usize>, n: usize) -> Reads<'_> {
+        let at = self.fill(checked, body, n);
+        self.bodies[at].as_ref().expect("laid out").reads(n)
     }
 
     /// Removes from `kept` (pure nodes of `body` whose values are kept) those that `writes`
-    /// may change: the nodes `n` with `writes.touch(self.node(checked, body, n))`.
+    /// may change: the nodes `n` with `writes.touch(&self.node(checked, body, n))`.
     pub(crate) fn forget(
         &mut self,
         checked: &Checked,
@@ -278,137 +339,199 @@ impl ReadsTable {
             kept.clear();
             return;
         }
-        let r = self.readers(checked, body);
+        let b = self.readers(checked, body);
+        let r = b.readers.as_ref().expect("built");
+        let mut forget = |bit: usize| {
+            if let Some(set) = r.by_bit.get(bit) {
+                kept.difference_with(set);
+            }
+        };
+        writes
+            .execs
+            .iter()
+            .filter_map(|&e| b.exec_bit(e))
+            .for_each(&mut forget);
+        writes.vars.iter().for_each(|&v| forget(b.var_bit(v)));
         if writes.pose {
             kept.difference_with(&r.pose);
         }
         if writes.any_global {
             kept.difference_with(&r.any_global);
         }
-        for &e in &writes.execs {
-            if let Some(set) = r.execs.get(e) {
-                kept.difference_with(set);
-            }
-        }
-        for v in &writes.vars {
-            let set = match *v {
-                VarRef::Global(g) => r.globals.get(g),
-                VarRef::Local(l) => r.locals.get(l),
-            };
-            if let Some(set) = set {
-                kept.difference_with(set);
-            }
-        }
     }
 
-    /// The [`Readers`] of `body`, built on first use from the reads of its pure nodes.
-    fn readers(&mut self, checked: &Checked, body: Option<usize>) -> &Readers {
-        let at = body.map_or(0, |f| f + 1);
-        if self.readers.len() <= at {
-            self.readers.resize_with(at + 1, || None);
-        }
-        if self.readers[at].is_none() {
+    /// The reads of `body` with its [`Readers`], built on first use from the rows of its
+    /// pure nodes.
+    fn readers(&mut self, checked: &Checked, body: Option<usize>) -> &BodyReads {
+        let len = body_of(checked, body).nodes.len();
+        let at = self.lay_out(checked, body);
+        if self.bodies[at]
+            .as_ref()
+            .is_some_and(|b| b.readers.is_none())
+        {
             let b = body_of(checked, body);
-            let len = b.nodes.len();
+            for n in (0..len).filter(|&n| b.nodes[n].pure) {
+                self.fill(checked, body, n);
+            }
+            let reads = self.bodies[at].as_mut().expect("laid out");
             let mut r = Readers {
                 pose: FixedBitSet::with_capacity(len),
                 any_global: FixedBitSet::with_capacity(len),
-                ..Readers::default()
+                by_bit: Vec::new(),
             };
             for n in (0..len).filter(|&n| b.nodes[n].pure) {
-                let reads = self.node(checked, body, n);
-                r.pose.set(n, reads.pose);
-                r.any_global.set(n, !reads.globals.is_empty());
-                for &g in &reads.globals {
-                    Readers::mark(&mut r.globals, g, n, len);
-                }
-                for &l in &reads.locals {
-                    Readers::mark(&mut r.locals, l, n, len);
-                }
-                for &e in &reads.execs {
-                    Readers::mark(&mut r.execs, e, n, len);
+                let row = &reads.rows[n * reads.width..(n + 1) * reads.width];
+                r.pose.set(n, reads.flags[n] & POSE != 0);
+                r.any_global
+                    .set(n, row[..reads.global_words].iter().any(|&w| w != 0));
+                for (k, &word) in row.iter().enumerate() {
+                    let mut word = word;
+                    while word != 0 {
+                        let bit = 64 * k + word.trailing_zeros() as usize;
+                        word &= word - 1;
+                        if r.by_bit.len() <= bit {
+                            r.by_bit.resize_with(bit + 1, FixedBitSet::new);
+                        }
+                        if r.by_bit[bit].is_empty() {
+                            r.by_bit[bit].grow(len);
+                        }
+                        r.by_bit[bit].insert(n);
+                    }
                 }
             }
-            self.readers[at] = Some(r);
+            reads.readers = Some(r);
         }
-        self.readers[at].as_ref().expect("built")
+        self.bodies[at].as_ref().expect("laid out")
     }
 
-    /// Works out the reads of node `n` of body `b` (table `at`, see [`ReadsTable::node`])
-    /// and of the pure nodes it pulls.
-    fn fill(&mut self, checked: &Checked, b: &Body, at: usize, n: usize) {
+    /// The index of `body`'s [`BodyReads`], laid out (all rows unknown) on first use.
+    fn lay_out(&mut self, checked: &Checked, body: Option<usize>) -> usize {
+        let at = body.map_or(0, |f| f + 1);
+        if self.bodies.len() <= at {
+            self.bodies.resize_with(at + 1, || None);
+        }
+        if self.bodies[at].is_none() {
+            self.bodies[at] = Some(BodyReads::new(
+                checked.globals.len(),
+                body_of(checked, body),
+            ));
+        }
+        at
+    }
+
+    /// Works out the row of node `n` of `body`, and of the pure nodes it pulls, unless
+    /// known; returns the body's index in `bodies`.
+    fn fill(&mut self, checked: &Checked, body: Option<usize>, n: usize) -> usize {
+        let at = self.lay_out(checked, body);
+        if self.bodies[at].as_ref().expect("laid out").flags[n] & KNOWN != 0 {
+            return at;
+        }
+        let b = body_of(checked, body);
         let mut stack = vec![(n, false)];
         while let Some((m, inputs_done)) = stack.pop() {
-            if self.nodes[at][m].is_some() {
-                continue;
-            }
             let node = &b.nodes[m];
             if !inputs_done {
+                let reads = self.bodies[at].as_ref().expect("laid out");
+                if reads.flags[m] & KNOWN != 0 {
+                    continue;
+                }
                 stack.push((m, true));
                 for a in &node.inputs {
                     if let Src::Node { node: dep, .. } = a.src
                         && b.nodes[dep].pure
-                        && self.nodes[at][dep].is_none()
+                        && reads.flags[dep] & KNOWN == 0
                     {
                         stack.push((dep, false));
                     }
                 }
                 continue;
             }
-            let mut reads = Reads::default();
+            // A call's function first: it fills other bodies.
+            let callee = match node.kind {
+                NodeKind::Call(f) => Some(self.function(checked, f)),
+                NodeKind::Builtin(_) => None,
+            };
+            let reads = self.bodies[at].as_mut().expect("laid out");
+            if reads.flags[m] & KNOWN != 0 {
+                // Pulled twice before it was filled in.
+                continue;
+            }
+            let mut flags = KNOWN;
             for a in &node.inputs {
                 match a.src {
-                    Src::Global(g) => reads.globals.push(g),
-                    Src::Local(l) => reads.locals.push(l),
+                    Src::Global(g) => reads.set(m, reads.var_bit(VarRef::Global(g))),
+                    Src::Local(l) => reads.set(m, reads.var_bit(VarRef::Local(l))),
                     Src::Node { node: dep, .. } if b.nodes[dep].pure => {
-                        if let Some(r) = &self.nodes[at][dep] {
-                            reads.add(r);
-                        }
+                        reads.add_row(m, dep);
+                        flags |= reads.flags[dep] & !KNOWN;
                     }
                     // An exec node's outputs change when that node runs again.
-                    Src::Node { node: dep, .. } => reads.execs.push(dep),
-                    Src::Loop { .. } => reads.loop_vars = true,
+                    Src::Node { node: dep, .. } => {
+                        let bit = reads.exec_bit(dep).expect("an exec node");
+                        reads.set(m, bit);
+                    }
+                    Src::Loop { .. } => flags |= LOOP_VARS,
                     _ => {}
                 }
             }
-            reads.stateful |= !node.state.is_empty();
-            match node.kind {
-                NodeKind::Builtin(op) => reads.pose |= reads_pose(op),
-                NodeKind::Call(f) => {
-                    let callee = self.function(checked, f);
-                    reads.globals.extend_from_slice(&callee.globals);
-                    reads.pose |= callee.pose;
-                    reads.stateful |= callee.stateful;
-                }
+            if !node.state.is_empty() {
+                flags |= STATEFUL;
             }
-            reads.normalise();
-            self.nodes[at][m] = Some(reads);
+            match (node.kind, callee) {
+                (NodeKind::Builtin(op), _) => {
+                    if reads_pose(op) {
+                        flags |= POSE;
+                    }
+                }
+                (NodeKind::Call(f), Some(callee_flags)) => {
+                    let (globals, _) = self.functions[f].as_ref().expect("worked out");
+                    let row = m * reads.width;
+                    for (word, g) in reads.rows[row..row + globals.len()].iter_mut().zip(globals) {
+                        *word |= g;
+                    }
+                    flags |= callee_flags;
+                }
+                (NodeKind::Call(_), None) => {}
+            }
+            reads.flags[m] = flags;
         }
+        at
     }
 
     /// The graph variables and pose anything in function `f`'s body reads (its locals and
-    /// inputs are its own and start afresh at every call).
-    fn function(&mut self, checked: &Checked, f: usize) -> Reads {
-        if let Some(r) = self.functions.get(&f) {
-            return r.clone();
+    /// inputs are its own and start afresh at every call), worked out once and kept in
+    /// `functions`; returns its [`POSE`] and [`STATEFUL`] flags.
+    fn function(&mut self, checked: &Checked, f: usize) -> u8 {
+        if let Some(Some((_, flags))) = self.functions.get(f) {
+            return *flags;
         }
         // The checker rejects recursion, so this terminates; calls nest only as deep as
         // the functions of the graph do.
         let b = &checked.functions[f];
-        let mut reads = Reads::default();
+        let global_words = checked.globals.len().div_ceil(64);
+        let mut globals = vec![0u64; global_words];
+        let mut flags = 0;
         for n in 0..b.nodes.len() {
             let r = self.node(checked, Some(f), n);
-            reads.globals.extend_from_slice(&r.globals);
-            reads.pose |= r.pose;
-            reads.stateful |= r.stateful || !b.nodes[n].state.is_empty();
-            if let NodeKind::Builtin(op) = b.nodes[n].kind {
-                reads.pose |= reads_pose(op);
+            for (g, w) in globals.iter_mut().zip(r.row) {
+                *g |= w;
+            }
+            flags |= r.flags & (POSE | STATEFUL);
+            if !b.nodes[n].state.is_empty() {
+                flags |= STATEFUL;
+            }
+            if let NodeKind::Builtin(op) = b.nodes[n].kind
+                && reads_pose(op)
+            {
+                flags |= POSE;
             }
         }
-        for_each_step_global(&b.exec, &mut |g| reads.globals.push(g));
-        reads.normalise();
-        self.functions.insert(f, reads.clone());
-        reads
+        for_each_step_global(&b.exec, &mut |g| globals[g / 64] |= 1 << (g % 64));
+        if self.functions.len() <= f {
+            self.functions.resize_with(f + 1, || None);
+        }
+        self.functions[f] = Some((globals, flags));
+        flags
     }
 }
 
