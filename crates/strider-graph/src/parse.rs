@@ -45,7 +45,7 @@ impl Parser<'_> {
     fn fields<'v>(&mut self, v: &'v Spanned<Value<'v>>, what: &str) -> Option<&'v Fields<'v>> {
         match &v.value {
             Value::Struct(_, fields) => Some(fields),
-            Value::Tuple(_, items) if items.is_empty() => Some(&[]),
+            Value::Tuple(_, []) => Some(&[]),
             Value::Unit => Some(&[]),
             other => {
                 let found = other.describe();
@@ -504,7 +504,7 @@ impl Parser<'_> {
                 },
                 fields,
             ),
-            Value::Tuple(Some(name), items) if items.is_empty() => (
+            Value::Tuple(Some(name), []) => (
                 Ident {
                     name: name.value.to_string(),
                     loc: self.loc(name.span),
@@ -931,7 +931,7 @@ impl Parser<'_> {
                     Some((name, v))
                 })
                 .collect(),
-            Value::Struct(None, fields) => fields.iter().map(|(k, v)| (k.clone(), v)).collect(),
+            Value::Struct(None, fields) => fields.iter().map(|(k, v)| (*k, v)).collect(),
             other => {
                 let found = other.describe();
                 self.err(v.span, format!("expected events as `{{ construction: [..], forward: [..] }}`, found {found}"))

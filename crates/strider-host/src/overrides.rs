@@ -103,7 +103,7 @@ impl Overrides {
                 ));
                 continue;
             };
-            match entry(program, name, &value) {
+            match entry(program, name, value) {
                 Ok(o) if entries.iter().any(|e: &Override| e.variable == o.variable) => {
                     errors.push(diagnostic(
                         path,
