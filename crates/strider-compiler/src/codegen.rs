@@ -762,8 +762,25 @@ impl<'a> Gen<'a> {
     /// Forgets the kept values of `frame` that `writes` may change.
     fn forget(&mut self, frame: usize, writes: &Writes) {
         let body = self.frames[frame].body;
+        // In debug builds (the tests), the readers' index is held to the definition: every
+        // kept value whose reads the writes touch, and no other, is forgotten.
+        #[cfg(debug_assertions)]
+        let expected = {
+            let mut kept = self.avail[frame].clone();
+            let touched: Vec<usize> = kept
+                .ones()
+                .filter(|&n| writes.touch(&self.reads.node(self.checked, body, n)))
+                .collect();
+            touched.into_iter().for_each(|n| kept.set(n, false));
+            kept
+        };
         self.reads
             .forget(self.checked, body, writes, &mut self.avail[frame]);
+        #[cfg(debug_assertions)]
+        assert_eq!(
+            self.avail[frame], expected,
+            "the readers' index forgot other values"
+        );
     }
 
     /// Forgets the kept values of `frame` that `step`, just emitted, may have changed: the

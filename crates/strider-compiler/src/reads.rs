@@ -14,7 +14,7 @@ use strider_nodes::Op;
 
 /// The mutable state a value was computed from: a row of its body's [`BodyReads`] and
 /// flags.
-#[derive(Clone, Copy, Debug)]
+#[derive(Clone, Copy)]
 pub(crate) struct Reads<'t> {
     /// One bit per graph variable, local and exec node of the body it reads (the layout is
     /// `body`'s).
@@ -206,9 +206,9 @@ pub(crate) fn pulled_by(body: &Body, steps: &[CStep]) -> Vec<usize> {
 
 /// Memoised [`Reads`] of every node of every body, and of whole function bodies.
 ///
-/// Written here as a bit matrix rather than as sorted lists per node: a value reads what
-/// the values it pulls read, so each node's reads are the union of its inputs', and a union
-/// of rows is a few word operations with nothing to allocate, sort or free.
+/// A bit matrix per body: a value reads what the values it pulls read, so each node's reads
+/// are the union of its inputs', and a union of rows is a few word operations with nothing
+/// to allocate, sort or free.
 #[derive(Default)]
 pub(crate) struct ReadsTable {
     /// Per body (the graph first, then each function), once laid out.
@@ -221,8 +221,7 @@ pub(crate) struct ReadsTable {
 /// The reads of one body's nodes: row `n` of `rows` (`width` words) has bit `g` for graph
 /// variable `g`, bit [`BodyReads::var_bit`] for each local, bit [`BodyReads::exec_bit`] for
 /// each exec node whose outputs the node reads.
-#[derive(Debug)]
-pub(crate) struct BodyReads {
+struct BodyReads {
     /// Words per row.
     width: usize,
     /// Words holding the graph variables' bits, first in a row.
@@ -298,7 +297,7 @@ impl BodyReads {
     fn reads(&self, n: usize) -> Reads<'_> {
         Reads {
             row: &self.rows[n * self.width..(n + 1) * self.width],
-            flags: self.flags[n],
+            flags: self.flags[n] & !KNOWN,
             body: self,
         }
     }
@@ -307,7 +306,6 @@ impl BodyReads {
 /// For everything a step may write, the pure nodes of one body whose values read it: the
 /// inverse of [`BodyReads`]. Forgetting what a step changed is then a few word operations
 /// per thing written, not a test of every kept value against it.
-#[derive(Debug, Default)]
 struct Readers {
     /// The nodes that read the pose.
     pose: FixedBitSet,
@@ -446,16 +444,16 @@ impl ReadsTable {
                 }
                 continue;
             }
+            // Defensive: only a cycle, which the checker rejects, brings a node here twice.
+            if self.bodies[at].as_ref().expect("laid out").flags[m] & KNOWN != 0 {
+                continue;
+            }
             // A call's function first: it fills other bodies.
             let callee = match node.kind {
-                NodeKind::Call(f) => Some(self.function(checked, f)),
+                NodeKind::Call(f) => Some((f, self.function(checked, f))),
                 NodeKind::Builtin(_) => None,
             };
             let reads = self.bodies[at].as_mut().expect("laid out");
-            if reads.flags[m] & KNOWN != 0 {
-                // Pulled twice before it was filled in.
-                continue;
-            }
             let mut flags = KNOWN;
             for a in &node.inputs {
                 match a.src {
@@ -477,21 +475,18 @@ impl ReadsTable {
             if !node.state.is_empty() {
                 flags |= STATEFUL;
             }
-            match (node.kind, callee) {
-                (NodeKind::Builtin(op), _) => {
-                    if reads_pose(op) {
-                        flags |= POSE;
-                    }
+            if let NodeKind::Builtin(op) = node.kind
+                && reads_pose(op)
+            {
+                flags |= POSE;
+            }
+            if let Some((f, callee_flags)) = callee {
+                let (globals, _) = self.functions[f].as_ref().expect("worked out");
+                let row = m * reads.width;
+                for (word, g) in reads.rows[row..row + globals.len()].iter_mut().zip(globals) {
+                    *word |= g;
                 }
-                (NodeKind::Call(f), Some(callee_flags)) => {
-                    let (globals, _) = self.functions[f].as_ref().expect("worked out");
-                    let row = m * reads.width;
-                    for (word, g) in reads.rows[row..row + globals.len()].iter_mut().zip(globals) {
-                        *word |= g;
-                    }
-                    flags |= callee_flags;
-                }
-                (NodeKind::Call(_), None) => {}
+                flags |= callee_flags;
             }
             reads.flags[m] = flags;
         }

@@ -3,8 +3,7 @@
 use crate::diagnostic::{Diagnostic, Diagnostics, FileId, Loc, SourceMap};
 use crate::document::Graph;
 use crate::parse::Parser;
-use crate::reader;
-use bumpalo::Bump;
+use crate::reader::{self, Bump};
 use std::path::{Path, PathBuf};
 
 /// A graph and the libraries it imports (transitively), parsed, with their sources.

@@ -3,7 +3,7 @@
 
 use crate::diagnostic::{Diagnostics, FileId, Loc, SourceMap};
 use crate::document::*;
-use crate::reader::{Span, Spanned, Value};
+use crate::reader::{Field, Span, Spanned, Value};
 use crate::suggest;
 use strider_nodes::ValueType;
 
@@ -18,7 +18,7 @@ pub(crate) struct Parser<'a> {
     pub file: FileId,
 }
 
-type Fields<'v> = [(Spanned<&'v str>, Spanned<Value<'v>>)];
+type Fields<'v> = [Field<'v>];
 
 /// Whether field `i`'s name is also given before it (a struct or node has a handful of
 /// fields: the earlier ones are searched in place).

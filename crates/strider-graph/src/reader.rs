@@ -252,9 +252,9 @@ struct Parser<'a> {
 }
 
 /// A struct's field: its name and value.
-type Field<'a> = (Spanned<&'a str>, Spanned<Value<'a>>);
+pub type Field<'a> = (Spanned<&'a str>, Spanned<Value<'a>>);
 /// A map's entry: its key and value.
-type Entry<'a> = (Spanned<Value<'a>>, Spanned<Value<'a>>);
+pub type Entry<'a> = (Spanned<Value<'a>>, Spanned<Value<'a>>);
 
 impl<'a> Parser<'a> {
     // ----- cursor helpers and diagnostics -------------------------------------------------
@@ -469,10 +469,9 @@ impl<'a> Parser<'a> {
     }
 
     /// Comma-separated items up to `close` (trailing comma allowed). The opening delimiter
-    /// has been consumed by [`Parser::enter`]; this consumes the closing one.
-    /// Reads `item`s separated by commas up to `close`. The items of every open sequence
-    /// wait on one stack of their type (`stack`); each sequence ends copied into the arena
-    /// at its exact length.
+    /// has been consumed by [`Parser::enter`]; this consumes the closing one. The items of
+    /// every open sequence wait on one stack of their type (`stack`), and each sequence
+    /// ends copied into the arena at its exact length.
     fn sequence<T: Copy>(
         &mut self,
         close: u8,

@@ -18,8 +18,7 @@
 //! degrees) and `scale` are the rest transform relative to the parent; each is optional.
 
 use crate::diagnostic::{Diagnostic, Diagnostics, FileId, Loc, SourceMap};
-use crate::reader::{self, Spanned, Value};
-use bumpalo::Bump;
+use crate::reader::{self, Bump, Spanned, Value};
 use glam::{Quat, Vec3};
 use std::path::Path;
 use std::sync::Arc;
