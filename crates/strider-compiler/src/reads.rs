@@ -21,6 +21,7 @@ pub(crate) struct Reads<'t> {
     row: &'t [u64],
     /// [`POSE`], [`LOOP_VARS`], [`STATEFUL`].
     flags: u8,
+    /// The body's layout of a row.
     body: &'t BodyReads,
 }
 
@@ -234,6 +235,7 @@ struct BodyReads {
     /// a row has bits for those only; `None` for a pure node (no value reads its outputs as
     /// an exec node's: it reads what they read).
     exec_number: Vec<Option<u32>>,
+    /// The rows, node after node.
     rows: Vec<u64>,
     /// Per node: [`KNOWN`] once its row is filled in, and the [`Reads`] flags.
     flags: Vec<u8>,
