@@ -363,13 +363,13 @@ impl ReadsTable {
     /// The reads of `body` with its [`Readers`], built on first use from the rows of its
     /// pure nodes.
     fn readers(&mut self, checked: &Checked, body: Option<usize>) -> &BodyReads {
-        let len = body_of(checked, body).nodes.len();
+        let b = body_of(checked, body);
+        let len = b.nodes.len();
         let at = self.lay_out(checked, body);
         if self.bodies[at]
             .as_ref()
             .is_some_and(|b| b.readers.is_none())
         {
-            let b = body_of(checked, body);
             for n in (0..len).filter(|&n| b.nodes[n].pure) {
                 self.fill(checked, body, n);
             }

@@ -139,17 +139,11 @@ impl SkelReader<'_> {
     }
 
     fn rotation(&mut self, v: &Spanned<Value>) -> Option<Quat> {
-        if let Value::Tuple(Some(n), _) = &v.value
+        if let Value::Tuple(Some(n), items) = v.value
             && n.value == "euler"
         {
             let inner = Spanned {
-                value: Value::Tuple(
-                    None,
-                    match v.value {
-                        Value::Tuple(_, i) => i,
-                        _ => &[],
-                    },
-                ),
+                value: Value::Tuple(None, items),
                 span: v.span,
             };
             let [x, y, z] = self.numbers::<3>(&inner, "euler angles (degrees)")?;
