@@ -231,9 +231,16 @@ fn transform_columns(block: &[Transform; BATCH]) -> (Vec3Columns, QuatColumns, V
     )
 }
 
-/// Transforms from component arrays: translation, rotation, scale.
+/// A block of transforms as component arrays: translation, rotation, scale.
+type TransformColumns = (Vec3Columns, QuatColumns, Vec3Columns);
+
+/// The block `out` becomes the transforms of component arrays `(t, r, s)`: translation,
+/// rotation, scale.
+///
+/// # Safety
+/// `out` must be a block of the lanes.
 #[inline(always)]
-fn transform_rows(t: &Vec3Columns, r: &QuatColumns, s: &Vec3Columns) -> [Transform; BATCH] {
+unsafe fn put_transform_rows(out: *mut [Transform; BATCH], (t, r, s): &TransformColumns) {
     let (mut translations, mut rotations, mut scales) = (
         [Vec3::ZERO; BATCH],
         [Quat::IDENTITY; BATCH],
@@ -242,7 +249,45 @@ fn transform_rows(t: &Vec3Columns, r: &QuatColumns, s: &Vec3Columns) -> [Transfo
     vec3_rows(t, &mut translations);
     quat_rows(r, &mut rotations);
     vec3_rows(s, &mut scales);
-    std::array::from_fn(|m| Transform::new(translations[m], rotations[m], scales[m]))
+    // SAFETY: the caller's contract.
+    unsafe { put_transforms(out, &translations, &rotations, &scales) };
+}
+
+/// Lane `m` of the block `out` becomes the transform of translation `t[m]`, rotation
+/// `r[m]` and scale `s[m]`. The translations and scales of every lane but the last are
+/// copied as 16 bytes, the vector and the first component of the next one, which land in
+/// the transform's padding: one load and one store where a 12-byte vector takes two of
+/// each. Only bytes move, so every bit arrives.
+///
+/// # Safety
+/// `out` must be a block of the lanes, outside `t`, `r` and `s`.
+#[inline(always)]
+unsafe fn put_transforms(
+    out: *mut [Transform; BATCH],
+    t: &[Vec3; BATCH],
+    r: &[Quat; BATCH],
+    s: &[Vec3; BATCH],
+) {
+    let out = out.cast::<Transform>();
+    let copy16 = |from: &Vec3, to: *mut Vec3| {
+        // SAFETY: `from` is not the last of its array, so 16 bytes from it are readable;
+        // `to` is a transform's translation or scale, which 4 bytes of padding follow.
+        unsafe {
+            std::ptr::copy_nonoverlapping(from as *const Vec3 as *const u8, to.cast::<u8>(), 16)
+        }
+    };
+    for m in 0..BATCH - 1 {
+        // SAFETY: the caller's contract; `m + 1 < BATCH`.
+        unsafe {
+            let to = out.add(m);
+            copy16(&t[m], &raw mut (*to).translation);
+            (*to).rotation = r[m];
+            copy16(&s[m], &raw mut (*to).scale);
+        }
+    }
+    let last = BATCH - 1;
+    // SAFETY: the caller's contract.
+    unsafe { *out.add(last) = Transform::new(t[last], r[last], s[last]) };
 }
 
 /// The exponential lerps' weights `exp_alpha(speed, dt)` of the first `n` lanes (0 for the
@@ -270,7 +315,7 @@ fn weights(speed: &[f32; BATCH], dts: &[f32; BATCH], n: usize) -> [f32; BATCH] {
 /// component arrays, in glam's order of operations: translation `a.t + a.r · (a.s ⊙ b.t)`,
 /// rotation `a.r · b.r` normalised, scale `a.s ⊙ b.s`.
 #[inline(always)]
-fn transform_products(a: &[Transform; BATCH], b: &[Transform; BATCH]) -> [Transform; BATCH] {
+fn transform_products(a: &[Transform; BATCH], b: &[Transform; BATCH]) -> TransformColumns {
     let (at, ar, a_scale) = transform_columns(a);
     let (bt, br, b_scale) = transform_columns(b);
     let (mut t, mut r, mut s) = ([[0.0; BATCH]; 3], [[0.0; BATCH]; 4], [[0.0; BATCH]; 3]);
@@ -286,7 +331,7 @@ fn transform_products(a: &[Transform; BATCH], b: &[Transform; BATCH]) -> [Transf
             std::array::from_fn(|c| a_scale[c][m] * b_scale[c][m]),
         );
     }
-    transform_rows(&t, &r, &s)
+    (t, r, s)
 }
 
 /// `1 / x`, or 0 where `x` is ±0 (`Transform`'s inverse scale, per component).
@@ -304,7 +349,7 @@ fn reciprocal_or_zero(x: f32) -> f32 {
 fn transforms_relative(
     a: Option<&[Transform; BATCH]>,
     parent: &[Transform; BATCH],
-) -> [Transform; BATCH] {
+) -> TransformColumns {
     let (pt, pr, p_scale) = transform_columns(parent);
     let own = a.map(transform_columns);
     let (mut t, mut r, mut s) = ([[0.0; BATCH]; 3], [[0.0; BATCH]; 4], [[0.0; BATCH]; 3]);
@@ -334,7 +379,7 @@ fn transforms_relative(
             }
         }
     }
-    transform_rows(&t, &r, &s)
+    (t, r, s)
 }
 
 /// Bit-for-bit equality of lane values (`-0.0` differs from `0.0`; a NaN equals only the
@@ -423,17 +468,35 @@ pub(crate) unsafe fn break_transforms(o: &[u32], lane0: Bases) {
     // SAFETY: as in `run_wide`'s `lanes!`; the parts are of other types than the
     // transform.
     unsafe {
-        let t = &*block(lane0.transforms, o[0]);
-        for (r, x) in (*block(lane0.vec3s, o[1])).iter_mut().zip(t) {
-            *r = x.translation;
-        }
-        for (r, x) in (*block(lane0.quats, o[2])).iter_mut().zip(t) {
+        let t = block(lane0.transforms, o[0]);
+        put_vec3s(block(lane0.vec3s, o[1]), |m| &raw const (*t)[m].translation);
+        for (r, x) in (*block(lane0.quats, o[2])).iter_mut().zip(&*t) {
             *r = x.rotation;
         }
-        for (r, x) in (*block(lane0.vec3s, o[3])).iter_mut().zip(t) {
-            *r = x.scale;
-        }
+        put_vec3s(block(lane0.vec3s, o[3]), |m| &raw const (*t)[m].scale);
     }
+}
+
+/// Lane `m` of the block `out` becomes the vector at `from(m)`, lane by lane in order.
+/// Every lane but the last is copied as 16 bytes, the vector and the 4 bytes after it,
+/// which land on the next lane's first component before that lane is written: one load
+/// and one store where a 12-byte vector takes two of each. Only bytes move (a byte copy
+/// may carry a transform's padding), so every bit arrives.
+///
+/// # Safety
+/// `out` must be a block of the lanes or a local one; each `from(m)` must point at a
+/// vector with 4 readable bytes after it (a transform's translation or scale: its padding
+/// follows), outside `out`.
+#[inline(always)]
+unsafe fn put_vec3s(out: *mut [Vec3; BATCH], from: impl Fn(usize) -> *const Vec3) {
+    let out = out.cast::<Vec3>();
+    for m in 0..BATCH - 1 {
+        // SAFETY: the caller's contract; the 4 bytes written past lane `m` are lane
+        // `m + 1`'s, written next.
+        unsafe { std::ptr::copy_nonoverlapping(from(m).cast::<u8>(), out.add(m).cast::<u8>(), 16) };
+    }
+    // SAFETY: as above; the last lane as 12 bytes, so nothing past the block is written.
+    unsafe { *out.add(BATCH - 1) = *from(BATCH - 1) };
 }
 
 /// Runs `op` (operands `o`) on every lane of the batch whose member 0's lane is `lane0`,
@@ -821,10 +884,7 @@ pub(crate) unsafe fn run_wide(
             let mut rotations = [Quat::IDENTITY; BATCH];
             quat_rows(&unit, &mut rotations);
             // SAFETY: as above; in another array than the inputs'.
-            let out = unsafe { &mut *block(lane0.transforms, o[3]) };
-            for (m, out) in out.iter_mut().enumerate() {
-                *out = Transform::new(t[m], rotations[m], s[m]);
-            }
+            unsafe { put_transforms(block(lane0.transforms, o[3]), t, &rotations, s) };
         }
         // SAFETY: `o` is a `BreakTransform`'s operands (this function's contract).
         Op::BreakTransform => unsafe { break_transforms(o, lane0) },
@@ -975,13 +1035,13 @@ pub(crate) unsafe fn run_wide(
                 )
             };
             // SAFETY: as above.
-            unsafe { *block(lane0.transforms, o[2]) = out };
+            unsafe { put_transform_rows(block(lane0.transforms, o[2]), &out) };
         }
         Op::InverseT => {
             // SAFETY: as in `lanes!`; the block is read before the output is written.
             let out = unsafe { transforms_relative(None, &*block(lane0.transforms, o[0])) };
             // SAFETY: as above.
-            unsafe { *block(lane0.transforms, o[1]) = out };
+            unsafe { put_transform_rows(block(lane0.transforms, o[1]), &out) };
         }
         Op::MakeRelative => {
             // SAFETY: as for `MulT`.
@@ -992,7 +1052,7 @@ pub(crate) unsafe fn run_wide(
                 )
             };
             // SAFETY: as above.
-            unsafe { *block(lane0.transforms, o[2]) = out };
+            unsafe { put_transform_rows(block(lane0.transforms, o[2]), &out) };
         }
         Op::MakeAbsolute => {
             // SAFETY: as for `MulT`; the parent's transform (operand 1) comes first.
@@ -1003,7 +1063,7 @@ pub(crate) unsafe fn run_wide(
                 )
             };
             // SAFETY: as above.
-            unsafe { *block(lane0.transforms, o[2]) = out };
+            unsafe { put_transform_rows(block(lane0.transforms, o[2]), &out) };
         }
         Op::RotateAroundPoint => {
             // `k::rotate_around_point` on component arrays: every input is read before the
@@ -1018,7 +1078,9 @@ pub(crate) unsafe fn run_wide(
             };
             let position = columns(t, |t| t.translation.to_array());
             let rotation = rotation_columns(t);
-            let scale: [Vec3; BATCH] = std::array::from_fn(|m| t[m].scale);
+            let mut scale = [Vec3::ZERO; BATCH];
+            // SAFETY: a local block; each scale is a transform's, padding after it.
+            unsafe { put_vec3s(&mut scale, |m| &raw const t[m].scale) };
             let (p, r) = (vec3_columns(p), quat_columns(r));
             let (mut moved, mut turned) = ([[0.0; BATCH]; 3], [[0.0; BATCH]; 4]);
             for m in 0..BATCH {
@@ -1033,11 +1095,15 @@ pub(crate) unsafe fn run_wide(
             let (mut positions, mut rotations) = ([Vec3::ZERO; BATCH], [Quat::IDENTITY; BATCH]);
             vec3_rows(&moved, &mut positions);
             quat_rows(&turned, &mut rotations);
-            // SAFETY: as above.
-            let out = unsafe { &mut *block(lane0.transforms, o[3]) };
-            for (m, out) in out.iter_mut().enumerate() {
-                *out = Transform::new(positions[m], rotations[m], scale[m]);
-            }
+            // SAFETY: as above; the inputs were copied.
+            unsafe {
+                put_transforms(
+                    block(lane0.transforms, o[3]),
+                    &positions,
+                    &rotations,
+                    &scale,
+                )
+            };
         }
 
         Op::QuatFromEuler => lanes!(n, shared; quats[2] = |; ref euler: vec3s[0], order: ints[1]|
