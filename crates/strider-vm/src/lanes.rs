@@ -269,20 +269,22 @@ unsafe fn put_transforms(
     s: &[Vec3; BATCH],
 ) {
     let out = out.cast::<Transform>();
-    let copy16 = |from: &Vec3, to: *mut Vec3| {
-        // SAFETY: `from` is not the last of its array, so 16 bytes from it are readable;
-        // `to` is a transform's translation or scale, which 4 bytes of padding follow.
-        unsafe {
-            std::ptr::copy_nonoverlapping(from as *const Vec3 as *const u8, to.cast::<u8>(), 16)
-        }
+    // Pointers into the whole arrays (not through one item's reference), so that 16 bytes
+    // from an item that is not the last may be read.
+    let (t_at, s_at) = (t.as_ptr(), s.as_ptr());
+    let copy16 = |from: *const Vec3, to: *mut Vec3| {
+        // SAFETY: `from` is not the last item of its array, so 16 bytes from it are
+        // readable; `to` is a transform's translation or scale, which 4 bytes of padding
+        // follow.
+        unsafe { std::ptr::copy_nonoverlapping(from.cast::<u8>(), to.cast::<u8>(), 16) }
     };
     for m in 0..BATCH - 1 {
         // SAFETY: the caller's contract; `m + 1 < BATCH`.
         unsafe {
             let to = out.add(m);
-            copy16(&t[m], &raw mut (*to).translation);
+            copy16(t_at.add(m), &raw mut (*to).translation);
             (*to).rotation = r[m];
-            copy16(&s[m], &raw mut (*to).scale);
+            copy16(s_at.add(m), &raw mut (*to).scale);
         }
     }
     let last = BATCH - 1;
@@ -1497,6 +1499,62 @@ mod tests {
     /// speed and time step: each member still gets `lerp_exponential` of its own speed
     /// and dt, whatever its neighbours have (runs broken by the speed, by dt, by `-0.0`
     /// against `0.0` and by NaN).
+    /// A vector with distinct bits in every component: `-0.0`, a NaN with a payload, and
+    /// values that differ from lane to lane.
+    fn odd_vec3(k: usize) -> Vec3 {
+        let k = k as u32;
+        Vec3::new(
+            f32::from_bits(0x8000_0000 | k),
+            f32::from_bits(0x7fc0_0000 | (k << 4) | 1),
+            k as f32 + 0.5,
+        )
+    }
+
+    /// The 16-byte copies of `put_vec3s` and `put_transforms` give every lane its value, bit
+    /// for bit, and write nothing past the block: the item after it (a guard, as the next
+    /// slot's block would be) keeps its bits.
+    #[test]
+    fn wide_vector_copies_give_every_lane_its_bits_and_stop_at_the_block() {
+        let bits = |v: Vec3| v.to_array().map(f32::to_bits);
+        let transforms: [Transform; BATCH] = std::array::from_fn(|m| {
+            Transform::new(
+                odd_vec3(m),
+                Quat::from_rotation_z(m as f32),
+                odd_vec3(100 + m),
+            )
+        });
+        let guard = Vec3::new(7.0, 8.0, 9.0);
+        let mut vectors = [guard; BATCH + 1];
+        let out: *mut [Vec3; BATCH] = vectors.as_mut_ptr().cast();
+        // SAFETY: `out` is the first BATCH items; each translation has padding after it.
+        unsafe { put_vec3s(out, |m| &raw const transforms[m].translation) };
+        for m in 0..BATCH {
+            assert_eq!(
+                bits(vectors[m]),
+                bits(transforms[m].translation),
+                "lane {m}"
+            );
+        }
+        assert_eq!(bits(vectors[BATCH]), bits(guard), "past the block");
+
+        let (t, s): ([Vec3; BATCH], [Vec3; BATCH]) = (
+            std::array::from_fn(odd_vec3),
+            std::array::from_fn(|m| odd_vec3(50 + m)),
+        );
+        let r: [Quat; BATCH] = std::array::from_fn(|m| Quat::from_rotation_x(m as f32));
+        let guard = Transform::new(guard, Quat::IDENTITY, guard);
+        let mut blocks = [guard; BATCH + 1];
+        // SAFETY: the first BATCH items; the inputs are other arrays.
+        unsafe { put_transforms(blocks.as_mut_ptr().cast(), &t, &r, &s) };
+        for m in 0..BATCH {
+            let x = blocks[m];
+            assert_eq!(bits(x.translation), bits(t[m]), "lane {m}");
+            assert_eq!(x.rotation.to_array(), r[m].to_array(), "lane {m}");
+            assert_eq!(bits(x.scale), bits(s[m]), "lane {m}");
+        }
+        assert!(blocks[BATCH].bit_eq(&guard), "past the block");
+    }
+
     #[test]
     fn exponential_lerps_reuse_a_weight_only_for_equal_speed_and_time_step() {
         const NAN: f32 = f32::NAN;
