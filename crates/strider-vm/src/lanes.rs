@@ -278,12 +278,12 @@ unsafe fn put_transforms(
         // follow.
         unsafe { std::ptr::copy_nonoverlapping(from.cast::<u8>(), to.cast::<u8>(), 16) }
     };
-    for m in 0..BATCH - 1 {
+    for (m, &rotation) in r[..BATCH - 1].iter().enumerate() {
         // SAFETY: the caller's contract; `m + 1 < BATCH`.
         unsafe {
             let to = out.add(m);
             copy16(t_at.add(m), &raw mut (*to).translation);
-            (*to).rotation = r[m];
+            (*to).rotation = rotation;
             copy16(s_at.add(m), &raw mut (*to).scale);
         }
     }

@@ -228,7 +228,43 @@ pub(crate) unsafe fn two_bone_iks(o: &[u32], lane0: Bases, members: &mut [Ctx<'_
     if !ChainLanes::<BATCH>::solves_with(&axes) {
         return false;
     }
-    let mut lanes = ChainLanes::<BATCH>::default();
+    CHAIN_LANES.with(|cell| {
+        // A batch's IK run from inside another one's on this thread gets lanes of its own.
+        let (mut thread_lanes, mut own) = (cell.try_borrow_mut().ok(), None);
+        let lanes = match thread_lanes.as_deref_mut() {
+            Some(lanes) => {
+                lanes.unset_all();
+                lanes
+            }
+            None => own.insert(Box::default()),
+        };
+        // SAFETY: the caller's contract.
+        unsafe { solve_batch(o, lane0, members, (p0, s0), &axes, lanes) };
+    });
+    true
+}
+
+thread_local! {
+    /// Each thread's chain lanes, reused by every batch's IK (a `ChainLanes` is a few
+    /// kilobytes, which filling anew for each IK costs more than the lanes it fills).
+    static CHAIN_LANES: std::cell::RefCell<Box<ChainLanes<BATCH>>> =
+        std::cell::RefCell::new(Box::default());
+}
+
+/// [`two_bone_iks`]' chains read, solved on `lanes` and written back, once the members'
+/// `axes` (from `(p0, s0)`) are known to be shared and solvable on lanes.
+///
+/// # Safety
+/// As [`two_bone_iks`].
+#[inline(always)]
+unsafe fn solve_batch(
+    o: &[u32],
+    lane0: Bases,
+    members: &mut [Ctx<'_>],
+    (p0, s0): (Vec3, Vec3),
+    axes: &BoneAxes,
+    lanes: &mut ChainLanes<BATCH>,
+) {
     let mut chains = [None; BATCH];
     for (m, cx) in members.iter_mut().enumerate() {
         // Written out: `array::map` leaves a call behind here.
@@ -246,7 +282,7 @@ pub(crate) unsafe fn two_bone_iks(o: &[u32], lane0: Bases, members: &mut [Ctx<'_
             lanes.set(m, &input);
         }
     }
-    solve_chains(&mut lanes, &axes);
+    solve_chains(lanes, axes);
     let (reached, distance) = (item0(lane0.bools, o[13]), item0(lane0.floats, o[14]));
     for (m, cx) in members.iter_mut().enumerate() {
         let report = match (chains[m], lanes.solution(m)) {
@@ -265,7 +301,7 @@ pub(crate) unsafe fn two_bone_iks(o: &[u32], lane0: Bases, members: &mut [Ctx<'_
                 // SAFETY: as above; only earlier members' items have been written.
                 let x =
                     unsafe { chain_input(o, lane0, m, (p0, s0), [Transform::IDENTITY; 3], None) };
-                Some(x.ik.solve_with_axes(&axes, cx.pose, a, b, c, x.target))
+                Some(x.ik.solve_with_axes(axes, cx.pose, a, b, c, x.target))
             }
             (None, _) => None,
         };
@@ -279,7 +315,6 @@ pub(crate) unsafe fn two_bone_iks(o: &[u32], lane0: Bases, members: &mut [Ctx<'_
             *distance.add(m) = miss;
         }
     }
-    true
 }
 
 /// Member `m`'s `TwoBoneIK` settings and target (operands as in [`two_bone_iks`]) read off
@@ -846,6 +881,8 @@ mod tests {
                 |lane0: Bases, cxs: &mut [Ctx<'_>]| unsafe { two_bone_iks(&o, lane0, cxs) };
             run_members(Op::TwoBoneIK, &o, slots, batch.then_some(&batched))
         };
+        // Largest first, on one thread: the smaller batches run on the thread's chain lanes
+        // with the larger one's numbers left in the lanes they do not set.
         for n in [BATCH, 7, 1] {
             SOLVED_ON_LANES.with(|solved| solved.set(0));
             let mut batched = run(n, true, true).expect("the batch path takes it");

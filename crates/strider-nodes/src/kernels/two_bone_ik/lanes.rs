@@ -587,6 +587,15 @@ impl<const N: usize> Default for ChainLanes<N> {
 }
 
 impl<const N: usize> ChainLanes<N> {
+    /// Unsets every chain, as [`Default`] leaves them, but keeps the numbers of the chains
+    /// set before: lanes that [`ChainLanes::set`] does not give again are computed on and
+    /// never read, so lanes used once more need no filling.
+    #[inline]
+    pub fn unset_all(&mut self) {
+        self.live = [false; N];
+        self.solved = [false; N];
+    }
+
     /// Sets chain `m` (`< N`) to be solved by the next [`ChainLanes::solve`].
     #[inline(always)]
     pub fn set(&mut self, m: usize, x: &ChainInput) {
