@@ -253,6 +253,14 @@ unsafe fn put_transform_rows(out: *mut [Transform; BATCH], (t, r, s): &Transform
     unsafe { put_transforms(out, &translations, &rotations, &scales) };
 }
 
+// The copies of 16 bytes rely on this layout: 4 bytes of padding after the translation
+// (the rotation is 16-byte aligned) and after the scale.
+const _: () = assert!(
+    std::mem::offset_of!(Transform, rotation) == 16
+        && std::mem::offset_of!(Transform, scale) == 32
+        && size_of::<Transform>() == 48
+);
+
 /// Lane `m` of the block `out` becomes the transform of translation `t[m]`, rotation
 /// `r[m]` and scale `s[m]`. The translations and scales of every lane but the last are
 /// copied as 16 bytes, the vector and the first component of the next one, which land in
@@ -488,7 +496,9 @@ pub(crate) unsafe fn break_transforms(o: &[u32], lane0: Bases) {
 /// # Safety
 /// `out` must be a block of the lanes or a local one; each `from(m)` must point at a
 /// vector with 4 readable bytes after it (a transform's translation or scale: its padding
-/// follows), outside `out`.
+/// follows), outside `out`, and be derived from a pointer to the whole block of
+/// transforms (not from a reference to one transform or field, whose access ends at its
+/// own bytes).
 #[inline(always)]
 unsafe fn put_vec3s(out: *mut [Vec3; BATCH], from: impl Fn(usize) -> *const Vec3) {
     let out = out.cast::<Vec3>();
@@ -1080,9 +1090,10 @@ pub(crate) unsafe fn run_wide(
             };
             let position = columns(t, |t| t.translation.to_array());
             let rotation = rotation_columns(t);
-            let mut scale = [Vec3::ZERO; BATCH];
-            // SAFETY: a local block; each scale is a transform's, padding after it.
-            unsafe { put_vec3s(&mut scale, |m| &raw const t[m].scale) };
+            let (mut scale, at) = ([Vec3::ZERO; BATCH], t.as_ptr());
+            // SAFETY: a local block; each scale is a transform's, padding after it, reached
+            // through the whole block's pointer.
+            unsafe { put_vec3s(&mut scale, |m| &raw const (*at.add(m)).scale) };
             let (p, r) = (vec3_columns(p), quat_columns(r));
             let (mut moved, mut turned) = ([[0.0; BATCH]; 3], [[0.0; BATCH]; 4]);
             for m in 0..BATCH {
@@ -1495,10 +1506,6 @@ mod tests {
         assert_eq!(count, 138);
     }
 
-    /// The exponential lerps compute their weight once per run of members with the same
-    /// speed and time step: each member still gets `lerp_exponential` of its own speed
-    /// and dt, whatever its neighbours have (runs broken by the speed, by dt, by `-0.0`
-    /// against `0.0` and by NaN).
     /// A vector with distinct bits in every component: `-0.0`, a NaN with a payload, and
     /// values that differ from lane to lane.
     fn odd_vec3(k: usize) -> Vec3 {
@@ -1524,18 +1531,28 @@ mod tests {
             )
         });
         let guard = Vec3::new(7.0, 8.0, 9.0);
-        let mut vectors = [guard; BATCH + 1];
-        let out: *mut [Vec3; BATCH] = vectors.as_mut_ptr().cast();
-        // SAFETY: `out` is the first BATCH items; each translation has padding after it.
-        unsafe { put_vec3s(out, |m| &raw const transforms[m].translation) };
-        for m in 0..BATCH {
-            assert_eq!(
-                bits(vectors[m]),
-                bits(transforms[m].translation),
-                "lane {m}"
-            );
+        let at = transforms.as_ptr();
+        // The translations, then the scales.
+        type Part = fn(&Transform) -> Vec3;
+        let parts: [(Part, usize); 2] = [
+            (
+                |x| x.translation,
+                std::mem::offset_of!(Transform, translation),
+            ),
+            (|x| x.scale, std::mem::offset_of!(Transform, scale)),
+        ];
+        for (part, offset) in parts {
+            let mut vectors = [guard; BATCH + 1];
+            let out: *mut [Vec3; BATCH] = vectors.as_mut_ptr().cast();
+            let from = |m: usize| at.wrapping_add(m).cast::<u8>().wrapping_add(offset).cast();
+            // SAFETY: `out` is the first BATCH items; each part has padding after it, and
+            // is reached through the whole block's pointer.
+            unsafe { put_vec3s(out, from) };
+            for m in 0..BATCH {
+                assert_eq!(bits(vectors[m]), bits(part(&transforms[m])), "lane {m}");
+            }
+            assert_eq!(bits(vectors[BATCH]), bits(guard), "past the block");
         }
-        assert_eq!(bits(vectors[BATCH]), bits(guard), "past the block");
 
         let (t, s): ([Vec3; BATCH], [Vec3; BATCH]) = (
             std::array::from_fn(odd_vec3),
@@ -1555,6 +1572,10 @@ mod tests {
         assert!(blocks[BATCH].bit_eq(&guard), "past the block");
     }
 
+    /// The exponential lerps compute their weight once per run of members with the same
+    /// speed and time step: each member still gets `lerp_exponential` of its own speed
+    /// and dt, whatever its neighbours have (runs broken by the speed, by dt, by `-0.0`
+    /// against `0.0` and by NaN).
     #[test]
     fn exponential_lerps_reuse_a_weight_only_for_equal_speed_and_time_step() {
         const NAN: f32 = f32::NAN;

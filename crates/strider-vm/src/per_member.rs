@@ -229,17 +229,13 @@ pub(crate) unsafe fn two_bone_iks(o: &[u32], lane0: Bases, members: &mut [Ctx<'_
         return false;
     }
     CHAIN_LANES.with(|cell| {
-        // A batch's IK run from inside another one's on this thread gets lanes of its own.
-        let (mut thread_lanes, mut own) = (cell.try_borrow_mut().ok(), None);
-        let lanes = match thread_lanes.as_deref_mut() {
-            Some(lanes) => {
-                lanes.unset_all();
-                lanes
-            }
-            None => own.insert(Box::default()),
-        };
+        // The thread's lanes, taken for this batch and given back after it (made on the
+        // thread's first IK).
+        let mut lanes = cell.take().unwrap_or_default();
+        lanes.unset_all();
         // SAFETY: the caller's contract.
-        unsafe { solve_batch(o, lane0, members, (p0, s0), &axes, lanes) };
+        unsafe { solve_batch(o, lane0, members, (p0, s0), &axes, &mut lanes) };
+        cell.set(Some(lanes));
     });
     true
 }
@@ -247,8 +243,8 @@ pub(crate) unsafe fn two_bone_iks(o: &[u32], lane0: Bases, members: &mut [Ctx<'_
 thread_local! {
     /// Each thread's chain lanes, reused by every batch's IK (a `ChainLanes` is a few
     /// kilobytes, which filling anew for each IK costs more than the lanes it fills).
-    static CHAIN_LANES: std::cell::RefCell<Box<ChainLanes<BATCH>>> =
-        std::cell::RefCell::new(Box::default());
+    static CHAIN_LANES: std::cell::Cell<Option<Box<ChainLanes<BATCH>>>> =
+        const { std::cell::Cell::new(None) };
 }
 
 /// [`two_bone_iks`]' chains read, solved on `lanes` and written back, once the members'
@@ -856,11 +852,11 @@ mod tests {
         // cases), bones that are not a limb (written one by one), or their own axes
         // (`shared` false: the member's index in them). Stretch starts at 0.8 of the
         // chain's reach, for the members that stretch.
-        let run = |n: usize, batch: bool, shared: bool| {
+        let run = |n: usize, batch: bool, shared: bool, shift: usize| {
             let slots = (0..n)
                 .map(|m| {
-                    let mut s = member_slots(m);
-                    let chain = match m % 6 {
+                    let mut s = member_slots(m + shift);
+                    let chain = match (m + shift) % 6 {
                         3 => [0, 0, 2],
                         4 => [0, 1, -1],
                         5 => [0, 2, 1],
@@ -870,7 +866,7 @@ mod tests {
                     let tilt = if shared { 0.0 } else { m as f32 };
                     s.vec3s[6] = Vec3::new(1.0, 2.0, -1.0 - tilt);
                     s.vec3s[7] = Vec3::Z;
-                    s.floats[6] = [1.0, 1.0, 0.5, 1.0, f32::NAN, 1.0, 2.0][m % 7];
+                    s.floats[6] = [1.0, 1.0, 0.5, 1.0, f32::NAN, 1.0, 2.0][(m + shift) % 7];
                     (s.floats[2], s.floats[3]) = (0.8, 1.3);
                     s
                 })
@@ -882,16 +878,19 @@ mod tests {
             run_members(Op::TwoBoneIK, &o, slots, batch.then_some(&batched))
         };
         // Largest first, on one thread: the smaller batches run on the thread's chain lanes
-        // with the larger one's numbers left in the lanes they do not set.
-        for n in [BATCH, 7, 1] {
+        // with the larger one's numbers left in them. Their members' cases are shifted: lane
+        // 0, which the full batch solved, is not set again in the batch of 7 (its member 0
+        // has a repeated bone), so a chain left marked from before would be caught; the
+        // other lanes are set again with other numbers.
+        for (n, shift) in [(BATCH, 0), (7, 3), (1, 1)] {
             SOLVED_ON_LANES.with(|solved| solved.set(0));
-            let mut batched = run(n, true, true).expect("the batch path takes it");
+            let mut batched = run(n, true, true, shift).expect("the batch path takes it");
             let on_lanes = SOLVED_ON_LANES.with(std::cell::Cell::get);
             assert!(
                 on_lanes > 0 || !LANES_MATCH_GLAM,
                 "{n} members: none on lanes"
             );
-            let mut alone = run(n, false, true).expect("the handler");
+            let mut alone = run(n, false, true, shift).expect("the handler");
             same_members(&mut batched, &mut alone, "TwoBoneIK");
             let alone = alone.0;
             // The chains were solved (reached or not: a distance to the target), and the
@@ -899,13 +898,13 @@ mod tests {
             for (m, s) in alone.iter().enumerate() {
                 assert_eq!(
                     s.floats[7].is_finite(),
-                    !matches!(m % 6, 3 | 4),
+                    !matches!((m + shift) % 6, 3 | 4),
                     "member {m}"
                 );
             }
         }
         // Members with axes of their own: each is solved by the handler.
-        assert!(run(BATCH, true, false).is_none());
+        assert!(run(BATCH, true, false, 0).is_none());
     }
 
     #[test]

@@ -645,7 +645,8 @@ impl<const N: usize> ChainLanes<N> {
         axes.local_inverse.is_some()
     }
 
-    /// Solves every chain set since the lanes were made that
+    /// Solves every chain set since the lanes were made or last unset
+    /// ([`ChainLanes::unset_all`]) that
     /// [`TwoBoneIk::solve_with_axes`] would solve without a fallback (see the module docs),
     /// all with the local axes `axes`. None is solved when `axes` has no usable local
     /// frame. Always inlined, so that a caller compiled for wider vector registers runs it
