@@ -513,15 +513,8 @@ impl ReadsTable {
             for (g, w) in globals.iter_mut().zip(r.row) {
                 *g |= w;
             }
+            // A node's own state and pose reads are in its flags (`fill`).
             flags |= r.flags & (POSE | STATEFUL);
-            if !b.nodes[n].state.is_empty() {
-                flags |= STATEFUL;
-            }
-            if let NodeKind::Builtin(op) = b.nodes[n].kind
-                && reads_pose(op)
-            {
-                flags |= POSE;
-            }
         }
         for_each_step_global(&b.exec, &mut |g| globals[g / 64] |= 1 << (g % 64));
         if self.functions.len() <= f {

@@ -280,19 +280,15 @@ unsafe fn put_transforms(
     // Pointers into the whole arrays (not through one item's reference), so that 16 bytes
     // from an item that is not the last may be read.
     let (t_at, s_at) = (t.as_ptr(), s.as_ptr());
-    let copy16 = |from: *const Vec3, to: *mut Vec3| {
-        // SAFETY: `from` is not the last item of its array, so 16 bytes from it are
-        // readable; `to` is a transform's translation or scale, which 4 bytes of padding
-        // follow.
-        unsafe { std::ptr::copy_nonoverlapping(from.cast::<u8>(), to.cast::<u8>(), 16) }
-    };
     for (m, &rotation) in r[..BATCH - 1].iter().enumerate() {
-        // SAFETY: the caller's contract; `m + 1 < BATCH`.
+        // SAFETY: the caller's contract; `m + 1 < BATCH`, so 16 bytes from item `m` of `t`
+        // and `s` are readable, and 4 bytes of padding follow a transform's translation
+        // and scale.
         unsafe {
             let to = out.add(m);
-            copy16(t_at.add(m), &raw mut (*to).translation);
+            copy_vec3_wide(t_at.add(m), &raw mut (*to).translation);
             (*to).rotation = rotation;
-            copy16(s_at.add(m), &raw mut (*to).scale);
+            copy_vec3_wide(s_at.add(m), &raw mut (*to).scale);
         }
     }
     let last = BATCH - 1;
@@ -487,6 +483,19 @@ pub(crate) unsafe fn break_transforms(o: &[u32], lane0: Bases) {
     }
 }
 
+/// The vector at `from` copied to `to` as 16 bytes: the vector and the 4 bytes after it, one
+/// load and one store. Only bytes move (padding may be among them), so every bit arrives.
+///
+/// # Safety
+/// 16 bytes from `from` must be readable and 16 bytes from `to` writable (through pointers
+/// that may reach them), and the two must not overlap; the 4 bytes after `to`'s vector
+/// must be padding or be written again before anything reads them.
+#[inline(always)]
+unsafe fn copy_vec3_wide(from: *const Vec3, to: *mut Vec3) {
+    // SAFETY: the caller's contract.
+    unsafe { std::ptr::copy_nonoverlapping(from.cast::<u8>(), to.cast::<u8>(), 16) }
+}
+
 /// Lane `m` of the block `out` becomes the vector at `from(m)`, lane by lane in order.
 /// Every lane but the last is copied as 16 bytes, the vector and the 4 bytes after it,
 /// which land on the next lane's first component before that lane is written: one load
@@ -505,7 +514,7 @@ unsafe fn put_vec3s(out: *mut [Vec3; BATCH], from: impl Fn(usize) -> *const Vec3
     for m in 0..BATCH - 1 {
         // SAFETY: the caller's contract; the 4 bytes written past lane `m` are lane
         // `m + 1`'s, written next.
-        unsafe { std::ptr::copy_nonoverlapping(from(m).cast::<u8>(), out.add(m).cast::<u8>(), 16) };
+        unsafe { copy_vec3_wide(from(m), out.add(m)) };
     }
     // SAFETY: as above; the last lane as 12 bytes, so nothing past the block is written.
     unsafe { *out.add(BATCH - 1) = *from(BATCH - 1) };
