@@ -127,6 +127,106 @@ fn a_batched_foot_ik_crowd_stands_like_each_character_alone() {
 }
 
 #[test]
+fn a_crowd_batches_tunables_set_by_the_host_like_each_character_alone() {
+    // A batch of characters whose tunables are all the graph's defaults keeps the values
+    // no instruction writes in the thread's lanes from one batch of the program to the
+    // next; a character whose tunables the host set brings its own, and another program's
+    // batch in between overwrites them. Four crowds take turns on this thread: locomotion
+    // with the defaults; locomotion compiled with a shorter swing by default (the same
+    // slots, other values in them); locomotion with one character's strides longer; and
+    // locomotion with every character's swing shorter (the same value on all, through
+    // `set_float`, and through `set_variable` on one). Each character must walk as it
+    // would alone, frame after frame.
+    use strider::nodes::Value;
+    let locomotion = compile("graphs/locomotion.ron");
+    let path = Path::new("graphs/locomotion.ron");
+    let text = std::fs::read_to_string(path).expect("locomotion.ron");
+    let swing_default = r#""SwingTime":                (type: Float, default: 0.5,"#;
+    assert!(text.contains(swing_default), "SwingTime's default moved");
+    let short_swing = strider::compiler::compile_str(
+        path,
+        &text.replace(swing_default, &swing_default.replace("0.5", "0.3")),
+    )
+    .map(Arc::new)
+    .unwrap_or_else(|d| panic!("{d:?}"));
+    let skeleton = mannequin();
+    let scenario = Scenario::load("graphs/scenarios/start_stop.ron").expect("scenario");
+    let (sim, track) = common::track(&scenario, 60);
+    let stride = locomotion
+        .variable_id("MaxFootStrideLength")
+        .expect("stride");
+    let swing = locomotion.variable_id("SwingTime").expect("swing");
+    type Tuning = dyn Fn(usize, &mut Instance);
+    let make = |program: &Arc<Program>, tune: &Tuning| -> Vec<Instance> {
+        (0..17)
+            .map(|k| {
+                let mut instance =
+                    Instance::new(Arc::clone(program), Arc::clone(&skeleton)).unwrap();
+                tune(k, &mut instance);
+                instance
+            })
+            .collect()
+    };
+    let defaults = |_: usize, _: &mut Instance| {};
+    let one_stride = move |k: usize, i: &mut Instance| {
+        if k == 3 {
+            i.set_float(stride, 120.0);
+        }
+    };
+    let every_swing = move |k: usize, i: &mut Instance| {
+        if k == 5 {
+            i.set_variable(swing, &Value::Float(0.3)).unwrap();
+        } else {
+            i.set_float(swing, 0.3);
+        }
+    };
+    let tunings: [(&Arc<Program>, &Tuning); 4] = [
+        (&locomotion, &defaults),
+        (&short_swing, &defaults),
+        (&locomotion, &one_stride),
+        (&locomotion, &every_swing),
+    ];
+    let mut crowds: Vec<(&Arc<Program>, Vec<Instance>, Vec<Instance>)> = tunings
+        .iter()
+        .map(|&(p, t)| (p, make(p, t), make(p, t)))
+        .collect();
+    for f in 0..60 {
+        for (c, (program, batched, alone)) in crowds.iter_mut().enumerate() {
+            let input = |k: usize| {
+                let (dt, component_to_world) = track[(f + 7 * k) % track.len()];
+                FrameInput {
+                    dt,
+                    component_to_world,
+                    pose: InputPose::Rest,
+                }
+            };
+            Instance::run_forward_batch(batched, input, sim.world(), false);
+            for (k, instance) in alone.iter_mut().enumerate() {
+                instance.run_forward(&input(k), sim.world(), false);
+            }
+            for (k, (a, b)) in batched.iter().zip(alone.iter()).enumerate() {
+                common::assert_same_frame(&format!("crowd {c}"), program, k, f, a, b);
+            }
+        }
+    }
+    // The tunings change how the crowds walk: the test compares different things.
+    let pose = |crowd: &[Instance]| -> Vec<u32> {
+        let locals = crowd[5].pose().locals();
+        locals.iter().map(|t| t.translation.x.to_bits()).collect()
+    };
+    assert_ne!(
+        pose(&crowds[0].1),
+        pose(&crowds[1].1),
+        "a shorter swing walks differently"
+    );
+    assert_eq!(
+        pose(&crowds[1].1),
+        pose(&crowds[3].1),
+        "the same swing set by the host"
+    );
+}
+
+#[test]
 fn a_mixed_crowd_batches_each_program_and_refuses_none() {
     // Two programs interleaved (each instance's neighbours run the other), two instances
     // of one graph compiled twice (equal programs, different `Arc`s), and hazardous dts:

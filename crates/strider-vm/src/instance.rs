@@ -126,6 +126,11 @@ pub struct Instance {
     /// Fingerprint of the native code last checked against the program
     /// ([`Instance::run_forward_native`]).
     native_checked: Option<u64>,
+    /// Whether the slots that no instruction writes (constants, variables only the host
+    /// sets) hold the program's initial values: the host has set none of those variables.
+    /// A batch of such instances takes them from the program, once for as long as its
+    /// lanes run this program.
+    unwritten_initial: bool,
     /// Whether runs accumulate into `profile`.
     #[cfg(feature = "profile")]
     profiling: bool,
@@ -153,6 +158,7 @@ impl Instance {
             to_world: Transform::IDENTITY,
             runs: 0,
             native_checked: None,
+            unwritten_initial: true,
             #[cfg(feature = "profile")]
             profiling: false,
             #[cfg(feature = "profile")]
@@ -182,6 +188,8 @@ impl Instance {
             to_world: self.to_world,
             runs: 0,
             native_checked: self.native_checked,
+            // The tunables are copied below.
+            unwritten_initial: self.unwritten_initial,
             #[cfg(feature = "profile")]
             profiling: self.profiling,
             #[cfg(feature = "profile")]
@@ -407,6 +415,7 @@ impl Instance {
             } else {
                 let mut program = None;
                 let mut members = smallvec::SmallVec::<[Ctx<'_>; exec::BATCH]>::new();
+                let unwritten_initial = batch.iter().all(|i| i.unwritten_initial);
                 for (k, instance) in batch.iter_mut().enumerate() {
                     let dt = instance.begin_frame(&input(start + k), debug);
                     let (p, cx) = instance.event_context(world, dt);
@@ -424,6 +433,8 @@ impl Instance {
                             // With debug every written slot goes back: pin values too.
                             kept: if debug { &p.written_lens } else { &p.kept_lens },
                             written: &p.written_lens,
+                            program: if unwritten_initial { p.id } else { 0 },
+                            initial: &p.initial,
                         },
                         &mut members,
                     );
@@ -590,7 +601,18 @@ impl Instance {
             }
             v => self.slots.write(info.slot, v),
         }
+        self.note_set(info.ty, info.slot);
         Ok(())
+    }
+
+    /// Notes that the host has set the variable in slot `slot` of type `ty`: the instance's
+    /// unwritten slots may no longer hold the program's initial values.
+    fn note_set(&mut self, ty: ValueType, slot: u32) {
+        if let Some(t) = crate::slots::scalar(ty)
+            && slot as usize >= self.program.written_lens.0[t]
+        {
+            self.unwritten_initial = false;
+        }
     }
 
     /// Sets a `Float` variable without allocating: the per-frame path for tunables.
@@ -599,6 +621,7 @@ impl Instance {
         let info = self.program.variable(id);
         if info.ty == ValueType::Float {
             self.slots.floats[info.slot as usize] = value;
+            self.note_set(ValueType::Float, info.slot);
         }
     }
 }

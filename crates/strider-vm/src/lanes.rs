@@ -14,7 +14,7 @@
 #![allow(unsafe_code)]
 
 use crate::exec::{BATCH, Bases, Ctx};
-use crate::slots::ScalarLens;
+use crate::slots::{ScalarLens, Slots};
 use crate::transpose::{
     QuatColumns, Vec3Columns, quat_columns, quat_rows, rotation_columns, scale_columns,
     vec3_columns, vec3_rows,
@@ -38,6 +38,10 @@ pub(crate) struct Lanes {
     vec3s: Vec<Vec3>,
     quats: Vec<Quat>,
     transforms: Vec<Transform>,
+    /// The program (`Program::id`; 0: none) whose initial values every lane holds in the
+    /// slots no instruction of it writes (each type's `written..lens`), since its last
+    /// batch loaded them and no other program's batch has run here since.
+    unwritten_of: u64,
 }
 
 /// Which of a program's scalar slots a batch copies between its members and the lanes, per
@@ -48,8 +52,10 @@ pub(crate) struct Lanes {
 /// and that an instruction writes, `0..kept`; then the shared slots of values that live
 /// only within a run, `kept..written`, which every run writes before it reads them; then
 /// the slots no instruction writes (constants, variables only the host sets),
-/// `written..lens`. The shared slots' lanes start a batch with whatever an earlier batch
-/// left there, which no run reads. With `kept` = `written` every written slot goes both
+/// `written..lens`: when every member holds the program's initial values there (the host
+/// has set none of those variables), the lanes take them from `initial` and keep them for
+/// the program's next batches. The shared slots' lanes start a batch with whatever an
+/// earlier batch left there, which no run reads. With `kept` = `written` every written slot goes both
 /// ways, so the members' own slots end as a run on them alone leaves them.
 #[derive(Clone, Copy)]
 pub(crate) struct Copies<'p> {
@@ -59,6 +65,11 @@ pub(crate) struct Copies<'p> {
     pub(crate) kept: &'p ScalarLens,
     /// Each type's slots from `written` on are copied in only (no instruction writes them).
     pub(crate) written: &'p ScalarLens,
+    /// The program's `id` when every member holds `initial`'s values in the slots from
+    /// `written` on; else 0, and each member's are copied.
+    pub(crate) program: u64,
+    /// The program's initial slots.
+    pub(crate) initial: &'p Slots,
 }
 
 impl<'p> Copies<'p> {
@@ -69,6 +80,9 @@ impl<'p> Copies<'p> {
             lens,
             kept: lens,
             written: lens,
+            program: 0,
+            // Read only for a program's unwritten slots, of which there are none here.
+            initial: Box::leak(Box::default()),
         }
     }
 }
@@ -96,10 +110,13 @@ impl Lanes {
     /// of every member in (growing the lanes to `lens` slots of [`BATCH`] members where
     /// they are shorter). `members` has at most [`BATCH`] members, each covering `lens`.
     /// Member by member: each member's array is read in order into its lane (every
-    /// [`BATCH`]th item).
+    /// [`BATCH`]th item). With `copies.program`, whose initial values every member holds
+    /// in `copies.written..copies.lens`, those come from `copies.initial` into every lane
+    /// instead, unless the lanes hold them already.
     #[inline(always)]
     pub(crate) fn load(&mut self, copies: Copies<'_>, members: &[Ctx<'_>]) {
         assert!(members.len() <= BATCH, "a batch has at most BATCH members");
+        let (program, held) = (copies.program, self.unwritten_of);
         macro_rules! load {
             ($a:ident, $t:expr) => {{
                 let len = copies.lens.0[$t];
@@ -117,14 +134,23 @@ impl Lanes {
                         // `len * BATCH` items (grown above, and sliced to that).
                         unsafe { *lanes.add(k * BATCH + m) = x };
                     }
-                    for (k, &x) in from[rest..].iter().enumerate() {
-                        // SAFETY: as above, `rest + k < len`.
-                        unsafe { *lanes.add((rest + k) * BATCH + m) = x };
+                    if program == 0 {
+                        for (k, &x) in from[rest..].iter().enumerate() {
+                            // SAFETY: as above, `rest + k < len`.
+                            unsafe { *lanes.add((rest + k) * BATCH + m) = x };
+                        }
+                    }
+                }
+                if program != 0 && program != held {
+                    let blocks = self.$a[rest * BATCH..len * BATCH].chunks_exact_mut(BATCH);
+                    for (block, &x) in blocks.zip(&copies.initial.$a[rest..len]) {
+                        block.fill(x);
                     }
                 }
             }};
         }
         each_scalar_type!(load);
+        self.unwritten_of = program;
     }
 
     /// Copies each scalar type's slots `0..copies.kept` back to every member, member by

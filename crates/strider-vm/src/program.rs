@@ -240,6 +240,10 @@ pub struct Program {
     /// copy (see [`crate::lanes::Copies`]). `written_lens` for a program without slot
     /// sharing.
     pub(crate) kept_lens: ScalarLens,
+    /// This program's number, unique among the programs built in this process (a clone
+    /// has its original's: the same code): a batch's lanes remember whose unwritten slots
+    /// they hold (see [`crate::lanes::Copies`]).
+    pub(crate) id: u64,
     /// Whether an instruction traces the world: only then does a run need the character's
     /// world transform as matrices.
     pub(crate) traces: bool,
@@ -393,6 +397,7 @@ impl ProgramBuilder {
                 scalar_lens: ScalarLens::default(),
                 written_lens: ScalarLens::default(),
                 kept_lens: ScalarLens::default(),
+                id: 0,
                 traces: false,
                 fingerprint: std::sync::OnceLock::new(),
             },
@@ -621,6 +626,9 @@ impl ProgramBuilder {
         if !share {
             p.kept_lens = p.written_lens;
         }
+        // Numbers from 1 on: 0 is no program.
+        static PROGRAMS: std::sync::atomic::AtomicU64 = std::sync::atomic::AtomicU64::new(1);
+        p.id = PROGRAMS.fetch_add(1, std::sync::atomic::Ordering::Relaxed);
         p.traces = p
             .code
             .iter()
