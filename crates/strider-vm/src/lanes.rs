@@ -448,6 +448,47 @@ impl SameBits for i32 {
     }
 }
 
+/// Blocks whose lanes can be checked all alike at once ([`Uniform::uniform`]).
+trait Uniform {
+    /// Whether every lane of `block` holds lane 0's bits.
+    fn uniform(block: &[Self; BATCH]) -> bool
+    where
+        Self: Sized;
+}
+
+/// Numbers, vectors and rotations are 32-bit words with no padding, and a bool is a byte:
+/// a block is uniform when each word equals the word one item before it, which compares
+/// the whole block a vector register at a time (no branch per lane).
+macro_rules! uniform_words {
+    ($($t:ty => $w:ty),+) => {$(
+        const _: () = assert!(size_of::<$t>() % size_of::<$w>() == 0);
+        impl Uniform for $t {
+            #[inline(always)]
+            fn uniform(block: &[Self; BATCH]) -> bool {
+                const PER: usize = size_of::<$t>() / size_of::<$w>();
+                // SAFETY: the block's bytes are initialised words of `$w` (the items are
+                // made of them, without padding), aligned as the items are.
+                let words: &[$w; BATCH * PER] = unsafe { &*block.as_ptr().cast() };
+                words[PER..]
+                    .iter()
+                    .zip(&words[..BATCH * PER - PER])
+                    .fold(true, |same, (a, b)| same & (a == b))
+            }
+        }
+    )+};
+}
+uniform_words!(f32 => u32, i32 => u32, Vec3 => u32, Quat => u32, bool => u8);
+
+impl Uniform for Transform {
+    /// Field by field: a transform has padding, which is not compared.
+    #[inline(always)]
+    fn uniform(block: &[Self; BATCH]) -> bool {
+        block[1..]
+            .iter()
+            .fold(true, |same, t| same & t.same_bits(&block[0]))
+    }
+}
+
 /// Vectors and rotations: every component's bits.
 macro_rules! same_components {
     ($($t:ty),+) => {$(
@@ -642,13 +683,22 @@ pub(crate) unsafe fn run_wide(
             )+
             // SAFETY: as above; no input refers to this array.
             let out = unsafe { &mut *block(lane0.$out, o[$ko]) };
-            for m in 0..n {
-                out[m] = if m > 0 $(&& $y[m].same_bits(&$y[m - 1]))+ {
-                    out[m - 1]
-                } else {
-                    $(let $y = $y[m];)+
+            if n == BATCH $(&& Uniform::uniform($y))+ {
+                // Every member's inputs are member 0's: so is every result.
+                let r = {
+                    $(let $y = $y[0];)+
                     $e
                 };
+                out.fill(r);
+            } else {
+                for m in 0..n {
+                    out[m] = if m > 0 $(&& $y[m].same_bits(&$y[m - 1]))+ {
+                        out[m - 1]
+                    } else {
+                        $(let $y = $y[m];)+
+                        $e
+                    };
+                }
             }
         }};
         (n, shared; $out:ident[$ko:expr] = |$($x:ident: $a:ident[$k:expr]),+ $(; $dt:ident)?| $e:expr) => {{
@@ -656,17 +706,30 @@ pub(crate) unsafe fn run_wide(
             $(let $x = unsafe { *block(lane0.$a, o[$k]) };)+
             // SAFETY: as above.
             let mut result = unsafe { *block(lane0.$out, o[$ko]) };
-            for m in 0..n {
-                if m > 0
-                    $(&& $x[m].same_bits(&$x[m - 1]))+
-                    $(&& { stringify!($dt); dts[m].same_bits(&dts[m - 1]) })?
-                {
-                    result[m] = result[m - 1];
-                    continue;
+            if n == BATCH
+                $(&& Uniform::uniform(&$x))+
+                $(&& { stringify!($dt); Uniform::uniform(dts) })?
+            {
+                // Every member's inputs are member 0's: so is every result.
+                let r = {
+                    $(let $x = $x[0];)+
+                    $(let $dt = dts[0];)?
+                    $e
+                };
+                result = [r; BATCH];
+            } else {
+                for m in 0..n {
+                    if m > 0
+                        $(&& $x[m].same_bits(&$x[m - 1]))+
+                        $(&& { stringify!($dt); dts[m].same_bits(&dts[m - 1]) })?
+                    {
+                        result[m] = result[m - 1];
+                        continue;
+                    }
+                    $(let $x = $x[m];)+
+                    $(let $dt = dts[m];)?
+                    result[m] = $e;
                 }
-                $(let $x = $x[m];)+
-                $(let $dt = dts[m];)?
-                result[m] = $e;
             }
             // SAFETY: as above.
             unsafe { *block(lane0.$out, o[$ko]) = result };
@@ -678,23 +741,38 @@ pub(crate) unsafe fn run_wide(
         (n, shared; ($($r:ident => $out:ident[$ko:expr]),+) = |$($x:ident: $a:ident[$k:expr]),+ $(; $dt:ident)?| $e:expr) => {{
             // SAFETY: as above.
             $(let $x = unsafe { *block(lane0.$a, o[$k]) };)+
-            for m in 0..n {
-                if m > 0
-                    $(&& $x[m].same_bits(&$x[m - 1]))+
-                    $(&& { stringify!($dt); dts[m].same_bits(&dts[m - 1]) })?
-                {
-                    // SAFETY: as above; `m < n <= BATCH`.
-                    $(unsafe {
-                        let out = block(lane0.$out, o[$ko]);
-                        (*out)[m] = (*out)[m - 1];
-                    })+
-                    continue;
-                }
-                $(let $x = $x[m];)+
-                $(let $dt = dts[m];)?
-                let ($($r,)+) = $e;
+            if n == BATCH
+                $(&& Uniform::uniform(&$x))+
+                $(&& { stringify!($dt); Uniform::uniform(dts) })?
+            {
+                // Every member's inputs are member 0's: so are all results. Each output
+                // is filled in turn (where two share a slot, the last, as lane by lane).
+                let ($($r,)+) = {
+                    $(let $x = $x[0];)+
+                    $(let $dt = dts[0];)?
+                    $e
+                };
                 // SAFETY: as above.
-                $(unsafe { (*block(lane0.$out, o[$ko]))[m] = $r };)+
+                $(unsafe { *block(lane0.$out, o[$ko]) = [$r; BATCH] };)+
+            } else {
+                for m in 0..n {
+                    if m > 0
+                        $(&& $x[m].same_bits(&$x[m - 1]))+
+                        $(&& { stringify!($dt); dts[m].same_bits(&dts[m - 1]) })?
+                    {
+                        // SAFETY: as above; `m < n <= BATCH`.
+                        $(unsafe {
+                            let out = block(lane0.$out, o[$ko]);
+                            (*out)[m] = (*out)[m - 1];
+                        })+
+                        continue;
+                    }
+                    $(let $x = $x[m];)+
+                    $(let $dt = dts[m];)?
+                    let ($($r,)+) = $e;
+                    // SAFETY: as above.
+                    $(unsafe { (*block(lane0.$out, o[$ko]))[m] = $r };)+
+                }
             }
         }};
         // The same as `n` for large outputs (transforms): written in place, lane by lane,
@@ -1512,7 +1590,31 @@ mod tests {
                     slots: run,
                     dt: |m| m,
                 };
-                for (n, source) in [(BATCH, own), (5, own), (BATCH, runs), (BATCH, own_dt)] {
+                // A whole batch alike (kernels run once for all), and alike but for the
+                // last member's slots or time step (every slot of member 1 differs from
+                // member 0's; member 2's slots give the kernels that read the time step
+                // results that depend on it).
+                let alike = Source {
+                    slots: |_| 0,
+                    dt: |_| 0,
+                };
+                let last_slots = Source {
+                    slots: |m| usize::from(m == BATCH - 1),
+                    dt: |_| 0,
+                };
+                let last_dt = Source {
+                    slots: |_| 2,
+                    dt: |m| usize::from(m == BATCH - 1),
+                };
+                for (n, source) in [
+                    (BATCH, own),
+                    (5, own),
+                    (BATCH, runs),
+                    (BATCH, own_dt),
+                    (BATCH, alike),
+                    (BATCH, last_slots),
+                    (BATCH, last_dt),
+                ] {
                     let Some(lanes) = wide(op, &o, n, source) else {
                         continue;
                     };
@@ -1539,6 +1641,40 @@ mod tests {
         }
         // The 138 ops `run_wide` has arms for (a miss here means `every_op` lacks one).
         assert_eq!(count, 138);
+    }
+
+    /// A block is uniform only when every lane holds lane 0's bits: one lane that differs
+    /// in one component (a sign of zero, a NaN's payload, a transform's last scale) is
+    /// found wherever it is.
+    #[test]
+    fn uniform_blocks_are_told_from_blocks_with_one_lane_apart() {
+        fn check<T: Uniform + Copy>(same: T, other: T, what: &str) {
+            assert!(Uniform::uniform(&[same; BATCH]), "{what}: alike");
+            for m in 0..BATCH {
+                let mut block = [same; BATCH];
+                block[m] = other;
+                assert!(!Uniform::uniform(&block), "{what}: lane {m} apart");
+            }
+        }
+        let nan = f32::from_bits(0x7fc0_0001);
+        check(0.0f32, -0.0, "zero");
+        check(nan, f32::from_bits(0x7fc0_0002), "NaN payload");
+        check(3i32, -3, "int");
+        check(true, false, "bool");
+        check(
+            Vec3::new(1.0, 2.0, nan),
+            Vec3::new(1.0, 2.0, -nan),
+            "vector",
+        );
+        check(
+            Quat::from_xyzw(0.0, 0.0, 0.0, 1.0),
+            Quat::from_xyzw(0.0, 0.0, -0.0, 1.0),
+            "rotation",
+        );
+        let t = Transform::new(Vec3::X, Quat::IDENTITY, Vec3::ONE);
+        let mut scaled = t;
+        scaled.scale.z = 1.0 + f32::EPSILON;
+        check(t, scaled, "transform");
     }
 
     /// A vector with distinct bits in every component: `-0.0`, a NaN with a payload, and
