@@ -195,7 +195,8 @@ pub(crate) fn block<T>(base: *mut T, slot: u32) -> *mut [T; BATCH] {
 }
 
 /// Item `m` of block `out` becomes item `m` of `x` where `c[m]`, else of `y`, lane by
-/// lane (each lane read before it is written, so `out` may be `x` or `y`).
+/// lane (each lane read before it is written, so `out` may be `x` or `y`); the whole
+/// block of one of them when every lane chooses it.
 ///
 /// # Safety
 /// The three blocks must be valid for reads and writes of [`BATCH`] items.
@@ -206,6 +207,14 @@ unsafe fn select_items<T: Copy>(
     y: *mut [T; BATCH],
     out: *mut [T; BATCH],
 ) {
+    // A bool is one byte, 0 or 1: the conditions as one 128-bit word.
+    match u128::from_le_bytes(c.map(u8::from)) {
+        // SAFETY: the caller's contract; `copy` allows the blocks to be one.
+        0 => return unsafe { std::ptr::copy(y, out, 1) },
+        // SAFETY: as above.
+        0x0101_0101_0101_0101_0101_0101_0101_0101 => return unsafe { std::ptr::copy(x, out, 1) },
+        _ => {}
+    }
     let (x, y, out) = (x.cast::<T>(), y.cast::<T>(), out.cast::<T>());
     for (m, &c) in c.iter().enumerate() {
         let from = if c { x } else { y };
@@ -324,9 +333,14 @@ unsafe fn put_transforms(
 
 /// The exponential lerps' weights `exp_alpha(speed, dt)` of the first `n` lanes (0 for the
 /// others), computed once for each run of members with the same speed and time step, bit
-/// for bit (so the same weight), as a crowd's members usually have.
+/// for bit (so the same weight), as a crowd's members usually have: once for a whole batch
+/// alike.
 #[inline(always)]
 fn weights(speed: &[f32; BATCH], dts: &[f32; BATCH], n: usize) -> [f32; BATCH] {
+    if n == BATCH && Uniform::uniform(speed) && Uniform::uniform(dts) {
+        // The whole batch alike: one weight.
+        return [loco::exp_alpha(speed[0], dts[0]); BATCH];
+    }
     let mut alphas = [0.0f32; BATCH];
     let mut last: Option<(u32, u32, f32)> = None;
     for (m, alpha) in alphas.iter_mut().enumerate().take(n) {
@@ -1641,6 +1655,30 @@ mod tests {
         }
         // The 138 ops `run_wide` has arms for (a miss here means `every_op` lacks one).
         assert_eq!(count, 138);
+    }
+
+    /// A select takes each lane from the block its condition names, whether every lane
+    /// names the same block (copied whole) or not, and also when the result's block is one
+    /// of the choices.
+    #[test]
+    fn selects_take_each_lane_from_the_chosen_block() {
+        let x: [Vec3; BATCH] = std::array::from_fn(|m| Vec3::splat(m as f32));
+        let y: [Vec3; BATCH] = std::array::from_fn(|m| Vec3::splat(-(m as f32) - 1.0));
+        let mixed: [bool; BATCH] = std::array::from_fn(|m| m % 3 == 1);
+        for c in [[true; BATCH], [false; BATCH], mixed] {
+            let want: [Vec3; BATCH] = std::array::from_fn(|m| if c[m] { x[m] } else { y[m] });
+            let (mut a, mut b, mut out) = (x, y, [Vec3::NAN; BATCH]);
+            // SAFETY: three blocks of `BATCH` items each.
+            unsafe { select_items(c, &raw mut a, &raw mut b, &raw mut out) };
+            assert_eq!(out, want, "into a block of its own");
+            // SAFETY: as above; the result in the first choice's block.
+            unsafe { select_items(c, &raw mut a, &raw mut b, &raw mut a) };
+            assert_eq!(a, want, "into the first choice");
+            let mut a = x;
+            // SAFETY: as above; the result in the second choice's block.
+            unsafe { select_items(c, &raw mut a, &raw mut b, &raw mut b) };
+            assert_eq!(b, want, "into the second choice");
+        }
     }
 
     /// A block is uniform only when every lane holds lane 0's bits: one lane that differs
