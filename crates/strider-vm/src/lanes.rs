@@ -1145,10 +1145,12 @@ pub(crate) unsafe fn run_wide(
         Op::ClampV => {
             lanes!(vec3s[3] = |a: vec3s[0], lo: vec3s[1], hi: vec3s[2]| a.max(lo).min(hi))
         }
-        Op::ClampLength => lanes!(n; vec3s[3] = |v: vec3s[0], lo: floats[1], hi: floats[2]|
+        Op::ClampLength => lanes!(n, shared; vec3s[3] = |v: vec3s[0], lo: floats[1], hi: floats[2]|
             k::clamp_length(v, lo, hi)),
-        Op::ClampSpatially => lanes!(n; vec3s[4] = |v: vec3s[0], c: vec3s[1], lo: floats[2],
-            hi: floats[3]| k::clamp_spatially(v, c, lo, hi)),
+        Op::ClampSpatially => {
+            lanes!(n, shared; vec3s[4] = |v: vec3s[0], c: vec3s[1], lo: floats[2],
+            hi: floats[3]| k::clamp_spatially(v, c, lo, hi))
+        }
 
         Op::QuatFromAxisAngle => {
             lanes!(n, shared; quats[2] = |; ref axis: vec3s[0], angle: floats[1]|
@@ -1163,7 +1165,7 @@ pub(crate) unsafe fn run_wide(
         Op::QuatScale => {
             lanes!(n, shared; quats[2] = |a: quats[0], f: floats[1]| k::quat_scale(a, f))
         }
-        Op::FindQuatBetween => lanes!(n; quats[2] = |; ref a: vec3s[0], b: vec3s[1]|
+        Op::FindQuatBetween => lanes!(n, shared; quats[2] = |; ref a: vec3s[0], b: vec3s[1]|
             k::find_quat_between(a, b)),
         Op::MulT => {
             // SAFETY: as in `lanes!`; both blocks are read before the output is written.
