@@ -8,7 +8,7 @@
 use std::path::Path;
 use std::sync::Arc;
 use strider::host::scenario::Scenario;
-use strider::{EmptyWorld, FrameInput, InputPose, Instance, Program, Skeleton};
+use strider::{EmptyWorld, FrameInput, Instance, Program, Skeleton};
 
 mod common;
 
@@ -63,14 +63,7 @@ fn batched_equals_alone(graph: &str, scenario: &str, hz: u32, characters: usize,
     let (mut batched, mut alone) = (make(), make());
     let what = format!("{graph} in {}", scenario.name);
     for f in 0..frames {
-        let input = |k: usize| {
-            let (dt, component_to_world) = track[(f + 7 * k) % track.len()];
-            FrameInput {
-                dt,
-                component_to_world,
-                pose: InputPose::Rest,
-            }
-        };
+        let input = |k: usize| common::input_at(&track, f, 7 * k);
         // Debug on every other frame and on the last.
         let debug = f % 2 == 0 || f + 1 == frames;
         Instance::run_forward_batch(&mut batched, input, sim.world(), debug);
@@ -192,14 +185,7 @@ fn a_crowd_batches_tunables_set_by_the_host_like_each_character_alone() {
         .collect();
     for f in 0..60 {
         for (c, (program, batched, alone)) in crowds.iter_mut().enumerate() {
-            let input = |k: usize| {
-                let (dt, component_to_world) = track[(f + 7 * k) % track.len()];
-                FrameInput {
-                    dt,
-                    component_to_world,
-                    pose: InputPose::Rest,
-                }
-            };
+            let input = |k: usize| common::input_at(&track, f, 7 * k);
             Instance::run_forward_batch(batched, input, sim.world(), false);
             for (k, instance) in alone.iter_mut().enumerate() {
                 instance.run_forward(&input(k), sim.world(), false);

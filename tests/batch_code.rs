@@ -7,9 +7,9 @@
 
 use std::path::Path;
 use std::sync::Arc;
+use strider::Instance;
 use strider::host::scenario::Scenario;
 use strider::vm::{BatchCode, allow_avx2, batch_code};
-use strider::{FrameInput, InputPose, Instance};
 
 mod common;
 
@@ -31,14 +31,7 @@ fn both_copies_agree(scenario: &str, hz: u32, characters: usize, frames: usize) 
     };
     let (mut wide, mut baseline) = (make(), make());
     for f in 0..frames {
-        let input = |k: usize| {
-            let (dt, component_to_world) = track[(f + 5 * k) % track.len()];
-            FrameInput {
-                dt,
-                component_to_world,
-                pose: InputPose::Rest,
-            }
-        };
+        let input = |k: usize| common::input_at(&track, f, 5 * k);
         let debug = f % 3 == 0 || f + 1 == frames;
         allow_avx2(true);
         assert_eq!(batch_code(), BatchCode::Avx2);

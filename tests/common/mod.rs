@@ -3,7 +3,7 @@
 
 use strider::host::scenario::{Scenario, Simulation};
 use strider::vm::VariableId;
-use strider::{Instance, Program, Transform};
+use strider::{FrameInput, InputPose, Instance, Program, Transform};
 
 /// `scenario` run through its simulation at `hz`: every frame's time step and
 /// component-to-world transform, and the simulation (whose world the characters trace).
@@ -14,6 +14,17 @@ pub fn track(scenario: &Scenario, hz: u32) -> (Simulation, Vec<(f32, Transform)>
         track.push((frame.dt, frame.component_to_world));
     }
     (sim, track)
+}
+
+/// Frame `f`'s input of a character `offset` frames into `track` (wrapping round): its time
+/// step and component-to-world transform, the rest pose as the input pose.
+pub fn input_at(track: &[(f32, Transform)], f: usize, offset: usize) -> FrameInput<'static> {
+    let (dt, component_to_world) = track[(f + offset) % track.len()];
+    FrameInput {
+        dt,
+        component_to_world,
+        pose: InputPose::Rest,
+    }
 }
 
 /// Asserts that `a` and `b`, character `k` of two crowds of `program` in `what`, hold
