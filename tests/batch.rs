@@ -121,15 +121,18 @@ fn a_batched_foot_ik_crowd_stands_like_each_character_alone() {
 
 #[test]
 fn a_crowd_batches_tunables_set_by_the_host_like_each_character_alone() {
-    // A batch of characters whose tunables are all the graph's defaults keeps the values
-    // no instruction writes in the thread's lanes from one batch of the program to the
-    // next; a character whose tunables the host set brings its own, and another program's
-    // batch in between overwrites them. Four crowds take turns on this thread: locomotion
-    // with the defaults; locomotion compiled with a shorter swing by default (the same
-    // slots, other values in them); locomotion with one character's strides longer; and
-    // locomotion with every character's swing shorter (the same value on all, through
-    // `set_float`, and through `set_variable` on one). Each character must walk as it
-    // would alone, frame after frame.
+    // A batch of characters whose tunables are all the graph's defaults takes the values
+    // no instruction writes from the program and keeps them in the thread's lanes for the
+    // program's next batch; a batch with a character whose tunable the host set to another
+    // value brings each character's own, and so does a batch after it or after another
+    // program's. Five crowds take turns on this thread (batches of 16): locomotion, 48
+    // characters, one in the second batch with longer strides (`set_variable`), so the
+    // third batch must take the defaults again; locomotion compiled with a shorter swing by
+    // default (the same slots, other values in them), 17; locomotion with the defaults, 33
+    // (the second batch keeps the first's); locomotion with every character's swing
+    // shorter (the same value on all: `set_float`, and `set_variable` on one), 17; and
+    // locomotion with one character's stride set and set back to its default, 17. Each
+    // character must walk as it would alone, frame after frame.
     use strider::nodes::Value;
     let locomotion = compile("graphs/locomotion.ron");
     let path = Path::new("graphs/locomotion.ron");
@@ -150,8 +153,8 @@ fn a_crowd_batches_tunables_set_by_the_host_like_each_character_alone() {
         .expect("stride");
     let swing = locomotion.variable_id("SwingTime").expect("swing");
     type Tuning = dyn Fn(usize, &mut Instance);
-    let make = |program: &Arc<Program>, tune: &Tuning| -> Vec<Instance> {
-        (0..17)
+    let make = |program: &Arc<Program>, n: usize, tune: &Tuning| -> Vec<Instance> {
+        (0..n)
             .map(|k| {
                 let mut instance =
                     Instance::new(Arc::clone(program), Arc::clone(&skeleton)).unwrap();
@@ -161,9 +164,9 @@ fn a_crowd_batches_tunables_set_by_the_host_like_each_character_alone() {
             .collect()
     };
     let defaults = |_: usize, _: &mut Instance| {};
-    let one_stride = move |k: usize, i: &mut Instance| {
-        if k == 3 {
-            i.set_float(stride, 120.0);
+    let one_in_the_second_batch = move |k: usize, i: &mut Instance| {
+        if k == 20 {
+            i.set_variable(stride, &Value::Float(120.0)).unwrap();
         }
     };
     let every_swing = move |k: usize, i: &mut Instance| {
@@ -173,15 +176,22 @@ fn a_crowd_batches_tunables_set_by_the_host_like_each_character_alone() {
             i.set_float(swing, 0.3);
         }
     };
-    let tunings: [(&Arc<Program>, &Tuning); 4] = [
-        (&locomotion, &defaults),
-        (&short_swing, &defaults),
-        (&locomotion, &one_stride),
-        (&locomotion, &every_swing),
+    let set_back = move |k: usize, i: &mut Instance| {
+        if k == 3 {
+            i.set_float(stride, 120.0);
+            i.set_float(stride, 70.0);
+        }
+    };
+    let tunings: [(&Arc<Program>, usize, &Tuning); 5] = [
+        (&locomotion, 48, &one_in_the_second_batch),
+        (&short_swing, 17, &defaults),
+        (&locomotion, 33, &defaults),
+        (&locomotion, 17, &every_swing),
+        (&locomotion, 17, &set_back),
     ];
     let mut crowds: Vec<(&Arc<Program>, Vec<Instance>, Vec<Instance>)> = tunings
         .iter()
-        .map(|&(p, t)| (p, make(p, t), make(p, t)))
+        .map(|&(p, n, t)| (p, make(p, n, t), make(p, n, t)))
         .collect();
     for f in 0..60 {
         for (c, (program, batched, alone)) in crowds.iter_mut().enumerate() {
@@ -196,18 +206,23 @@ fn a_crowd_batches_tunables_set_by_the_host_like_each_character_alone() {
         }
     }
     // The tunings change how the crowds walk: the test compares different things.
-    let pose = |crowd: &[Instance]| -> Vec<u32> {
-        let locals = crowd[5].pose().locals();
+    let pose = |crowd: &[Instance], k: usize| -> Vec<u32> {
+        let locals = crowd[k].pose().locals();
         locals.iter().map(|t| t.translation.x.to_bits()).collect()
     };
     assert_ne!(
-        pose(&crowds[0].1),
-        pose(&crowds[1].1),
+        pose(&crowds[2].1, 20),
+        pose(&crowds[0].1, 20),
+        "longer strides walk differently"
+    );
+    assert_ne!(
+        pose(&crowds[2].1, 5),
+        pose(&crowds[1].1, 5),
         "a shorter swing walks differently"
     );
     assert_eq!(
-        pose(&crowds[1].1),
-        pose(&crowds[3].1),
+        pose(&crowds[1].1, 5),
+        pose(&crowds[3].1, 5),
         "the same swing set by the host"
     );
 }

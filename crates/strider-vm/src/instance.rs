@@ -126,11 +126,12 @@ pub struct Instance {
     /// Fingerprint of the native code last checked against the program
     /// ([`Instance::run_forward_native`]).
     native_checked: Option<u64>,
-    /// Whether the slots that no instruction writes (constants, variables only the host
-    /// sets) hold the program's initial values: the host has set none of those variables.
-    /// A batch of such instances takes them from the program, once for as long as its
+    /// How many of the slots that no instruction writes (constants, variables only the host
+    /// sets) hold other bits than the program's initial value there: 0 while the host has
+    /// set none of those variables to another value (or has set them back). A batch of
+    /// instances at 0 takes those slots from the program, once for as long as the thread's
     /// lanes run this program.
-    unwritten_initial: bool,
+    unwritten_changed: u32,
     /// Whether runs accumulate into `profile`.
     #[cfg(feature = "profile")]
     profiling: bool,
@@ -158,7 +159,7 @@ impl Instance {
             to_world: Transform::IDENTITY,
             runs: 0,
             native_checked: None,
-            unwritten_initial: true,
+            unwritten_changed: 0,
             #[cfg(feature = "profile")]
             profiling: false,
             #[cfg(feature = "profile")]
@@ -188,8 +189,8 @@ impl Instance {
             to_world: self.to_world,
             runs: 0,
             native_checked: self.native_checked,
-            // The tunables are copied below.
-            unwritten_initial: self.unwritten_initial,
+            // Counted once the tunables are copied, below.
+            unwritten_changed: 0,
             #[cfg(feature = "profile")]
             profiling: self.profiling,
             #[cfg(feature = "profile")]
@@ -203,6 +204,7 @@ impl Instance {
             .filter(|v| v.tunable.is_some())
         {
             copy_slot(&self.slots, &mut next.slots, v.ty, v.slot);
+            next.unwritten_changed += u32::from(next.unwritten_differs(v.ty, v.slot));
         }
         next.debug = std::mem::take(&mut self.debug);
         #[cfg(feature = "profile")]
@@ -415,7 +417,7 @@ impl Instance {
             } else {
                 let mut program = None;
                 let mut members = smallvec::SmallVec::<[Ctx<'_>; exec::BATCH]>::new();
-                let unwritten_initial = batch.iter().all(|i| i.unwritten_initial);
+                let unwritten_initial = batch.iter().all(|i| i.unwritten_changed == 0);
                 for (k, instance) in batch.iter_mut().enumerate() {
                     let dt = instance.begin_frame(&input(start + k), debug);
                     let (p, cx) = instance.event_context(world, dt);
@@ -558,12 +560,15 @@ impl Instance {
     }
 
     /// Sets a variable (a tunable from the host or the inspector, or any state). An `Int`
-    /// value is accepted for a `Float` variable.
+    /// value is accepted for a `Float` variable. See [`Instance::set_float`] for what a
+    /// value other than the default costs a batch.
     ///
     /// # Errors
     /// When the value's type is not the variable's, or a bone name is unknown.
     pub fn set_variable(&mut self, id: VariableId, value: &Value) -> Result<(), VariableError> {
         let info = self.program.variable(id);
+        let (ty, slot) = (info.ty, info.slot);
+        let was = self.unwritten_differs(ty, slot);
         let value = match (info.ty, value) {
             (ValueType::Float, Value::Int(i)) => Value::Float(*i as f32),
             _ => value.clone(),
@@ -601,27 +606,54 @@ impl Instance {
             }
             v => self.slots.write(info.slot, v),
         }
-        self.note_set(info.ty, info.slot);
+        self.note_set(ty, slot, was);
         Ok(())
     }
 
-    /// Notes that the host has set the variable in slot `slot` of type `ty`: the instance's
-    /// unwritten slots may no longer hold the program's initial values.
-    fn note_set(&mut self, ty: ValueType, slot: u32) {
-        if let Some(t) = crate::slots::scalar(ty)
-            && slot as usize >= self.program.written_lens.0[t]
-        {
-            self.unwritten_initial = false;
+    /// Whether slot `slot` of type `ty` is one that no instruction writes and holds other
+    /// bits than the program's initial value there.
+    fn unwritten_differs(&self, ty: ValueType, slot: u32) -> bool {
+        let Some(t) = crate::slots::scalar(ty) else {
+            return false;
+        };
+        let (s, now, initial) = (slot as usize, &self.slots, &self.program.initial);
+        if s < self.program.written_lens.0[t] {
+            return false;
+        }
+        let bits = |v: glam::Vec3| v.to_array().map(f32::to_bits);
+        match ty {
+            ValueType::Bool => now.bools[s] != initial.bools[s],
+            ValueType::Int => now.ints[s] != initial.ints[s],
+            ValueType::Float => now.floats[s].to_bits() != initial.floats[s].to_bits(),
+            ValueType::Vec3 => bits(now.vec3s[s]) != bits(initial.vec3s[s]),
+            ValueType::Quat => {
+                now.quats[s].to_array().map(f32::to_bits)
+                    != initial.quats[s].to_array().map(f32::to_bits)
+            }
+            ValueType::Transform => !now.transforms[s].bit_eq(&initial.transforms[s]),
+            _ => false,
         }
     }
 
+    /// Counts the host's write of slot `slot` of type `ty` (which held other bits than the
+    /// program's initial value before it when `was`) in `unwritten_changed`.
+    fn note_set(&mut self, ty: ValueType, slot: u32, was: bool) {
+        let now = self.unwritten_differs(ty, slot);
+        self.unwritten_changed = self.unwritten_changed + u32::from(now) - u32::from(was);
+    }
+
     /// Sets a `Float` variable without allocating: the per-frame path for tunables.
-    /// Ignored if the variable is not a float.
+    /// Ignored if the variable is not a float. While a variable that no instruction writes
+    /// holds other bits than its default here, this instance's batches
+    /// ([`Instance::run_forward_batch`]) copy such slots member by member instead of
+    /// keeping the program's in the thread's lanes (the same results, a little slower).
     pub fn set_float(&mut self, id: VariableId, value: f32) {
         let info = self.program.variable(id);
         if info.ty == ValueType::Float {
-            self.slots.floats[info.slot as usize] = value;
-            self.note_set(ValueType::Float, info.slot);
+            let slot = info.slot;
+            let was = self.unwritten_differs(ValueType::Float, slot);
+            self.slots.floats[slot as usize] = value;
+            self.note_set(ValueType::Float, slot, was);
         }
     }
 }
@@ -672,5 +704,69 @@ fn copy_slot(from: &Slots, to: &mut Slots, ty: ValueType, slot: u32) {
 impl fmt::Display for MissingBone {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         write!(f, "{}: unknown bone `{}`", self.location, self.name)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::ProgramBuilder;
+    use crate::program::VariableInfo;
+    use crate::tests::one_bone;
+    use strider_nodes::Op;
+
+    /// The count of unwritten slots that differ from the program's follows the host's
+    /// writes bit for bit: up when a tunable is set to another value, not again when it
+    /// is set to a third, down when it is set back; `-0.0` differs from `0.0`, a NaN equals
+    /// the same NaN; a variable an instruction writes is not counted; a rebind counts the
+    /// tunables it keeps.
+    #[test]
+    fn the_host_s_changes_to_unwritten_slots_are_counted_both_ways() {
+        let mut pb = ProgramBuilder::new("tunables");
+        let variable = |pb: &mut ProgramBuilder, name: &str, value: f32| {
+            let slot = pb.constant(&Value::Float(value), "");
+            let id = pb.variable(VariableInfo {
+                name: name.to_string(),
+                ty: ValueType::Float,
+                slot,
+                default: Value::Float(value),
+                tunable: Some((None, None)),
+                location: String::new(),
+            });
+            (id, slot)
+        };
+        // The written variable first: the slots past the last written one are those a
+        // batch can take from the program.
+        let (written, written_slot) = variable(&mut pb, "Written", 1.0);
+        let (zero, _) = variable(&mut pb, "Zero", 0.0);
+        let (nan, _) = variable(&mut pb, "Nan", f32::NAN);
+        pb.set_forward_entry(pb.here());
+        pb.emit(Op::AddF, &[written_slot, written_slot, written_slot]);
+        pb.emit(Op::End, &[]);
+        let program = Arc::new(pb.finish());
+        let mut instance = Instance::new(Arc::clone(&program), one_bone()).expect("instance");
+        let count = |i: &Instance| i.unwritten_changed;
+        assert_eq!(count(&instance), 0);
+        instance.set_float(zero, 2.0);
+        assert_eq!(count(&instance), 1);
+        instance.set_float(zero, 3.0);
+        assert_eq!(count(&instance), 1, "still one slot apart");
+        instance
+            .set_variable(zero, &Value::Float(0.0))
+            .expect("a float");
+        assert_eq!(count(&instance), 0, "set back");
+        instance.set_float(zero, -0.0);
+        assert_eq!(count(&instance), 1, "-0.0 is not 0.0's bits");
+        instance.set_float(nan, f32::NAN);
+        assert_eq!(count(&instance), 1, "the same NaN");
+        instance.set_float(nan, 1.0);
+        assert_eq!(count(&instance), 2);
+        instance.set_float(written, 5.0);
+        assert_eq!(count(&instance), 2, "an instruction writes that one");
+        instance.rebind(one_bone(), &EmptyWorld).expect("rebinds");
+        assert_eq!(count(&instance), 2, "the tunables are kept");
+        instance.set_float(nan, f32::NAN);
+        instance.set_float(zero, 0.0);
+        assert_eq!(count(&instance), 0);
     }
 }

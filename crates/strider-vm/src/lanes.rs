@@ -39,8 +39,9 @@ pub(crate) struct Lanes {
     quats: Vec<Quat>,
     transforms: Vec<Transform>,
     /// The program (`Program::id`; 0: none) whose initial values every lane holds in the
-    /// slots no instruction of it writes (each type's `written..lens`), since its last
-    /// batch loaded them and no other program's batch has run here since.
+    /// slots no instruction of it writes (each type's `written..lens`): the last batch
+    /// loaded was of that program and took them from it. 0 after a batch that copied its
+    /// members' own (one of them held other values there).
     unwritten_of: u64,
 }
 
@@ -72,6 +73,26 @@ pub(crate) struct Copies<'p> {
     pub(crate) initial: &'p Slots,
 }
 
+/// No slots at all: the initial values of [`Copies::all`], which reads none.
+#[cfg(test)]
+static NO_SLOTS: Slots = Slots {
+    bools: Vec::new(),
+    ints: Vec::new(),
+    floats: Vec::new(),
+    vec3s: Vec::new(),
+    quats: Vec::new(),
+    transforms: Vec::new(),
+    bones: Vec::new(),
+    names: Vec::new(),
+    bool_arrays: Vec::new(),
+    int_arrays: Vec::new(),
+    float_arrays: Vec::new(),
+    vec3_arrays: Vec::new(),
+    quat_arrays: Vec::new(),
+    transform_arrays: Vec::new(),
+    bone_arrays: Vec::new(),
+};
+
 impl<'p> Copies<'p> {
     /// Every slot in, every slot back (`lens` = `kept` = `written`).
     #[cfg(test)]
@@ -82,7 +103,7 @@ impl<'p> Copies<'p> {
             written: lens,
             program: 0,
             // Read only for a program's unwritten slots, of which there are none here.
-            initial: Box::leak(Box::default()),
+            initial: &NO_SLOTS,
         }
     }
 }
@@ -117,6 +138,8 @@ impl Lanes {
     pub(crate) fn load(&mut self, copies: Copies<'_>, members: &[Ctx<'_>]) {
         assert!(members.len() <= BATCH, "a batch has at most BATCH members");
         let (program, held) = (copies.program, self.unwritten_of);
+        // Until the lanes are loaded, they hold no program's values.
+        self.unwritten_of = 0;
         macro_rules! load {
             ($a:ident, $t:expr) => {{
                 let len = copies.lens.0[$t];
@@ -474,12 +497,13 @@ trait Uniform {
 /// a block is uniform when each word equals the word one item before it, which compares
 /// the whole block a vector register at a time (no branch per lane).
 macro_rules! uniform_words {
-    ($($t:ty => $w:ty),+) => {$(
-        const _: () = assert!(size_of::<$t>() % size_of::<$w>() == 0);
+    ($($t:ty => $per:literal * $w:ty),+) => {$(
+        // Exactly its words, no padding: a change of layout fails the build.
+        const _: () = assert!(size_of::<$t>() == $per * size_of::<$w>());
         impl Uniform for $t {
             #[inline(always)]
             fn uniform(block: &[Self; BATCH]) -> bool {
-                const PER: usize = size_of::<$t>() / size_of::<$w>();
+                const PER: usize = $per;
                 // SAFETY: the block's bytes are initialised words of `$w` (the items are
                 // made of them, without padding), aligned as the items are.
                 let words: &[$w; BATCH * PER] = unsafe { &*block.as_ptr().cast() };
@@ -491,7 +515,7 @@ macro_rules! uniform_words {
         }
     )+};
 }
-uniform_words!(f32 => u32, i32 => u32, Vec3 => u32, Quat => u32, bool => u8);
+uniform_words!(f32 => 1 * u32, i32 => 1 * u32, Vec3 => 3 * u32, Quat => 4 * u32, bool => 1 * u8);
 
 impl Uniform for Transform {
     /// Field by field: a transform has padding, which is not compared.

@@ -240,9 +240,9 @@ pub struct Program {
     /// copy (see [`crate::lanes::Copies`]). `written_lens` for a program without slot
     /// sharing.
     pub(crate) kept_lens: ScalarLens,
-    /// This program's number, unique among the programs built in this process (a clone
-    /// has its original's: the same code): a batch's lanes remember whose unwritten slots
-    /// they hold (see [`crate::lanes::Copies`]).
+    /// This program's number, unique among the programs [`ProgramBuilder`] finishes in this
+    /// process (a clone keeps it: the same slots and initial values): a batch's lanes
+    /// remember whose unwritten slots they hold (see [`crate::lanes::Copies`]).
     pub(crate) id: u64,
     /// Whether an instruction traces the world: only then does a run need the character's
     /// world transform as matrices.
