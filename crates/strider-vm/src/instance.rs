@@ -1,6 +1,7 @@
 //! [`Instance`]: one character's state for a shared [`Program`].
 
 use crate::exec::{self, Ctx};
+use crate::lanes::SameBits;
 use crate::native::NativeProgram;
 use crate::program::{BoneSlot, Program, VariableId};
 use crate::slots::Slots;
@@ -620,17 +621,13 @@ impl Instance {
         if s < self.program.written_lens.0[t] {
             return false;
         }
-        let bits = |v: glam::Vec3| v.to_array().map(f32::to_bits);
         match ty {
-            ValueType::Bool => now.bools[s] != initial.bools[s],
-            ValueType::Int => now.ints[s] != initial.ints[s],
-            ValueType::Float => now.floats[s].to_bits() != initial.floats[s].to_bits(),
-            ValueType::Vec3 => bits(now.vec3s[s]) != bits(initial.vec3s[s]),
-            ValueType::Quat => {
-                now.quats[s].to_array().map(f32::to_bits)
-                    != initial.quats[s].to_array().map(f32::to_bits)
-            }
-            ValueType::Transform => !now.transforms[s].bit_eq(&initial.transforms[s]),
+            ValueType::Bool => !now.bools[s].same_bits(&initial.bools[s]),
+            ValueType::Int => !now.ints[s].same_bits(&initial.ints[s]),
+            ValueType::Float => !now.floats[s].same_bits(&initial.floats[s]),
+            ValueType::Vec3 => !now.vec3s[s].same_bits(&initial.vec3s[s]),
+            ValueType::Quat => !now.quats[s].same_bits(&initial.quats[s]),
+            ValueType::Transform => !now.transforms[s].same_bits(&initial.transforms[s]),
             _ => false,
         }
     }

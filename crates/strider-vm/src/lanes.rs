@@ -230,13 +230,12 @@ unsafe fn select_items<T: Copy>(
     y: *mut [T; BATCH],
     out: *mut [T; BATCH],
 ) {
-    // A bool is one byte, 0 or 1: the conditions as one 128-bit word.
-    match u128::from_le_bytes(c.map(u8::from)) {
+    match bools_agree(c, BATCH) {
         // SAFETY: the caller's contract; `copy` allows the blocks to be one.
-        0 => return unsafe { std::ptr::copy(y, out, 1) },
+        Some(false) => return unsafe { std::ptr::copy(y, out, 1) },
         // SAFETY: as above.
-        0x0101_0101_0101_0101_0101_0101_0101_0101 => return unsafe { std::ptr::copy(x, out, 1) },
-        _ => {}
+        Some(true) => return unsafe { std::ptr::copy(x, out, 1) },
+        None => {}
     }
     let (x, y, out) = (x.cast::<T>(), y.cast::<T>(), out.cast::<T>());
     for (m, &c) in c.iter().enumerate() {
@@ -453,7 +452,8 @@ fn transforms_relative(
 
 /// Bit-for-bit equality of lane values (`-0.0` differs from `0.0`; a NaN equals only the
 /// same NaN): two members with equal inputs in this sense get equal results from a kernel.
-trait SameBits {
+pub(crate) trait SameBits {
+    /// Whether `self` and `other` have the same bits (every component's).
     fn same_bits(&self, other: &Self) -> bool;
 }
 
@@ -554,7 +554,13 @@ fn disjoint<T, U>(a: *mut [T; BATCH], b: *mut [U; BATCH]) -> bool {
 #[inline(always)]
 pub(crate) unsafe fn agree(lane0: Bases, slot: u32, n: usize) -> Option<bool> {
     // SAFETY: in the lanes by the caller's contract.
-    let held: [bool; BATCH] = unsafe { *block(lane0.bools, slot) };
+    bools_agree(unsafe { *block(lane0.bools, slot) }, n)
+}
+
+/// Whether the first `n` of `held` are all `true` (`Some(true)`), all `false`
+/// (`Some(false)`) or differ (`None`).
+#[inline(always)]
+fn bools_agree(held: [bool; BATCH], n: usize) -> Option<bool> {
     // A bool is one byte, 0 or 1: the block is tested as one 128-bit word, its first `n`
     // bytes kept.
     let word = u128::from_le_bytes(held.map(u8::from));
