@@ -144,6 +144,37 @@ pub(crate) fn bone_transform(pose: &mut Pose, bone: i32, space: i32, initial: bo
     }
 }
 
+/// `SetTransform`: bone `bone`'s transform blended towards `value` by `weight` (0 keeps
+/// it, 1 sets it), global (rig space, children following when `propagate`) when `space`
+/// is 0, else local (parent space).
+#[inline(always)]
+pub(crate) fn set_transform(
+    pose: &mut Pose,
+    bone: BoneIndex,
+    value: Transform,
+    space: i32,
+    propagate: bool,
+    weight: f32,
+) {
+    if space == 0 {
+        let value = k::blend_transform(pose.global(bone), value, weight);
+        pose.set_global(bone, value, propagate);
+    } else {
+        let value = k::blend_transform(pose.local(bone), value, weight);
+        pose.set_local(bone, value);
+    }
+}
+
+/// `GetParent`: the bone slot value of bone `bone`'s parent (a bone slot's value), -1 for
+/// a root or no bone.
+#[inline(always)]
+pub(crate) fn parent_of(pose: &Pose, bone: i32) -> i32 {
+    match self::bone(pose, bone) {
+        Some(bi) => pose.skeleton().parent(bi).map_or(-1, |p| p.0 as i32),
+        None => -1,
+    }
+}
+
 fn color(v: Vec3) -> DebugColor {
     DebugColor([v.x, v.y, v.z, 1.0])
 }
@@ -655,22 +686,10 @@ macro_rules! execute {
             Op::GetTransform => $each!(get_transform!(0)),
             Op::SetTransform => $each!({
                 if let Some(bi) = bone($cx.pose, $s.bones[at!(0)]) {
-                    let weight = f!(4);
-                    if i!(2) == 0 {
-                        let value = k::blend_transform($cx.pose.global(bi), t!(1), weight);
-                        $cx.pose.set_global(bi, value, b!(3));
-                    } else {
-                        let value = k::blend_transform($cx.pose.local(bi), t!(1), weight);
-                        $cx.pose.set_local(bi, value);
-                    }
+                    set_transform($cx.pose, bi, t!(1), i!(2), b!(3), f!(4));
                 }
             }),
-            Op::GetParent => $each!({
-                $s.bones[at!(1)] = match bone($cx.pose, $s.bones[at!(0)]) {
-                    Some(bi) => $cx.pose.skeleton().parent(bi).map_or(-1, |p| p.0 as i32),
-                    None => -1,
-                };
-            }),
+            Op::GetParent => $each!($s.bones[at!(1)] = parent_of($cx.pose, $s.bones[at!(0)])),
             Op::FindBones => $each!({
                 let out = &mut $s.bone_arrays[at!(3)];
                 match bone($cx.pose, $s.bones[at!(0)]) {
@@ -1220,6 +1239,12 @@ fn run_group<const LANES: bool>(
     // Member 0's lane; member `m`'s is `m` items on in every array.
     let lane0 = lanes.bases();
     let dts: [f32; BATCH] = std::array::from_fn(|m| members.get(m).map_or(0.0, |cx| cx.dt));
+    // The world the whole batch traces, if it shares one (the traces ask it once).
+    let world = if LANES {
+        crate::per_member::shared_world(members)
+    } else {
+        None
+    };
     // Where each member outside the group is (`END` once it has ended); the group's members
     // are all at `pc`.
     let mut pcs = [END; BATCH];
@@ -1330,23 +1355,25 @@ fn run_group<const LANES: bool>(
                 }
                 // SAFETY: as above; `members` is the batch the lanes were loaded from.
                 Op::SphereTrace
-                    if unsafe { crate::per_member::sphere_traces(o, lane0, members) } =>
+                    if unsafe { crate::per_member::sphere_traces(o, lane0, world, members) } =>
                 {
                     pc += 1;
                     continue;
                 }
                 // SAFETY: as above.
-                Op::LineTrace if unsafe { crate::per_member::line_traces(o, lane0, members) } => {
+                Op::LineTrace
+                    if unsafe { crate::per_member::line_traces(o, lane0, world, members) } =>
+                {
                     pc += 1;
                     continue;
                 }
                 // SAFETY: as above.
-                Op::TwoBoneIK if unsafe { crate::per_member::two_bone_iks(o, lane0, members) } => {
+                Op::TwoBoneIK if unsafe { crate::per_member::two_bone_iks(o, &lane0, members) } => {
                     pc += 1;
                     continue;
                 }
                 // SAFETY: as above.
-                _ if unsafe { crate::per_member::run_per_member(op, o, lane0, members) } => {
+                _ if unsafe { crate::per_member::run_per_member(op, o, &lane0, members) } => {
                     pc += 1;
                     continue;
                 }

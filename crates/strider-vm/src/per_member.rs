@@ -25,8 +25,8 @@
 #![allow(unsafe_code)]
 
 use crate::exec::{
-    BATCH, Bases, Ctx, array_get, array_set, axes_key, bone, bone_transform, read_hit, trace_ends,
-    trace_outputs, trace_query,
+    BATCH, Bases, Ctx, array_get, array_set, axes_key, bone, bone_transform, parent_of, read_hit,
+    trace_ends, trace_outputs, trace_query,
 };
 use crate::lanes::{block, break_transforms};
 use glam::{Quat, Vec3};
@@ -46,8 +46,9 @@ fn item0<T>(base: *mut T, slot: u32) -> *mut T {
 /// Runs `op` (operands `o`) for each of the batch's `members` in order, on the lanes whose
 /// member 0 items start at `lane0`, when it is one of the ops that read an element of a
 /// member's array (`ArrayAt` of any element type but bones, alone or followed by
-/// `BreakTransform`), write one (`ArraySetAt`, the same types), or read a bone's transform
-/// (`GetTransform`, alone or followed by `BreakTransform`); returns true. A fused
+/// `BreakTransform`), write one (`ArraySetAt`, the same types), read a bone's transform
+/// (`GetTransform`, alone or followed by `BreakTransform`) or find a bone's parent
+/// (`GetParent`, bone slots to bone slots); returns true. A fused
 /// `BreakTransform` runs after every member's read, on all the lanes at once. Returns
 /// false, doing nothing, for every other op.
 ///
@@ -61,9 +62,12 @@ fn item0<T>(base: *mut T, slot: u32) -> *mut T {
 pub(crate) unsafe fn run_per_member(
     op: Op,
     o: &[u32],
-    lane0: Bases,
+    lane0: &Bases,
     members: &mut [Ctx<'_>],
 ) -> bool {
+    // Taken by reference: a copy of the six pointers, made for every call, cost more than
+    // the few the op reads.
+    let lane0 = *lane0;
     debug_assert!(members.len() <= BATCH, "a batch has at most BATCH members");
     // Member 0's item of slot operand `$k` of scalar array `$a`.
     macro_rules! lane {
@@ -152,6 +156,13 @@ pub(crate) unsafe fn run_per_member(
             // SAFETY: as above; the break's operands start at operand 4.
             unsafe { break_transforms(&o[4..], lane0) };
         }
+        Op::GetParent => {
+            // Operands: bone, parent (bone slots, each member's own).
+            let (child, parent) = (o[0] as usize, o[1] as usize);
+            for cx in members.iter_mut() {
+                cx.slots.bones[parent] = parent_of(cx.pose, cx.slots.bones[child]);
+            }
+        }
         _ => return false,
     }
     true
@@ -165,10 +176,15 @@ pub(crate) unsafe fn run_per_member(
 /// # Safety
 /// As [`run_per_member`], with `o` a `LineTrace`'s operands.
 #[inline(always)]
-pub(crate) unsafe fn line_traces(o: &[u32], lane0: Bases, members: &[Ctx<'_>]) -> bool {
+pub(crate) unsafe fn line_traces(
+    o: &[u32],
+    lane0: Bases,
+    world: Option<&dyn WorldQuery>,
+    members: &[Ctx<'_>],
+) -> bool {
     // SAFETY: the caller's contract; a line trace's outputs start at operand 2.
     unsafe {
-        batch_traces(o, 2, lane0, members, |cx, _, s, e| {
+        batch_traces(o, 2, lane0, world, members, |cx, _, s, e| {
             trace_ends(&cx.to_world_matrix, s, e)
         })
     }
@@ -178,18 +194,24 @@ pub(crate) unsafe fn line_traces(o: &[u32], lane0: Bases, members: &[Ctx<'_>]) -
 /// batch with one question to the world
 /// ([`WorldQuery::sphere_traces`](strider_core::WorldQuery::sphere_traces)), which answers each
 /// member's trace as its own `sphere_trace` would: every member's slots end as the
-/// handler leaves them. Returns false, doing nothing, when the members do not all trace
-/// the same world (each then asks its own, through the handler). Inlined into the batch
-/// loop, so that it runs on the loop's machine code (`crate::batch_code`).
+/// handler leaves them. `world` is the world every member traces ([`shared_world`]);
+/// `None`, when they do not all trace the same one, returns false and does nothing (each
+/// then asks its own, through the handler). Inlined into the batch loop, so that it runs
+/// on the loop's machine code (`crate::batch_code`).
 ///
 /// # Safety
 /// As [`run_per_member`], with `o` a `SphereTrace`'s operands.
 #[inline(always)]
-pub(crate) unsafe fn sphere_traces(o: &[u32], lane0: Bases, members: &[Ctx<'_>]) -> bool {
+pub(crate) unsafe fn sphere_traces(
+    o: &[u32],
+    lane0: Bases,
+    world: Option<&dyn WorldQuery>,
+    members: &[Ctx<'_>],
+) -> bool {
     let radius = item0(lane0.floats, o[2]);
     // SAFETY: the caller's contract; a sphere trace's outputs start at operand 3.
     unsafe {
-        batch_traces(o, 3, lane0, members, |cx, m, s, e| {
+        batch_traces(o, 3, lane0, world, members, |cx, m, s, e| {
             // SAFETY: a slot of the program's lanes, `m < BATCH`.
             trace_query(&cx.to_world_matrix, s, e, *radius.add(m))
         })
@@ -211,7 +233,8 @@ pub(crate) unsafe fn sphere_traces(o: &[u32], lane0: Bases, members: &[Ctx<'_>])
 /// # Safety
 /// As [`run_per_member`], with `o` a `TwoBoneIK`'s operands.
 #[inline(never)]
-pub(crate) unsafe fn two_bone_iks(o: &[u32], lane0: Bases, members: &mut [Ctx<'_>]) -> bool {
+pub(crate) unsafe fn two_bone_iks(o: &[u32], lane0: &Bases, members: &mut [Ctx<'_>]) -> bool {
+    let lane0 = *lane0;
     let (primary, secondary) = (item0(lane0.vec3s, o[4]), item0(lane0.vec3s, o[5]));
     // SAFETY: slots of the program's lanes (the caller's contract), `m < BATCH`.
     let (p0, s0) = unsafe { (*primary, *secondary) };
@@ -390,6 +413,17 @@ fn solve_chains(lanes: &mut ChainLanes<BATCH>, axes: &BoneAxes) {
     lanes.relate();
 }
 
+/// The world every one of `members` traces, `None` when they do not all trace the same
+/// one (or there are none): found once for a batch, rather than at each of its traces. The
+/// same world is the same object and type: two worlds of no size may share an address.
+pub(crate) fn shared_world<'w>(members: &[Ctx<'w>]) -> Option<&'w dyn WorldQuery> {
+    let world = members.first()?.world;
+    members
+        .iter()
+        .all(|cx| std::ptr::eq(cx.world, world))
+        .then_some(world)
+}
+
 /// A question the world answers for a batch at once: [`LineQuery`] or [`SphereQuery`].
 trait BatchQuery: Copy + Default {
     /// The world's answers to `queries`, into `hits`.
@@ -414,27 +448,25 @@ impl BatchQuery for SphereQuery {
 /// distance) for the whole batch: each member's question (`query` of its context, its
 /// index, and its ends in rig space) asked of the world at once, and each answer mapped
 /// back to the member's slots as the handler maps it. Returns false, doing nothing, when
-/// the members do not all trace the same world.
+/// there is no `world` the members share ([`shared_world`]).
 ///
 /// # Safety
-/// As [`run_per_member`], with `o` a trace's operands, its outputs from `outs` on.
+/// As [`run_per_member`], with `o` a trace's operands, its outputs from `outs` on; `world`
+/// the members' own world.
 #[inline(always)]
 unsafe fn batch_traces<Q: BatchQuery>(
     o: &[u32],
     outs: usize,
     lane0: Bases,
+    world: Option<&dyn WorldQuery>,
     members: &[Ctx<'_>],
     query: impl Fn(&Ctx<'_>, usize, Vec3, Vec3) -> Q,
 ) -> bool {
     // One question to the world for the batch (its members share it in a crowd's
-    // batch; else each asks its own, as the handler does). The same world is the same
-    // object and type: two worlds of no size may share an address.
-    let Some(world) = members.first().map(|cx| cx.world) else {
-        return true;
-    };
-    if !members.iter().all(|cx| std::ptr::eq(cx.world, world)) {
+    // batch; else each asks its own, as the handler does).
+    let Some(world) = world else {
         return false;
-    }
+    };
     let (start, end) = (item0(lane0.vec3s, o[0]), item0(lane0.vec3s, o[1]));
     let mut queries = [Q::default(); BATCH];
     for (m, (cx, q)) in members.iter().zip(&mut queries).enumerate() {
@@ -566,7 +598,7 @@ mod tests {
         // SAFETY: the operands are slots below `SLOTS` of the lanes, and arrays and bone
         // slots below `SLOTS` of every member.
         let batched =
-            |lane0: Bases, cxs: &mut [Ctx<'_>]| unsafe { run_per_member(op, o, lane0, cxs) };
+            |lane0: Bases, cxs: &mut [Ctx<'_>]| unsafe { run_per_member(op, o, &lane0, cxs) };
         let slots = (0..n).map(member_slots).collect();
         run_members(op, o, slots, batch.then_some(&batched))
     }
@@ -673,6 +705,12 @@ mod tests {
                 vec![bone, 2, 3, 4, 4, 1, 1, 1],
             ));
         }
+        // A bone's parent into another bone slot, and into its own (every member's bones
+        // name a root, a child, a grandchild, no bone and one past the skeleton's end).
+        for bone in 0..5 {
+            cases.push((Op::GetParent, vec![bone, (bone + 1) % 5]));
+            cases.push((Op::GetParent, vec![bone, bone]));
+        }
         for (op, operands) in cases {
             // As many operands as the op has.
             let layout = op.operands().expect("a layout");
@@ -686,7 +724,7 @@ mod tests {
                 let batched = batched.0;
                 // The batch did something: some member's slots changed (a test that
                 // compares two runs that do nothing would pass).
-                if matches!(op, Op::ArrayAt(_) | Op::GetTransform) {
+                if matches!(op, Op::ArrayAt(_) | Op::GetTransform | Op::GetParent) {
                     let before: Vec<Slots> = (0..n).map(member_slots).collect();
                     let changed = batched.iter().zip(&before).any(|(a, b)| !a.bit_eq(b));
                     assert!(changed || n == 1, "{op:?} {operands:?}: nothing changed");
@@ -785,8 +823,8 @@ mod tests {
             // SAFETY: the operands are slots below `SLOTS` of the lanes loaded above.
             let ran = unsafe {
                 match op {
-                    Op::LineTrace => line_traces(o, lanes.bases(), &cxs),
-                    _ => sphere_traces(o, lanes.bases(), &cxs),
+                    Op::LineTrace => line_traces(o, lanes.bases(), shared_world(&cxs), &cxs),
+                    _ => sphere_traces(o, lanes.bases(), shared_world(&cxs), &cxs),
                 }
             };
             lanes.store(Copies::all(&lens), &mut cxs);
@@ -874,7 +912,7 @@ mod tests {
             // SAFETY: the operands are slots below `SLOTS` of the lanes, and bone slots
             // below `SLOTS` of every member.
             let batched =
-                |lane0: Bases, cxs: &mut [Ctx<'_>]| unsafe { two_bone_iks(&o, lane0, cxs) };
+                |lane0: Bases, cxs: &mut [Ctx<'_>]| unsafe { two_bone_iks(&o, &lane0, cxs) };
             run_members(Op::TwoBoneIK, &o, slots, batch.then_some(&batched))
         };
         // Largest first, on one thread: the smaller batches run on the thread's chain lanes
@@ -913,7 +951,6 @@ mod tests {
             Op::ArrayAt(Elem::Bone),
             Op::ArraySetAt(Elem::Bone),
             Op::AddF,
-            Op::GetParent,
             Op::SetTransform,
             Op::LineTrace,
             Op::Copy(ValueType::Float),
