@@ -486,7 +486,7 @@ impl SameBits for i32 {
 }
 
 /// Blocks whose lanes can be checked all alike at once ([`Uniform::uniform`]).
-trait Uniform {
+pub(crate) trait Uniform {
     /// Whether every lane of `block` holds lane 0's bits.
     fn uniform(block: &[Self; BATCH]) -> bool
     where

@@ -28,7 +28,7 @@ use crate::exec::{
     BATCH, Bases, Ctx, array_get, array_set, axes_key, bone, bone_transform, parent_of, read_hit,
     trace_ends, trace_outputs, trace_query,
 };
-use crate::lanes::{block, break_transforms};
+use crate::lanes::{Uniform, block, break_transforms};
 use glam::{Quat, Vec3};
 use strider_core::{LineQuery, SphereQuery, TraceHit, Transform, WorldQuery};
 use strider_nodes::kernels::two_bone_ik::{
@@ -130,12 +130,49 @@ pub(crate) unsafe fn run_per_member(
                 lane!(bools, 2),
                 lane!(transforms, 3),
             );
-            for (m, cx) in members.iter_mut().enumerate() {
-                // SAFETY: as above.
-                let (space, initial) = unsafe { (*space.add(m), *initial.add(m)) };
+            // Member `m`'s read, its space and pose given.
+            let read = |m: usize, cx: &mut Ctx<'_>, space: i32, initial: bool| {
                 let x = bone_transform(cx.pose, cx.slots.bones[bone], space, initial);
                 // SAFETY: as above.
                 unsafe { *out.add(m) = x };
+            };
+            // SAFETY: as above; a block is `BATCH` items.
+            let (spaces, initials) = unsafe {
+                (
+                    &*space.cast::<[i32; BATCH]>(),
+                    &*initial.cast::<[bool; BATCH]>(),
+                )
+            };
+            if members.len() == BATCH && Uniform::uniform(spaces) && Uniform::uniform(initials) {
+                // One space and pose for the batch (as constants give): the choice is made
+                // once, each loop reads one of the four.
+                let (space, initial) = (spaces[0], initials[0]);
+                match (space == 0, initial) {
+                    (true, false) => {
+                        for (m, cx) in members.iter_mut().enumerate() {
+                            read(m, cx, 0, false);
+                        }
+                    }
+                    (false, false) => {
+                        for (m, cx) in members.iter_mut().enumerate() {
+                            read(m, cx, space, false);
+                        }
+                    }
+                    (true, true) => {
+                        for (m, cx) in members.iter_mut().enumerate() {
+                            read(m, cx, 0, true);
+                        }
+                    }
+                    (false, true) => {
+                        for (m, cx) in members.iter_mut().enumerate() {
+                            read(m, cx, space, true);
+                        }
+                    }
+                }
+            } else {
+                for (m, cx) in members.iter_mut().enumerate() {
+                    read(m, cx, spaces[m], initials[m]);
+                }
             }
         }};
     }
@@ -729,6 +766,41 @@ mod tests {
                     let changed = batched.iter().zip(&before).any(|(a, b)| !a.bit_eq(b));
                     assert!(changed || n == 1, "{op:?} {operands:?}: nothing changed");
                 }
+            }
+        }
+    }
+
+    #[test]
+    fn a_batch_reading_in_one_space_reads_each_member_s_own_bone() {
+        // Every member reads in the same space, of the pose or the rest pose (the choice a
+        // batch makes once); each reads its own bone slot of its own pose.
+        for (space, initial) in [(0, false), (1, false), (0, true), (7, true)] {
+            let slots = || {
+                (0..BATCH)
+                    .map(|m| {
+                        let mut s = member_slots(m);
+                        (s.ints[2], s.bools[3]) = (space, initial);
+                        s
+                    })
+                    .collect::<Vec<_>>()
+            };
+            for op in [Op::GetTransform, Op::GetTransformBreakTransform] {
+                let operands = match op {
+                    Op::GetTransform => vec![1, 2, 3, 4],
+                    _ => vec![1, 2, 3, 4, 4, 1, 1, 2],
+                };
+                let o = window(&operands);
+                // SAFETY: as in `run`.
+                let batched = |lane0: Bases, cxs: &mut [Ctx<'_>]| unsafe {
+                    run_per_member(op, &o, &lane0, cxs)
+                };
+                let mut batch = run_members(op, &o, slots(), Some(&batched)).expect("batched");
+                let mut alone = run_members(op, &o, slots(), None).expect("the handler");
+                let what = format!("{op:?} in space {space}, initial {initial}");
+                same_members(&mut batch, &mut alone, &what);
+                // The members read apart: bones and poses of their own.
+                let read: Vec<_> = batch.0.iter().map(|s| s.transforms[4].to_bits()).collect();
+                assert!(read.iter().any(|r| *r != read[0]), "{what}: all alike");
             }
         }
     }
