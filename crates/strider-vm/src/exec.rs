@@ -285,8 +285,15 @@ pub(crate) fn trace_outputs(
                 .into(),
             distance,
         ),
-        None => (false, end, Vec3::Z, start.distance(end)),
+        None => trace_miss(start, end),
     }
+}
+
+/// A trace's outputs (hit, point, normal, distance; rig space) for a miss of the trace from
+/// `start` to `end`: the end, `+Z` and the whole length.
+#[inline(always)]
+pub(crate) fn trace_miss(start: Vec3, end: Vec3) -> (bool, Vec3, Vec3, f32) {
+    (false, end, Vec3::Z, start.distance(end))
 }
 
 /// A two-bone IK's local axes (primary, secondary) as bits: equal keys are the same axes,
@@ -1245,6 +1252,8 @@ fn run_group<const LANES: bool>(
     } else {
         None
     };
+    // The members' matrices from world space, by entry, read at the batch's first trace.
+    let mut from_world = crate::per_member::FromWorldColumns::new();
     // Where each member outside the group is (`END` once it has ended); the group's members
     // are all at `pc`.
     let mut pcs = [END; BATCH];
@@ -1355,14 +1364,18 @@ fn run_group<const LANES: bool>(
                 }
                 // SAFETY: as above; `members` is the batch the lanes were loaded from.
                 Op::SphereTrace
-                    if unsafe { crate::per_member::sphere_traces(o, lane0, world, members) } =>
+                    if unsafe {
+                        crate::per_member::sphere_traces(o, lane0, world, &mut from_world, members)
+                    } =>
                 {
                     pc += 1;
                     continue;
                 }
                 // SAFETY: as above.
                 Op::LineTrace
-                    if unsafe { crate::per_member::line_traces(o, lane0, world, members) } =>
+                    if unsafe {
+                        crate::per_member::line_traces(o, lane0, world, &mut from_world, members)
+                    } =>
                 {
                     pc += 1;
                     continue;

@@ -26,7 +26,7 @@
 
 use crate::exec::{
     BATCH, Bases, Ctx, array_get, array_set, axes_key, bone, bone_transform, parent_of, read_hit,
-    trace_ends, trace_outputs, trace_query,
+    trace_ends, trace_miss, trace_outputs, trace_query,
 };
 use crate::lanes::{Uniform, block, break_transforms};
 use glam::{Quat, Vec3};
@@ -217,11 +217,12 @@ pub(crate) unsafe fn line_traces(
     o: &[u32],
     lane0: Bases,
     world: Option<&dyn WorldQuery>,
+    frames: &mut FromWorldColumns,
     members: &[Ctx<'_>],
 ) -> bool {
     // SAFETY: the caller's contract; a line trace's outputs start at operand 2.
     unsafe {
-        batch_traces(o, 2, lane0, world, members, |cx, _, s, e| {
+        batch_traces(o, 2, lane0, world, frames, members, |cx, _, s, e| {
             trace_ends(&cx.to_world_matrix, s, e)
         })
     }
@@ -243,12 +244,13 @@ pub(crate) unsafe fn sphere_traces(
     o: &[u32],
     lane0: Bases,
     world: Option<&dyn WorldQuery>,
+    frames: &mut FromWorldColumns,
     members: &[Ctx<'_>],
 ) -> bool {
     let radius = item0(lane0.floats, o[2]);
     // SAFETY: the caller's contract; a sphere trace's outputs start at operand 3.
     unsafe {
-        batch_traces(o, 3, lane0, world, members, |cx, m, s, e| {
+        batch_traces(o, 3, lane0, world, frames, members, |cx, m, s, e| {
             // SAFETY: a slot of the program's lanes, `m < BATCH`.
             trace_query(&cx.to_world_matrix, s, e, *radius.add(m))
         })
@@ -496,6 +498,7 @@ unsafe fn batch_traces<Q: BatchQuery>(
     outs: usize,
     lane0: Bases,
     world: Option<&dyn WorldQuery>,
+    frames: &mut FromWorldColumns,
     members: &[Ctx<'_>],
     query: impl Fn(&Ctx<'_>, usize, Vec3, Vec3) -> Q,
 ) -> bool {
@@ -520,16 +523,144 @@ unsafe fn batch_traces<Q: BatchQuery>(
         item0(lane0.vec3s, o[outs + 2]),
         item0(lane0.floats, o[outs + 3]),
     );
-    for (m, (cx, answer)) in members.iter().zip(&answers).enumerate() {
-        // SAFETY: as above. The ends are read again rather than kept from the first loop
-        // (which measured slower); a member's outputs, which may share its inputs' slots,
-        // are written after, and other members' items lie apart.
-        let (s, e) = unsafe { (*start.add(m), *end.add(m)) };
-        let outs = trace_outputs(read_hit(answer), s, e, &cx.from_world_matrix);
-        // SAFETY: as above.
-        unsafe { (*hit.add(m), *point.add(m), *normal.add(m), *distance.add(m)) = outs };
+    if !COLUMNS_MATCH_GLAM {
+        for (m, (cx, answer)) in members.iter().zip(&answers).enumerate() {
+            // SAFETY: as above. A member's outputs, which may share its inputs' slots, are
+            // written after its ends are read, and other members' items lie apart.
+            let (s, e) = unsafe { (*start.add(m), *end.add(m)) };
+            let outs = trace_outputs(read_hit(answer), s, e, &cx.from_world_matrix);
+            // SAFETY: as above.
+            unsafe { (*hit.add(m), *point.add(m), *normal.add(m), *distance.add(m)) = outs };
+        }
+        return true;
+    }
+    let found = hits_in_rig_space(&answers, frames.of(members));
+    for m in 0..n {
+        // SAFETY: as above; the ends are read (for a miss) before the member's outputs,
+        // which may share their slots, are written.
+        unsafe {
+            let outs = match found.hit[m] {
+                true => (
+                    true,
+                    Vec3::new(found.point[0][m], found.point[1][m], found.point[2][m]),
+                    Vec3::new(found.normal[0][m], found.normal[1][m], found.normal[2][m]),
+                    found.distance[m],
+                ),
+                false => trace_miss(*start.add(m), *end.add(m)),
+            };
+            (*hit.add(m), *point.add(m), *normal.add(m), *distance.add(m)) = outs;
+        }
     }
     true
+}
+
+/// Whether [`hits_in_rig_space`] computes with glam's operations in glam's order, so that
+/// its answers are the handler's ([`trace_outputs`]) bit for bit: glam's SSE2 code, whose
+/// products and sums are rounded one at a time, as the columns' are. Elsewhere each member
+/// maps its own answer.
+const COLUMNS_MATCH_GLAM: bool = cfg!(target_arch = "x86_64");
+
+/// Each member's `from_world_matrix`, one array per entry (the x, y and z axes and the
+/// translation, x, y and z of each): read off a batch's members at its first trace, for
+/// all of its traces ([`hits_in_rig_space`]).
+pub(crate) struct FromWorldColumns {
+    /// Whether `entries` holds the batch's matrices.
+    filled: bool,
+    entries: [[f32; BATCH]; 12],
+}
+
+impl FromWorldColumns {
+    /// None read yet.
+    pub(crate) const fn new() -> Self {
+        Self {
+            filled: false,
+            entries: [[0.0; BATCH]; 12],
+        }
+    }
+
+    /// The matrices of `members` (the batch these columns are for), read on the first call.
+    #[inline(always)]
+    fn of(&mut self, members: &[Ctx<'_>]) -> &[[f32; BATCH]; 12] {
+        if !self.filled {
+            for (m, cx) in members.iter().enumerate() {
+                let a = &cx.from_world_matrix;
+                let columns = [
+                    a.matrix3.x_axis,
+                    a.matrix3.y_axis,
+                    a.matrix3.z_axis,
+                    a.translation,
+                ];
+                for (c, v) in columns.into_iter().enumerate() {
+                    for (k, x) in v.to_array().into_iter().enumerate() {
+                        self.entries[3 * c + k][m] = x;
+                    }
+                }
+            }
+            self.filled = true;
+        }
+        &self.entries
+    }
+}
+
+/// The world's answers to a batch's traces, in rig space, one array per component.
+struct FoundColumns {
+    /// Whether the member's trace hit (an answer with every component finite).
+    hit: [bool; BATCH],
+    /// Point and unit normal, rig space (for a hit).
+    point: [[f32; BATCH]; 3],
+    normal: [[f32; BATCH]; 3],
+    /// Distance travelled to the hit, as the world gave it.
+    distance: [f32; BATCH],
+}
+
+/// The `answers` (world space) mapped to rig space by the members' matrices `from_world`
+/// ([`FromWorldColumns`]) as [`trace_outputs`] maps a hit, every member at once: the point
+/// through the matrix, the normal through its 3×3 part and normalised (zero when it has
+/// no length), each product and sum in glam's order (`Mat3A * Vec3A`: x axis times x, plus
+/// y axis times y, plus z axis times z; a length the square root of `(x² + y²) + z²`,
+/// normalised by its reciprocal). A hit with a component that is not finite is a miss, as
+/// [`read_hit`] reads it; lanes past the answers are misses.
+#[inline(always)]
+fn hits_in_rig_space(
+    answers: &[Option<TraceHit>; BATCH],
+    from_world: &[[f32; BATCH]; 12],
+) -> FoundColumns {
+    let mut given = [false; BATCH];
+    let (mut p, mut v, mut d) = ([[0.0f32; BATCH]; 3], [[0.0f32; BATCH]; 3], [0.0f32; BATCH]);
+    for (m, answer) in answers.iter().enumerate() {
+        if let Some(h) = answer {
+            given[m] = true;
+            [p[0][m], p[1][m], p[2][m]] = h.point.to_array();
+            [v[0][m], v[1][m], v[2][m]] = h.normal.to_array();
+            d[m] = h.distance;
+        }
+    }
+    let f = from_world;
+    let mut found = FoundColumns {
+        hit: [false; BATCH],
+        point: [[0.0; BATCH]; 3],
+        normal: [[0.0; BATCH]; 3],
+        distance: d,
+    };
+    for k in 0..BATCH {
+        let (x, y, z) = (p[0][k], p[1][k], p[2][k]);
+        let (nx, ny, nz) = (v[0][k], v[1][k], v[2][k]);
+        let finite = [x, y, z, nx, ny, nz, d[k]]
+            .iter()
+            .fold(true, |ok, c| ok & c.is_finite());
+        found.hit[k] = given[k] & finite;
+        for c in 0..3 {
+            found.point[c][k] = ((f[c][k] * x + f[3 + c][k] * y) + f[6 + c][k] * z) + f[9 + c][k];
+        }
+        let a = (f[0][k] * nx + f[3][k] * ny) + f[6][k] * nz;
+        let b = (f[1][k] * nx + f[4][k] * ny) + f[7][k] * nz;
+        let c = (f[2][k] * nx + f[5][k] * ny) + f[8][k] * nz;
+        let rcp = 1.0 / ((a * a + b * b) + c * c).sqrt();
+        let unit = rcp.is_finite() & (rcp > 0.0);
+        let normal = [a * rcp, b * rcp, c * rcp].map(|x| if unit { x } else { 0.0 });
+        [found.normal[0][k], found.normal[1][k], found.normal[2][k]] = normal;
+    }
+    found
 }
 
 #[cfg(test)]
@@ -806,12 +937,14 @@ mod tests {
     }
 
     /// A world of the plane z = 0 that counts the batches it is asked: a sphere that
-    /// starts below it (by its radius) hits at the start, one that ends above it misses,
-    /// and one that starts left of x = −1 gets a NaN normal (which the trace reads as a
-    /// miss). A line trace is a sphere trace of radius 0.
+    /// starts below it (by its radius) hits at the start, with a normal that depends on
+    /// where (zero right of x = 6), and one that ends above it misses. A hit left of
+    /// x = −1 has a NaN normal (which the trace reads as a miss), and is counted. A line trace is a sphere trace of radius 0.
     #[derive(Default)]
     struct Plane {
         batches: std::cell::Cell<usize>,
+        /// How many hits it gave with a NaN normal.
+        nans: std::cell::Cell<usize>,
     }
 
     impl strider_core::WorldQuery for Plane {
@@ -829,7 +962,16 @@ mod tests {
             if from < 0.0 {
                 return Some(strider_core::TraceHit {
                     point: start - Vec3::Z * radius,
-                    normal: Vec3::Z,
+                    normal: if start.x > 6.0 {
+                        // No direction: the trace's normal is then zero.
+                        Vec3::ZERO
+                    } else if start.x < -1.0 {
+                        self.nans.set(self.nans.get() + 1);
+                        Vec3::NAN
+                    } else {
+                        // Not of unit length, and tilted by where the trace starts.
+                        Vec3::new(0.1 * start.y, 0.3, 1.0)
+                    },
                     distance: 0.0,
                 });
             }
@@ -840,6 +982,7 @@ mod tests {
             Some(strider_core::TraceHit {
                 point: start.lerp(end, t) - Vec3::Z * radius,
                 normal: if start.x < -1.0 {
+                    self.nans.set(self.nans.get() + 1);
                     Vec3::NAN
                 } else {
                     Vec3::new(0.1, 0.0, 1.0)
@@ -879,8 +1022,11 @@ mod tests {
             .enumerate()
             .map(|(m, ((s, p), d))| {
                 let mut cx = Ctx::for_test(s, &[], p, d, 1.0 / 60.0);
-                let to_world = glam::Affine3A::from_rotation_translation(
-                    Quat::from_rotation_z(0.4 * m as f32),
+                // Scaled unevenly and turned about a tilted axis: every entry of the
+                // matrices counts.
+                let to_world = glam::Affine3A::from_scale_rotation_translation(
+                    Vec3::new(1.0, 1.5, 0.8),
+                    Quat::from_axis_angle(Vec3::new(0.3, -0.5, 1.0).normalize(), 0.4 * m as f32),
                     Vec3::new(m as f32, -2.0, 1.5 - 0.25 * m as f32),
                 );
                 (cx.to_world_matrix, cx.from_world_matrix) = (to_world, to_world.inverse());
@@ -895,8 +1041,20 @@ mod tests {
             // SAFETY: the operands are slots below `SLOTS` of the lanes loaded above.
             let ran = unsafe {
                 match op {
-                    Op::LineTrace => line_traces(o, lanes.bases(), shared_world(&cxs), &cxs),
-                    _ => sphere_traces(o, lanes.bases(), shared_world(&cxs), &cxs),
+                    Op::LineTrace => line_traces(
+                        o,
+                        lanes.bases(),
+                        shared_world(&cxs),
+                        &mut FromWorldColumns::new(),
+                        &cxs,
+                    ),
+                    _ => sphere_traces(
+                        o,
+                        lanes.bases(),
+                        shared_world(&cxs),
+                        &mut FromWorldColumns::new(),
+                        &cxs,
+                    ),
                 }
             };
             lanes.store(Copies::all(&lens), &mut cxs);
@@ -911,6 +1069,85 @@ mod tests {
         }
         drop(cxs);
         Some(slots)
+    }
+
+    #[test]
+    fn hits_are_mapped_to_rig_space_by_columns_as_each_alone() {
+        // Thousands of answers and matrices, spread over magnitudes, with zero, tiny, huge,
+        // infinite and NaN components: the columns' hits are the handler's, bit for bit.
+        let mut seed = 0x2545_f491_u32;
+        let mut next = move || {
+            // xorshift32, then a value spread over many magnitudes and signs.
+            seed ^= seed << 13;
+            seed ^= seed >> 17;
+            seed ^= seed << 5;
+            let special = [0.0, -0.0, 1e-30, -1e30, f32::INFINITY, f32::NAN, 1.0];
+            match seed % 16 {
+                0 => special[(seed >> 4) as usize % special.len()],
+                k => ((seed >> 8) as f32 / 65536.0 - 128.0) * 10f32.powi(k as i32 % 7 - 3),
+            }
+        };
+        for round in 0..400 {
+            let mut columns = FromWorldColumns::new();
+            let mut matrices = [glam::Affine3A::IDENTITY; BATCH];
+            let mut answers = [None; BATCH];
+            for m in 0..BATCH {
+                let axis = Vec3::new(next(), next(), next()).normalize_or(Vec3::Z);
+                let rotation = Quat::from_axis_angle(axis, next().rem_euclid(6.0));
+                let scale =
+                    Vec3::new(next(), next(), next()).clamp(Vec3::splat(-5.0), Vec3::splat(5.0));
+                let at = Vec3::new(next(), next(), next());
+                matrices[m] = glam::Affine3A::from_scale_rotation_translation(scale, rotation, at);
+                let a = &matrices[m];
+                let entries = [
+                    a.matrix3.x_axis,
+                    a.matrix3.y_axis,
+                    a.matrix3.z_axis,
+                    a.translation,
+                ];
+                for (c, v) in entries.into_iter().enumerate() {
+                    for (k, x) in v.to_array().into_iter().enumerate() {
+                        columns.entries[3 * c + k][m] = x;
+                    }
+                }
+                if (round + m) % 5 != 0 {
+                    // A normal without direction now and then.
+                    let normal = if (round + m) % 7 == 0 {
+                        Vec3::ZERO
+                    } else {
+                        Vec3::new(next(), next(), next())
+                    };
+                    answers[m] = Some(TraceHit {
+                        point: Vec3::new(next(), next(), next()),
+                        normal,
+                        distance: next(),
+                    });
+                }
+            }
+            columns.filled = true;
+            let found = hits_in_rig_space(&answers, &columns.entries);
+            for m in 0..BATCH {
+                let (start, end) = (Vec3::ONE, Vec3::ZERO);
+                let alone = trace_outputs(read_hit(&answers[m]), start, end, &matrices[m]);
+                assert_eq!(found.hit[m], alone.0, "round {round}, member {m}");
+                if alone.0 {
+                    let point = Vec3::from_array(std::array::from_fn(|c| found.point[c][m]));
+                    let normal = Vec3::from_array(std::array::from_fn(|c| found.normal[c][m]));
+                    assert_eq!(
+                        (
+                            point.to_array().map(f32::to_bits),
+                            normal.to_array().map(f32::to_bits)
+                        ),
+                        (
+                            alone.1.to_array().map(f32::to_bits),
+                            alone.2.to_array().map(f32::to_bits)
+                        ),
+                        "round {round}, member {m}: {answers:?}"
+                    );
+                    assert_eq!(found.distance[m].to_bits(), alone.3.to_bits());
+                }
+            }
+        }
     }
 
     #[test]
@@ -931,6 +1168,7 @@ mod tests {
                 let world = Plane::default();
                 let batched = trace(op, &o, n, true, &[&world]).expect("the batch path takes it");
                 assert_eq!(world.batches.get(), 1, "{op:?} {operands:?}, {n} members");
+                assert!(n < BATCH || world.nans.get() > 0, "{op:?}: no NaN normal");
                 let alone = trace(op, &o, n, false, &[&Plane::default()]).expect("the handler");
                 for m in 0..n {
                     assert!(
@@ -942,6 +1180,17 @@ mod tests {
                 assert!(
                     n < BATCH || (0 < hits && hits < n),
                     "{op:?}: {hits} hits of {n}"
+                );
+                // Some hit has no direction to its normal, and some a normal turned and
+                // normalised.
+                let normal_slot = operands[operands.len() - 2] as usize;
+                let normals = alone.iter().filter(|s| s.bools[hit_slot]);
+                let normals: Vec<Vec3> = normals.map(|s| s.vec3s[normal_slot]).collect();
+                assert!(
+                    n < BATCH
+                        || (normals.contains(&Vec3::ZERO)
+                            && normals.iter().any(|v| v.is_normalized() && v.x != 0.0)),
+                    "{op:?}: normals {normals:?}"
                 );
             }
             // Members in different worlds: each asks its own, through the handler.
