@@ -147,27 +147,19 @@ pub(crate) unsafe fn run_per_member(
                 // One space and pose for the batch (as constants give): the choice is made
                 // once, each loop reads one of the four.
                 let (space, initial) = (spaces[0], initials[0]);
+                // A loop for each choice, its space and pose constants in it.
+                macro_rules! read_each {
+                    ($space:expr, $initial:expr) => {
+                        for (m, cx) in members.iter_mut().enumerate() {
+                            read(m, cx, $space, $initial);
+                        }
+                    };
+                }
                 match (space == 0, initial) {
-                    (true, false) => {
-                        for (m, cx) in members.iter_mut().enumerate() {
-                            read(m, cx, 0, false);
-                        }
-                    }
-                    (false, false) => {
-                        for (m, cx) in members.iter_mut().enumerate() {
-                            read(m, cx, space, false);
-                        }
-                    }
-                    (true, true) => {
-                        for (m, cx) in members.iter_mut().enumerate() {
-                            read(m, cx, 0, true);
-                        }
-                    }
-                    (false, true) => {
-                        for (m, cx) in members.iter_mut().enumerate() {
-                            read(m, cx, space, true);
-                        }
-                    }
+                    (true, false) => read_each!(0, false),
+                    (false, false) => read_each!(space, false),
+                    (true, true) => read_each!(0, true),
+                    (false, true) => read_each!(space, true),
                 }
             } else {
                 for (m, cx) in members.iter_mut().enumerate() {
@@ -583,22 +575,27 @@ impl FromWorldColumns {
     fn of(&mut self, members: &[Ctx<'_>]) -> &[[f32; BATCH]; 12] {
         if !self.filled {
             for (m, cx) in members.iter().enumerate() {
-                let a = &cx.from_world_matrix;
-                let columns = [
-                    a.matrix3.x_axis,
-                    a.matrix3.y_axis,
-                    a.matrix3.z_axis,
-                    a.translation,
-                ];
-                for (c, v) in columns.into_iter().enumerate() {
-                    for (k, x) in v.to_array().into_iter().enumerate() {
-                        self.entries[3 * c + k][m] = x;
-                    }
-                }
+                self.put(m, &cx.from_world_matrix);
             }
             self.filled = true;
         }
         &self.entries
+    }
+
+    /// Writes matrix `a` into member `m`'s lane.
+    #[inline(always)]
+    fn put(&mut self, m: usize, a: &glam::Affine3A) {
+        let columns = [
+            a.matrix3.x_axis,
+            a.matrix3.y_axis,
+            a.matrix3.z_axis,
+            a.translation,
+        ];
+        for (c, v) in columns.into_iter().enumerate() {
+            for (k, x) in v.to_array().into_iter().enumerate() {
+                self.entries[3 * c + k][m] = x;
+            }
+        }
     }
 }
 
@@ -1098,18 +1095,7 @@ mod tests {
                     Vec3::new(next(), next(), next()).clamp(Vec3::splat(-5.0), Vec3::splat(5.0));
                 let at = Vec3::new(next(), next(), next());
                 matrices[m] = glam::Affine3A::from_scale_rotation_translation(scale, rotation, at);
-                let a = &matrices[m];
-                let entries = [
-                    a.matrix3.x_axis,
-                    a.matrix3.y_axis,
-                    a.matrix3.z_axis,
-                    a.translation,
-                ];
-                for (c, v) in entries.into_iter().enumerate() {
-                    for (k, x) in v.to_array().into_iter().enumerate() {
-                        columns.entries[3 * c + k][m] = x;
-                    }
-                }
+                columns.put(m, &matrices[m]);
                 if (round + m) % 5 != 0 {
                     // A normal without direction now and then.
                     let normal = if (round + m) % 7 == 0 {
