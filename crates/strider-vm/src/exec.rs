@@ -148,7 +148,7 @@ pub(crate) fn bone_transform(pose: &mut Pose, bone: i32, space: i32, initial: bo
 /// it, 1 sets it), global (rig space, children following when `propagate`) when `space`
 /// is 0, else local (parent space).
 #[inline(always)]
-pub(crate) fn set_transform(
+fn set_transform(
     pose: &mut Pose,
     bone: BoneIndex,
     value: Transform,

@@ -6,17 +6,19 @@
 //! are, one slot after another. For an op with half a dozen operands that is most of the
 //! work. The ops here find every operand's block of lanes ([`crate::lanes`]) once, then
 //! visit the members, each with its own arrays and pose: the same element functions as
-//! the handlers ([`array_get`], [`array_set`], [`bone_transform`]), on the same values, in
-//! the same order for each member, so the results are the handlers', bit for bit. A read
-//! fused with a `BreakTransform` (of its result, as the compiler fuses them) runs for every
-//! member first, then the break for the whole batch ([`break_transforms`]): a member's
-//! break reads only its own lane, which no other member's read writes, and the reads read
-//! none of the break's outputs.
+//! the handlers ([`array_get`], [`array_set`], [`bone_transform`], [`parent_of`]), on the
+//! same values, in the same order for each member, so the results are the handlers', bit
+//! for bit. A read fused with a `BreakTransform` (of its result, as the compiler fuses
+//! them) runs for every member first, then the break for the whole batch
+//! ([`break_transforms`]): a member's break reads only its own lane, which no other
+//! member's read writes, and the reads read none of the break's outputs.
 //!
 //! Two kinds of op go further, with one piece of work for the whole batch: the traces ask
 //! the world once for every member ([`sphere_traces`], [`line_traces`]), and the two-bone
-//! IK solves the members' chains together on lanes of its own ([`two_bone_iks`]). Their
-//! answers too are the handlers', bit for bit.
+//! IK solves the members' chains together on lanes of its own ([`two_bone_iks`]). The
+//! traces map the world's hits back to rig space for every lane at once
+//! ([`hits_in_rig_space`], on x86-64: [`COLUMNS_MATCH_GLAM`]), with glam's operations in
+//! glam's order. Their answers too are the handlers', bit for bit.
 //!
 //! They run only on lanes (slot `k` of member `m` at item `k * BATCH + m`), with the whole
 //! batch at the instruction; anywhere else the handlers do the work.
@@ -136,7 +138,9 @@ pub(crate) unsafe fn run_per_member(
                 // SAFETY: as above.
                 unsafe { *out.add(m) = x };
             };
-            // SAFETY: as above; a block is `BATCH` items.
+            // SAFETY: as above; a block is `BATCH` items, and nothing writes these two
+            // blocks while the views are held (the reads write the result's block and the
+            // poses only).
             let (spaces, initials) = unsafe {
                 (
                     &*space.cast::<[i32; BATCH]>(),
@@ -479,11 +483,12 @@ impl BatchQuery for SphereQuery {
 /// distance) for the whole batch: each member's question (`query` of its context, its
 /// index, and its ends in rig space) asked of the world at once, and each answer mapped
 /// back to the member's slots as the handler maps it. Returns false, doing nothing, when
-/// there is no `world` the members share ([`shared_world`]).
+/// there is no `world` the members share ([`shared_world`]). `world` must be
+/// `shared_world(members)`, and `frames` new or filled from these `members`, for the
+/// answers to be the handler's.
 ///
 /// # Safety
-/// As [`run_per_member`], with `o` a trace's operands, its outputs from `outs` on; `world`
-/// the members' own world.
+/// As [`run_per_member`], with `o` a trace's operands, its outputs from `outs` on.
 #[inline(always)]
 unsafe fn batch_traces<Q: BatchQuery>(
     o: &[u32],
@@ -936,7 +941,8 @@ mod tests {
     /// A world of the plane z = 0 that counts the batches it is asked: a sphere that
     /// starts below it (by its radius) hits at the start, with a normal that depends on
     /// where (zero right of x = 6), and one that ends above it misses. A hit left of
-    /// x = −1 has a NaN normal (which the trace reads as a miss), and is counted. A line trace is a sphere trace of radius 0.
+    /// x = −1 has a NaN normal (which the trace reads as a miss), and is counted. A line
+    /// trace is a sphere trace of radius 0.
     #[derive(Default)]
     struct Plane {
         batches: std::cell::Cell<usize>,
@@ -1110,7 +1116,6 @@ mod tests {
                     });
                 }
             }
-            columns.filled = true;
             let found = hits_in_rig_space(&answers, &columns.entries);
             for m in 0..BATCH {
                 let (start, end) = (Vec3::ONE, Vec3::ZERO);
