@@ -214,12 +214,20 @@ macro_rules! with_elem {
 }
 
 /// Copies within one slot array; arrays reuse the destination's memory.
-fn copy_vec<T: Clone>(v: &mut [Vec<T>], from: usize, to: usize) {
-    if from != to {
-        let src = std::mem::take(&mut v[from]);
-        v[to].clone_from(&src);
-        v[from] = src;
-    }
+fn copy_vec<T: Copy>(v: &mut [Vec<T>], from: usize, to: usize) {
+    let (source, target) = match from.cmp(&to) {
+        std::cmp::Ordering::Equal => return,
+        std::cmp::Ordering::Less => {
+            let (low, high) = v.split_at_mut(to);
+            (&low[from], &mut high[0])
+        }
+        std::cmp::Ordering::Greater => {
+            let (low, high) = v.split_at_mut(from);
+            (&high[0], &mut low[to])
+        }
+    };
+    target.clear();
+    target.extend_from_slice(source);
 }
 
 /// Runs a handler body once, on the one instance at hand (the `$each` of [`execute!`] for
@@ -1254,6 +1262,9 @@ fn run_group<const LANES: bool>(
     };
     // The members' matrices from world space, by entry, read at the batch's first trace.
     let mut from_world = crate::per_member::FromWorldColumns::new();
+    // Whether any member records debug drawing: when none does, the batch passes the draw
+    // ops by (their handlers record only, and only when enabled).
+    let drawing = members.iter().any(|cx| cx.debug.is_enabled());
     // Where each member outside the group is (`END` once it has ended); the group's members
     // are all at `pc`.
     let mut pcs = [END; BATCH];
@@ -1361,6 +1372,32 @@ fn run_group<const LANES: bool>(
                 _ if unsafe { crate::lanes::run_wide(op, o, lane0, n, &dts) } => {
                     pc += 1;
                     continue;
+                }
+                Op::DrawPoint
+                | Op::DrawLine
+                | Op::DrawArrow
+                | Op::DrawSphere
+                | Op::DrawBox
+                | Op::DrawSpline
+                | Op::DrawTransform
+                    if !drawing =>
+                {
+                    pc += 1;
+                    continue;
+                }
+                // SAFETY: as above; `members` is the batch the lanes were loaded from.
+                Op::ForEachNext(e) => {
+                    match unsafe { crate::per_member::for_each_next(e, o, &lane0, members) } {
+                        Some(true) => {
+                            pc += 1;
+                            continue;
+                        }
+                        Some(false) => {
+                            pc = o[5] as usize;
+                            continue;
+                        }
+                        None => {}
+                    }
                 }
                 // SAFETY: as above; `members` is the batch the lanes were loaded from.
                 Op::SphereTrace

@@ -201,6 +201,94 @@ pub(crate) unsafe fn run_per_member(
     true
 }
 
+/// `ForEachNext(elem)` (operands: array, counter; element, index, count; the loop's end)
+/// for a whole batch whose members all step on together or all leave the loop together:
+/// `Some(true)` when every member's counter is within its array (each member's element,
+/// index, count and counter are written as the handler writes them), `Some(false)` when
+/// every member's is outside it (nothing is written: the batch jumps to the loop's end),
+/// and `None`, with nothing written, when the members part ways (the handler runs each).
+/// A bone array's element goes to the member's own bone slot, as in the handler.
+///
+/// # Safety
+/// As [`run_per_member`], with `o` a `ForEachNext(elem)`'s operands.
+#[inline(never)]
+pub(crate) unsafe fn for_each_next(
+    elem: Elem,
+    o: &[u32],
+    lane0: &Bases,
+    members: &mut [Ctx<'_>],
+) -> Option<bool> {
+    let lane0 = *lane0;
+    let array = o[0] as usize;
+    let (counter, index, count) = (
+        item0(lane0.ints, o[1]),
+        item0(lane0.ints, o[3]),
+        item0(lane0.ints, o[4]),
+    );
+    // Whether every member steps on (true) or every member leaves (false); `None` if they
+    // part ways. Each member's array length is its own.
+    macro_rules! agree {
+        ($ar:ident) => {{
+            let mut on = 0usize;
+            for (m, cx) in members.iter().enumerate() {
+                // SAFETY: as in `run_per_member`: operand 0 names one of the program's
+                // array variables, which every member has; `m < BATCH`.
+                let (len, at) =
+                    unsafe { (cx.slots.$ar.get_unchecked(array).len(), *counter.add(m)) };
+                on += usize::from(at >= 0 && (at as usize) < len);
+            }
+            match on {
+                0 => return Some(false),
+                n if n == members.len() => {}
+                _ => return None,
+            }
+        }};
+    }
+    // Every member steps on: its counter read, then its element, index, count and counter
+    // written, in the handler's order.
+    macro_rules! step {
+        ($ar:ident, |$m:ident, $cx:ident, $x:ident| $write:expr) => {{
+            agree!($ar);
+            for ($m, $cx) in members.iter_mut().enumerate() {
+                // SAFETY: as above; the counter is within the array (checked above).
+                unsafe {
+                    let at = *counter.add($m);
+                    let items = $cx.slots.$ar.get_unchecked(array);
+                    let (len, $x) = (items.len() as i32, *items.get_unchecked(at as usize));
+                    $write;
+                    *index.add($m) = at;
+                    *count.add($m) = len;
+                    *counter.add($m) = at + 1;
+                }
+            }
+        }};
+    }
+    // The element into its lane of operand 2's block of scalar array `$sc`.
+    macro_rules! into_lane {
+        ($sc:ident, $ar:ident) => {{
+            let element = item0(lane0.$sc, o[2]);
+            step!($ar, |m, cx, x| *element.add(m) = x)
+        }};
+    }
+    match elem {
+        Elem::Bool => into_lane!(bools, bool_arrays),
+        Elem::Int => into_lane!(ints, int_arrays),
+        Elem::Float => into_lane!(floats, float_arrays),
+        Elem::Vec3 => into_lane!(vec3s, vec3_arrays),
+        Elem::Quat => into_lane!(quats, quat_arrays),
+        Elem::Transform => into_lane!(transforms, transform_arrays),
+        Elem::Bone => {
+            // Operand 2 names one of the program's bone slots, which every member has.
+            let element = o[2] as usize;
+            step!(bone_arrays, |m, cx, x| *cx
+                .slots
+                .bones
+                .get_unchecked_mut(element) = x)
+        }
+    }
+    Some(true)
+}
+
 /// `LineTrace` (operands: start, end; hit, point, normal, distance) for a whole batch
 /// with one question to the world
 /// ([`WorldQuery::line_traces`](strider_core::WorldQuery::line_traces)), as
@@ -1258,6 +1346,97 @@ mod tests {
     }
 
     #[test]
+    fn a_batch_steps_through_for_each_as_each_member_alone() {
+        // Operands: array 1, counter int 2; element 4 (of the element's type), index int 5,
+        // count int 6; the loop's end at instruction 99.
+        let o = window(&[1, 2, 4, 5, 6, 99]);
+        // Every member's array 1 of each type `len(m)` long, and its counter `at(m)`.
+        let members = |n: usize, len: &dyn Fn(usize) -> usize, at: &dyn Fn(usize) -> i32| {
+            (0..n)
+                .map(|m| {
+                    let mut s = member_slots(m + 1);
+                    let l = len(m);
+                    // Distinct items, so that a wrong index reads a wrong value.
+                    let x = |i: usize| (m * 4 + i) as f32 * 0.5;
+                    // `member_slots` has no bone arrays.
+                    s.bone_arrays = vec![Vec::new(); SLOTS];
+                    s.bone_arrays[1] = (0..l).map(|i| (10 * m + i) as i32).collect();
+                    s.bool_arrays[1] = (0..l).map(|i| (i + m) % 2 == 1).collect();
+                    s.int_arrays[1] = (0..l).map(|i| (100 * m + i) as i32).collect();
+                    s.float_arrays[1] = (0..l).map(x).collect();
+                    s.vec3_arrays[1] = (0..l).map(|i| Vec3::splat(x(i))).collect();
+                    s.quat_arrays[1] = (0..l).map(|i| Quat::from_rotation_z(x(i))).collect();
+                    s.transform_arrays[1] = (0..l)
+                        .map(|i| Transform::from_translation(Vec3::splat(x(i))))
+                        .collect();
+                    s.ints[2] = at(m);
+                    s
+                })
+                .collect::<Vec<Slots>>()
+        };
+        // (what every member does, lengths, counters): all step on, all leave (at the
+        // end, before the start, far past it, or an empty array), or they part ways.
+        type Case<'a> = (
+            Option<bool>,
+            &'a dyn Fn(usize) -> usize,
+            &'a dyn Fn(usize) -> i32,
+        );
+        let cases: [Case<'_>; 6] = [
+            (Some(true), &|_| 3, &|m| (m % 3) as i32),
+            (Some(true), &|m| 1 + m % 4, &|_| 0),
+            (Some(false), &|_| 3, &|m| [3, -1, i32::MAX, i32::MIN][m % 4]),
+            (Some(false), &|_| 0, &|_| 0),
+            (None, &|m| m % 3, &|_| 0),
+            (None, &|_| 2, &|m| (m % 3) as i32),
+        ];
+        for e in Elem::ALL {
+            let op = Op::ForEachNext(e);
+            for (k, (expected, len, at)) in cases.iter().enumerate() {
+                let n = if expected.is_some() { BATCH } else { 5 };
+                let what = format!("{op:?} case {k}");
+                // The handler on each member alone: where each goes next.
+                let mut alone = members(n, len, at);
+                let mut alone_poses: Vec<Pose> = (0..n).map(member_pose).collect();
+                let mut next = Vec::new();
+                with_contexts(&mut alone, &mut alone_poses, |cxs| {
+                    for cx in cxs.iter_mut() {
+                        // SAFETY: the operands are slots below `SLOTS` of every member.
+                        next.push(unsafe { step(op, &o, cx, 1) });
+                    }
+                });
+                let steps = next.iter().filter(|&&pc| pc == 1).count();
+                let agreed = match steps {
+                    0 => Some(false),
+                    s if s == n => Some(true),
+                    _ => None,
+                };
+                assert_eq!(agreed, *expected, "{what}: the case itself");
+                // The batch.
+                let taken = std::cell::Cell::new(None);
+                let batched = |lane0: Bases, cxs: &mut [Ctx<'_>]| {
+                    // SAFETY: as in `run`.
+                    taken.set(unsafe { for_each_next(e, &o, &lane0, cxs) });
+                    true
+                };
+                let before = members(n, len, at);
+                let (after, _) = run_members(op, &o, members(n, len, at), Some(&batched))
+                    .expect("the batch path ran");
+                assert_eq!(taken.get(), *expected, "{what}");
+                for m in 0..n {
+                    if *expected == Some(true) {
+                        assert!(after[m].bit_eq(&alone[m]), "{what}: member {m} differs");
+                        assert!(!after[m].bit_eq(&before[m]), "{what}: member {m} unchanged");
+                    } else {
+                        // Nothing written: the handlers run each member (or the batch
+                        // leaves the loop, where the handler writes nothing either).
+                        assert!(after[m].bit_eq(&before[m]), "{what}: member {m} written");
+                    }
+                }
+            }
+        }
+    }
+
+    #[test]
     fn other_ops_are_left_to_the_handlers() {
         for op in [
             Op::ArrayAt(Elem::Bone),
@@ -1266,6 +1445,7 @@ mod tests {
             Op::SetTransform,
             Op::LineTrace,
             Op::Copy(ValueType::Float),
+            Op::ForEachNext(Elem::Float),
         ] {
             let o = window(&[1, 2, 3, 4, 5]);
             assert!(
