@@ -60,19 +60,7 @@ pub(crate) fn reads_pose(op: Op) -> bool {
 /// Whether a mutating built-in op may change the pose. Draws and array edits do not;
 /// anything else mutating is assumed to.
 pub(crate) fn writes_pose(op: Op) -> bool {
-    !matches!(
-        op,
-        Op::DrawPoint
-            | Op::DrawLine
-            | Op::DrawArrow
-            | Op::DrawSphere
-            | Op::DrawBox
-            | Op::DrawSpline
-            | Op::DrawTransform
-            | Op::ArraySetAt(_)
-            | Op::ArrayAdd(_)
-            | Op::ArrayReset(_)
-    )
+    !(op.is_draw() || matches!(op, Op::ArraySetAt(_) | Op::ArrayAdd(_) | Op::ArrayReset(_)))
 }
 
 /// What running a list of steps may change in its frame: the other side of [`Reads`].

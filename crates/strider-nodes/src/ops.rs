@@ -109,6 +109,28 @@ impl Op {
             .find(|(fused, _)| *fused == self)
             .map(|&(_, parts)| parts)
     }
+
+    /// Whether this is a debug-drawing op: one that only records a primitive in the run's
+    /// debug output, when that output is enabled, and touches nothing else.
+    #[must_use]
+    pub fn is_draw(self) -> bool {
+        matches!(self, crate::draw_ops!())
+    }
+}
+
+/// A pattern matching every debug-drawing op ([`Op::is_draw`]), for a `match` arm of its
+/// own: `strider_nodes::draw_ops!() => ...`.
+#[macro_export]
+macro_rules! draw_ops {
+    () => {
+        $crate::Op::DrawPoint
+            | $crate::Op::DrawLine
+            | $crate::Op::DrawArrow
+            | $crate::Op::DrawSphere
+            | $crate::Op::DrawBox
+            | $crate::Op::DrawSpline
+            | $crate::Op::DrawTransform
+    };
 }
 
 /// One instruction kind. Variants that carry a type are a family of ops whose handler is

@@ -1378,15 +1378,7 @@ fn run_group<const LANES: bool>(
                     pc += 1;
                     continue;
                 }
-                Op::DrawPoint
-                | Op::DrawLine
-                | Op::DrawArrow
-                | Op::DrawSphere
-                | Op::DrawBox
-                | Op::DrawSpline
-                | Op::DrawTransform
-                    if !drawing =>
-                {
+                strider_nodes::draw_ops!() if !drawing => {
                     pc += 1;
                     continue;
                 }

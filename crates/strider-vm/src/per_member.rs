@@ -11,7 +11,8 @@
 //! for bit. A read fused with a `BreakTransform` (of its result, as the compiler fuses
 //! them) runs for every member first, then the break for the whole batch
 //! ([`break_transforms`]): a member's break reads only its own lane, which no other
-//! member's read writes, and the reads read none of the break's outputs.
+//! member's read writes, and the reads read none of the break's outputs. A for-each loop's
+//! step moves the whole batch at once when its members agree ([`for_each_next`]).
 //!
 //! Two kinds of op go further, with one piece of work for the whole batch: the traces ask
 //! the world once for every member ([`sphere_traces`], [`line_traces`]), and the two-bone
