@@ -1148,7 +1148,7 @@ pub(crate) const BATCH: usize = 16;
 /// handlers' writes do not touch them (operand fetches can stay out of the member loop).
 /// Returns the number of instructions dispatched (each once for all the members at it) in
 /// the crate's own test builds, for the executor's tests; 0 in every other build, whose
-/// loop does not count (counting cost 304 instructions per locomotion character-frame).
+/// loop does not count (an add at every dispatch, which the frame does not need).
 // Each handler body is expanded once per op with `each!`; bodies that read no slots (or
 // no scalar slots) leave that iteration's `s` or `b` unread.
 #[allow(unused_assignments)]

@@ -251,7 +251,8 @@ pub(crate) unsafe fn for_each_next(
         ($ar:ident, |$m:ident, $cx:ident, $x:ident| $write:expr) => {{
             agree!($ar);
             for ($m, $cx) in members.iter_mut().enumerate() {
-                // SAFETY: as above; the counter is within the array (checked above).
+                // SAFETY: as above; the counter is within the array (checked above), and
+                // `$write` indexes anything else it writes with a check.
                 unsafe {
                     let at = *counter.add($m);
                     let items = $cx.slots.$ar.get_unchecked(array);
@@ -279,12 +280,9 @@ pub(crate) unsafe fn for_each_next(
         Elem::Quat => into_lane!(quats, quat_arrays),
         Elem::Transform => into_lane!(transforms, transform_arrays),
         Elem::Bone => {
-            // Operand 2 names one of the program's bone slots, which every member has.
+            // Bone slots are indexed with a check, as in the handler.
             let element = o[2] as usize;
-            step!(bone_arrays, |m, cx, x| *cx
-                .slots
-                .bones
-                .get_unchecked_mut(element) = x)
+            step!(bone_arrays, |m, cx, x| cx.slots.bones[element] = x)
         }
     }
     Some(true)
@@ -1392,9 +1390,12 @@ mod tests {
         ];
         for e in Elem::ALL {
             let op = Op::ForEachNext(e);
-            for (k, (expected, len, at)) in cases.iter().enumerate() {
-                let n = if expected.is_some() { BATCH } else { 5 };
-                let what = format!("{op:?} case {k}");
+            for ((k, (expected, len, at)), n) in cases
+                .iter()
+                .enumerate()
+                .flat_map(|case| [(case, BATCH), (case, 5)])
+            {
+                let what = format!("{op:?} case {k}, {n} members");
                 // The handler on each member alone: where each goes next.
                 let mut alone = members(n, len, at);
                 let mut alone_poses: Vec<Pose> = (0..n).map(member_pose).collect();
