@@ -238,6 +238,36 @@ fn profiled_frames_do_not_allocate() {
         });
         assert_eq!(n, 0, "{path}: toggling profiling allocated {n} times");
     }
+    // Profiling instances batched together (the batch loop's profiled copy), on lanes.
+    let locomotion = compile_file("graphs/locomotion.ron");
+    let skeleton = strider_graph::load_skeleton(Path::new("graphs/skeletons/mannequin.ron"))
+        .unwrap_or_else(|_| panic!("mannequin loads"))
+        .skeleton;
+    let mut crowd: Vec<Instance> = (0..6)
+        .map(|_| {
+            let mut i = Instance::new(Arc::clone(&locomotion), Arc::clone(&skeleton)).unwrap();
+            i.set_profiling(true);
+            i
+        })
+        .collect();
+    let input = |k: usize| FrameInput {
+        dt: [1.0 / 60.0, 1.0 / 30.0][k % 2],
+        ..Default::default()
+    };
+    for _ in 0..10 {
+        Instance::run_forward_batch(&mut crowd, input, &EmptyWorld, false);
+    }
+    let n = allocations_in(|| {
+        for _ in 0..20 {
+            Instance::run_forward_batch(&mut crowd, input, &EmptyWorld, false);
+        }
+    });
+    assert_eq!(n, 0, "profiled batches: {n} allocations in 20 frames");
+    assert!(
+        crowd
+            .iter()
+            .all(|i| i.profile().iter().any(|p| p.nanos > 0))
+    );
 }
 
 /// The locomotion graph walking a scenario (traces against the scenario's world, the

@@ -268,8 +268,9 @@ mod profiling {
 
     #[test]
     fn a_profiling_instance_in_a_batch_runs_alone_and_is_profiled() {
-        // Batched runs record no profile; `run_forward_batch` runs an instance that
-        // profiles by itself, and its neighbours together, all as they would alone.
+        // `run_forward_batch` batches instances that profile only with each other: one
+        // that profiles between two that do not runs by itself, its neighbours together,
+        // all as they would alone.
         let program = compile();
         let make = || -> Vec<Instance> {
             (0..5)
@@ -295,6 +296,130 @@ mod profiling {
         assert_eq!(batched[1].profile()[add].count, 0, "not profiling");
         for (a, b) in batched.iter().zip(&alone) {
             assert!(a.slots().bit_eq(b.slots()));
+        }
+    }
+
+    /// Each instruction's run count in `instances`' profiles, instance by instance.
+    fn counts(instances: &[Instance]) -> Vec<Vec<u64>> {
+        instances
+            .iter()
+            .map(|i| i.profile().iter().map(|p| p.count).collect())
+            .collect()
+    }
+
+    #[test]
+    fn profiling_instances_batched_together_count_what_each_runs_alone() {
+        // Loops of different lengths split the batch and join it again; each member's
+        // count of every instruction is what it runs alone, and the batch's time goes to
+        // the instructions run.
+        let program = compile();
+        let n = program.variable_id("N").unwrap();
+        let make = || -> Vec<Instance> {
+            [3, 5, 0, 5, 8]
+                .iter()
+                .map(|&rounds| {
+                    let mut i = Instance::new(Arc::clone(&program), mannequin()).unwrap();
+                    i.set_variable(n, &Value::Int(rounds)).unwrap();
+                    i.set_profiling(true);
+                    i
+                })
+                .collect()
+        };
+        let (mut batched, mut alone) = (make(), make());
+        let input = |_: usize| FrameInput {
+            dt: 1.0 / 60.0,
+            ..Default::default()
+        };
+        // How long the batched runs took, around them: the dispatches' times lie within.
+        let mut wall = std::time::Duration::ZERO;
+        for _ in 0..3 {
+            let started = std::time::Instant::now();
+            Instance::run_forward_batch(&mut batched, input, &EmptyWorld, false);
+            wall += started.elapsed();
+            for instance in &mut alone {
+                instance.run_forward(&input(0), &EmptyWorld, false);
+            }
+        }
+        assert_eq!(counts(&batched), counts(&alone));
+        // Shared, not given to each member whole: all of them together took no longer than
+        // the runs.
+        let profiled: u64 = batched
+            .iter()
+            .flat_map(|i| i.profile().iter().map(|p| p.nanos))
+            .sum();
+        assert!(
+            u128::from(profiled) <= wall.as_nanos(),
+            "{profiled} ns in {wall:?}"
+        );
+        let add = pcs(&program, Op::AddF)[0];
+        assert_eq!(
+            batched[4].profile()[add].count,
+            24,
+            "8 rounds, three frames"
+        );
+        assert_eq!(batched[2].profile()[add].count, 0, "no rounds");
+        assert!(batched[4].profile()[add].nanos > 0);
+        // The batch ran them together: after the loops every member is at `Twice`'s
+        // multiply with the others, and each dispatch's time is shared equally (the
+        // remainder, under one nanosecond a member, to the first).
+        for pc in pcs(&program, Op::MulF) {
+            let nanos: Vec<u64> = batched.iter().map(|i| i.profile()[pc].nanos).collect();
+            assert!(nanos[1..].iter().all(|&x| x == nanos[1]), "{nanos:?}");
+            assert!(
+                (nanos[1]..nanos[1] + 3 * 5).contains(&nanos[0]),
+                "{nanos:?}"
+            );
+        }
+        for (a, b) in batched.iter().zip(&alone) {
+            assert!(a.slots().bit_eq(b.slots()));
+            let (ran, timed) = (
+                a.profile().iter().filter(|p| p.count > 0).count(),
+                a.profile().iter().filter(|p| p.nanos > 0).count(),
+            );
+            assert!(timed > 0 && timed <= ran, "time only where runs are");
+        }
+    }
+
+    #[test]
+    fn a_batched_locomotion_crowd_profiles_what_each_character_runs() {
+        // The batch loop on lanes, with traces, the IK and branches that split the batch:
+        // three characters at different points of a walk.
+        let program =
+            Arc::new(strider_compiler::compile_file(Path::new("graphs/locomotion.ron")).unwrap());
+        let make = || -> Vec<Instance> {
+            (0..3)
+                .map(|_| {
+                    let mut i = Instance::new(Arc::clone(&program), mannequin()).unwrap();
+                    i.set_profiling(true);
+                    i
+                })
+                .collect()
+        };
+        let (mut batched, mut alone) = (make(), make());
+        let input = |k: usize, f: usize| FrameInput {
+            dt: 1.0 / 60.0,
+            component_to_world: strider_core::Transform::from_translation(glam::Vec3::new(
+                0.0,
+                (f * (k + 1)) as f32 * 4.0,
+                0.0,
+            )),
+            ..Default::default()
+        };
+        for f in 0..12 {
+            Instance::run_forward_batch(&mut batched, |k| input(k, f), &EmptyWorld, false);
+            for (k, instance) in alone.iter_mut().enumerate() {
+                instance.run_forward(&input(k, f), &EmptyWorld, false);
+            }
+        }
+        assert_eq!(counts(&batched), counts(&alone));
+        let ik = pcs(&program, Op::TwoBoneIK);
+        assert!(!ik.is_empty());
+        for instance in &batched {
+            for &pc in &ik {
+                // Each limb's IK, every frame.
+                assert!(instance.profile()[pc].count >= 12);
+                assert!(instance.profile()[pc].nanos > 0);
+            }
         }
     }
 }

@@ -78,8 +78,9 @@ pub(crate) struct BenchArgs {
     #[arg(long)]
     pub json: bool,
 
-    /// Also profile one character and print the 20 graph nodes with the most time (needs
-    /// a build with `--features profile`).
+    /// Also profile the crowd's first batch (one character with `--batch 1`) and print the
+    /// 20 graph nodes with the most time per character-frame (needs a build with
+    /// `--features profile`).
     #[arg(long)]
     pub profile: bool,
 
@@ -589,26 +590,49 @@ fn profile_top(
     world: &World,
     warm_up: usize,
 ) -> anyhow::Result<ProfileTop> {
-    let mut instance = instantiate(program, skeleton, &args.skeleton)?;
-    apply(&mut instance, skeleton, assignments, world)?;
+    // The crowd's first batch, as the bench runs it: its characters at their offsets
+    // into the scenario, together (or each alone with `--batch 1`).
+    let n = args.characters as usize;
+    let k = (args.batch as usize).min(n).max(1);
     let mut crowd = Crowd {
-        instances: vec![instance],
-        offsets: vec![0],
-        batch: 1,
+        instances: Vec::with_capacity(k),
+        offsets: (0..k).map(|i| i * track.inputs.len() / n.max(1)).collect(),
+        batch: args.batch as usize,
     };
+    for _ in 0..k {
+        let mut instance = instantiate(program, skeleton, &args.skeleton)?;
+        apply(&mut instance, skeleton, assignments, world)?;
+        crowd.instances.push(instance);
+    }
     for f in 0..warm_up {
         crowd.run_frame(track, world, f, None, 1, false);
     }
-    crowd.instances[0].set_profiling(true);
+    for instance in &mut crowd.instances {
+        instance.set_profiling(true);
+    }
     let frames = track.inputs.len().max(args.frames as usize);
     for f in 0..frames {
         crowd.run_frame(track, world, warm_up + f, None, 1, false);
     }
-    let nodes = crowd.instances[0].profile_by_node();
+    // The characters' profiles summed, per instruction, then per node.
+    let mut summed = vec![strider_vm::InstrProfile::default(); program.code().len()];
+    for instance in &crowd.instances {
+        for (sum, p) in summed.iter_mut().zip(instance.profile()) {
+            sum.nanos += p.nanos;
+            sum.count += p.count;
+        }
+    }
+    let nodes = strider_vm::profile_by_node(program, &summed);
     let total: u64 = nodes.iter().map(|n| n.nanos).sum();
-    let per_frame = |x: u64| x as f64 / frames as f64;
+    let character_frames = (k * frames) as f64;
+    let per_frame = |x: u64| x as f64 / character_frames;
+    let how = if k > 1 {
+        format!("{k} characters batched")
+    } else {
+        "one character".to_string()
+    };
     let mut table = format!(
-        "profile     one character, {frames} frames, {:.0} ns per frame profiled (the timer inflates cheap nodes; see docs/performance.md)\n\
+        "profile     {how}, {frames} frames, {:.0} ns per character-frame profiled (the timer inflates cheap nodes; see docs/performance.md)\n\
           share   ns/frame   runs/f  node\n",
         per_frame(total)
     );

@@ -1164,16 +1164,20 @@ pub(crate) fn run_batch(
     if n == 0 {
         return 0;
     }
+    // A batch whose members profile (the caller batches only members that all do, or all
+    // do not) runs a separately compiled copy of the loop that times each dispatch, so
+    // the copy that runs unprofiled has no per-dispatch test; without the feature there
+    // is no timing code at all.
+    #[cfg(feature = "profile")]
+    let profiled = members[0].profile.is_some();
     if !lanes_pay_off(code.len(), copies.lens) {
         // No lanes: the empty scratch is never loaded.
-        return run_group::<false>(
-            code,
-            operands,
-            entry,
-            copies,
-            members,
-            &mut Lanes::default(),
-        );
+        let mut none = Lanes::default();
+        #[cfg(feature = "profile")]
+        if profiled {
+            return run_group::<false, true>(code, operands, entry, copies, members, &mut none);
+        }
+        return run_group::<false, false>(code, operands, entry, copies, members, &mut none);
     }
     LANES.with(|cell| {
         // A batch run from inside another one on this thread (a world query that runs a
@@ -1183,13 +1187,17 @@ pub(crate) fn run_batch(
             Some(lanes) => lanes,
             None => own.insert(Lanes::default()),
         };
-        run_group_lanes(code, operands, entry, copies, members, lanes)
+        #[cfg(feature = "profile")]
+        if profiled {
+            return run_group_lanes::<true>(code, operands, entry, copies, members, lanes);
+        }
+        run_group_lanes::<false>(code, operands, entry, copies, members, lanes)
     })
 }
 
-/// `run_group::<true>` on the machine code `batch_code()` picks (see
+/// `run_group::<true, PROFILE>` on the machine code `batch_code()` picks (see
 /// [`crate::batch_code`]).
-fn run_group_lanes(
+fn run_group_lanes<const PROFILE: bool>(
     code: &[Instr],
     operands: &[u32],
     entry: u32,
@@ -1200,16 +1208,16 @@ fn run_group_lanes(
     #[cfg(target_arch = "x86_64")]
     if batch_code() == BatchCode::Avx2 {
         // SAFETY: the processor has AVX2 (`batch_code` checked it).
-        return unsafe { run_group_avx2(code, operands, entry, copies, members, lanes) };
+        return unsafe { run_group_avx2::<PROFILE>(code, operands, entry, copies, members, lanes) };
     }
-    run_group::<true>(code, operands, entry, copies, members, lanes)
+    run_group::<true, PROFILE>(code, operands, entry, copies, members, lanes)
 }
 
-/// `run_group::<true>` compiled for AVX2: the same source (inlined here), wider registers.
-/// Callers must make sure the processor has AVX2.
+/// `run_group::<true, PROFILE>` compiled for AVX2: the same source (inlined here), wider
+/// registers. Callers must make sure the processor has AVX2.
 #[cfg(target_arch = "x86_64")]
 #[target_feature(enable = "avx2")]
-fn run_group_avx2(
+fn run_group_avx2<const PROFILE: bool>(
     code: &[Instr],
     operands: &[u32],
     entry: u32,
@@ -1217,7 +1225,30 @@ fn run_group_avx2(
     members: &mut [Ctx<'_>],
     lanes: &mut Lanes,
 ) -> usize {
-    run_group::<true>(code, operands, entry, copies, members, lanes)
+    run_group::<true, PROFILE>(code, operands, entry, copies, members, lanes)
+}
+
+/// Adds a dispatch's time, `nanos`, to the profile of each member in `group` (bit `m` for
+/// member `m`) at instruction `pc`, shared equally (the remainder to the first), with one
+/// run each: what each member would have spent at the instruction, run together.
+#[cfg(feature = "profile")]
+fn profile_dispatch(members: &mut [Ctx<'_>], group: u32, pc: usize, nanos: u64) {
+    let n = u64::from(group.count_ones().max(1));
+    let (share, mut rest) = (nanos / n, nanos % n);
+    let mut left = group;
+    while left != 0 {
+        let m = left.trailing_zeros() as usize;
+        left &= left - 1;
+        if let Some(entry) = members[m]
+            .profile
+            .as_deref_mut()
+            .and_then(|p| p.get_mut(pc))
+        {
+            entry.nanos += share + rest;
+            entry.count += 1;
+        }
+        rest = 0;
+    }
 }
 
 /// Whether a program of `code_len` instructions over scalar slots `lens` runs its batches
@@ -1232,9 +1263,12 @@ fn lanes_pay_off(code_len: usize, lens: &ScalarLens) -> bool {
 /// [`run_batch`], on `lanes` (`LANES`: the members' scalar slots are copied into them, run
 /// there and copied back) or on each member's own slots. Always inlined, so that
 /// [`run_group_avx2`] compiles the whole loop, wide ops and lane copies included, for AVX2.
+/// With `PROFILE` (only instantiated with the `profile` feature, for members that all
+/// profile), each dispatch's time, from its start to the next one's, is shared among the
+/// members at it ([`profile_dispatch`]).
 #[allow(unused_assignments)]
 #[inline(always)]
-fn run_group<const LANES: bool>(
+fn run_group<const LANES: bool, const PROFILE: bool>(
     code: &[Instr],
     operands: &[u32],
     entry: u32,
@@ -1283,7 +1317,24 @@ fn run_group<const LANES: bool>(
     let mut s: &mut Slots;
     let mut b: Bases;
     let mut moved: u32;
+    // The dispatch being timed (instruction, members at it) and when it started.
+    #[cfg(feature = "profile")]
+    let mut timed: Option<(usize, u32, std::time::Instant)> = None;
     loop {
+        #[cfg(feature = "profile")]
+        if PROFILE {
+            let now = std::time::Instant::now();
+            if let Some((at, who, started)) = timed {
+                // `End` counts as run but takes no time of its own, as in the loop alone.
+                let nanos = if matches!(code[at].op, Op::End) {
+                    0
+                } else {
+                    now.duration_since(started).as_nanos() as u64
+                };
+                profile_dispatch(members, who, at, nanos);
+            }
+            timed = Some((pc, group, now));
+        }
         // SAFETY: as in `run_loop`.
         let Instr { op, args } = unsafe { *code.get_unchecked(pc) };
         let args = args as usize;
@@ -1469,6 +1520,11 @@ fn run_group<const LANES: bool>(
             }
             let least = pcs[..n].iter().copied().min().unwrap_or(END);
             if least == END {
+                // The last dispatch (the last members' `End`): its runs counted.
+                #[cfg(feature = "profile")]
+                if PROFILE && let Some((at, who, _)) = timed {
+                    profile_dispatch(members, who, at, 0);
+                }
                 if LANES {
                     lanes.store(copies, members);
                 }
@@ -1857,7 +1913,7 @@ mod tests {
             );
             return (n, Vec::new());
         }
-        let n = run_group::<LANES>(
+        let n = run_group::<LANES, false>(
             &program.code,
             &program.operands,
             program.forward,

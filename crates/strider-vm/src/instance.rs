@@ -272,7 +272,9 @@ impl Instance {
 
     /// The accumulated profile, one entry per instruction of the program (indexed like
     /// [`Program::code`]), since creation or the last [`Instance::reset_profile`]. Group it
-    /// per graph node with [`Instance::profile_by_node`]. Only with the `profile` feature.
+    /// per graph node with [`Instance::profile_by_node`]. Run in a batch
+    /// ([`Instance::run_forward_batch`]), an instruction's time is its dispatch's, shared
+    /// equally among the batch's members at it. Only with the `profile` feature.
     #[cfg(feature = "profile")]
     #[must_use]
     pub fn profile(&self) -> &[crate::profile::InstrProfile] {
@@ -378,7 +380,9 @@ impl Instance {
     /// where their paths do), and while all of them are at one instruction its plain
     /// scalar math runs for all of them as one vectorised loop. Consecutive instances are
     /// batched together, so keep a crowd's instances of one program next to each other.
-    /// Instances with profiling on run alone. The one latitude in "bit-identical" is a NaN
+    /// Instances with profiling on are batched with each other only: each dispatch's time
+    /// is shared among the members at it, each counted as having run the instruction (see
+    /// `Instance::profile`, with the `profile` feature). The one latitude in "bit-identical" is a NaN
     /// result's sign and payload bits, which Rust leaves open (a NaN stays a NaN). A program
     /// with fewer than two instructions per scalar slot runs its batches on each instance's
     /// own slots, without the vectorised loops, whose copies it would not win back.
@@ -403,14 +407,12 @@ impl Instance {
         while start < crowd.len() {
             let first = &crowd[start];
             let mut end = start + 1;
-            if !first.is_profiling() {
-                while end < crowd.len()
-                    && end - start < exec::BATCH
-                    && Arc::ptr_eq(&crowd[end].program, &first.program)
-                    && !crowd[end].is_profiling()
-                {
-                    end += 1;
-                }
+            while end < crowd.len()
+                && end - start < exec::BATCH
+                && Arc::ptr_eq(&crowd[end].program, &first.program)
+                && crowd[end].is_profiling() == first.is_profiling()
+            {
+                end += 1;
             }
             let batch = &mut crowd[start..end];
             if let [single] = batch {

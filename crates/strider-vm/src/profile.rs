@@ -17,7 +17,8 @@ pub const PROFILING_AVAILABLE: bool = cfg!(feature = "profile");
 pub struct InstrProfile {
     /// Wall-clock time spent in the instruction, nanoseconds (measured with
     /// `std::time::Instant` between consecutive instructions, so it includes the dispatch
-    /// and the timer's own cost).
+    /// and the timer's own cost; in a batch, between consecutive dispatches, each shared
+    /// equally among the members at the instruction).
     pub nanos: u64,
     /// Times the instruction ran.
     pub count: u64,
