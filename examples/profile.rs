@@ -1,6 +1,7 @@
 //! Per-node profile of a graph: runs a number of forward frames on the mannequin in an
 //! empty world with profiling on, then prints the 20 most expensive graph nodes and steps
-//! (what `strider bench --profile` prints). Needs the `profile` feature:
+//! (what `strider bench --profile --batch 1` prints for one character). Needs the
+//! `profile` feature:
 //!
 //! ```text
 //! cargo run --release --features profile --example profile -- [GRAPH] [FRAMES]

@@ -200,19 +200,25 @@ fn batched_crowd_frames_do_not_allocate() {
             Instance::new(Arc::clone(program), Arc::clone(&skeleton)).expect("instantiates")
         })
         .collect();
+    let n = batched_allocations(&mut crowd, true, 50);
+    assert_eq!(n, 0, "{n} allocations in 50 frames of 40 characters");
+}
+
+/// Allocations in `frames` frames of `crowd` run in batches (`debug` as given), after 10
+/// frames of warm-up; each character's time step one of 1/60 s, 1/30 s and 0.
+fn batched_allocations(crowd: &mut [Instance], debug: bool, frames: usize) -> u64 {
     let input = |k: usize| FrameInput {
         dt: [1.0 / 60.0, 1.0 / 30.0, 0.0][k % 3],
         ..Default::default()
     };
     for _ in 0..10 {
-        Instance::run_forward_batch(&mut crowd, input, &EmptyWorld, true);
+        Instance::run_forward_batch(crowd, input, &EmptyWorld, debug);
     }
-    let n = allocations_in(|| {
-        for _ in 0..50 {
-            Instance::run_forward_batch(&mut crowd, input, &EmptyWorld, true);
+    allocations_in(|| {
+        for _ in 0..frames {
+            Instance::run_forward_batch(crowd, input, &EmptyWorld, debug);
         }
-    });
-    assert_eq!(n, 0, "{n} allocations in 50 frames of 40 characters");
+    })
 }
 
 /// With the `profile` feature and profiling on, frames still allocate nothing: the
@@ -250,18 +256,7 @@ fn profiled_frames_do_not_allocate() {
             i
         })
         .collect();
-    let input = |k: usize| FrameInput {
-        dt: [1.0 / 60.0, 1.0 / 30.0][k % 2],
-        ..Default::default()
-    };
-    for _ in 0..10 {
-        Instance::run_forward_batch(&mut crowd, input, &EmptyWorld, false);
-    }
-    let n = allocations_in(|| {
-        for _ in 0..20 {
-            Instance::run_forward_batch(&mut crowd, input, &EmptyWorld, false);
-        }
-    });
+    let n = batched_allocations(&mut crowd, false, 20);
     assert_eq!(n, 0, "profiled batches: {n} allocations in 20 frames");
     assert!(
         crowd

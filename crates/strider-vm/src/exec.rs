@@ -1170,6 +1170,11 @@ pub(crate) fn run_batch(
     // is no timing code at all.
     #[cfg(feature = "profile")]
     let profiled = members[0].profile.is_some();
+    #[cfg(feature = "profile")]
+    debug_assert!(
+        members.iter().all(|cx| cx.profile.is_some() == profiled),
+        "a batch's members all profile, or none does"
+    );
     if !lanes_pay_off(code.len(), copies.lens) {
         // No lanes: the empty scratch is never loaded.
         let mut none = Lanes::default();
