@@ -159,6 +159,34 @@ struct Crowd {
 }
 
 impl Crowd {
+    /// The first `count` characters of the bench's crowd of `args.characters`: each an
+    /// instance of `program` with the `assignments` applied, at its offset into `track`
+    /// (the crowd's characters spread evenly over it), run in batches of `args.batch`.
+    fn first(
+        count: usize,
+        program: &Arc<Program>,
+        skeleton: &SkeletonFile,
+        args: &BenchArgs,
+        assignments: &[Assignment],
+        world: &World,
+        track: &Track,
+    ) -> anyhow::Result<Crowd> {
+        let characters = (args.characters as usize).max(1);
+        let mut instances = Vec::with_capacity(count);
+        for _ in 0..count {
+            let mut instance = instantiate(program, skeleton, &args.skeleton)?;
+            apply(&mut instance, skeleton, assignments, world)?;
+            instances.push(instance);
+        }
+        Ok(Crowd {
+            instances,
+            offsets: (0..count)
+                .map(|i| i * track.inputs.len() / characters)
+                .collect(),
+            batch: args.batch as usize,
+        })
+    }
+
     /// Runs every character one frame (`frame` counts from the start of the run). The timed
     /// frames run without `debug`; a batch run with it leaves every slot as running each
     /// character alone would (without it, the slots of values that live only within a run
@@ -252,20 +280,7 @@ pub(crate) fn run(args: &BenchArgs) -> anyhow::Result<ExitCode> {
     }
 
     let n = args.characters as usize;
-    let make_crowd = || -> anyhow::Result<Crowd> {
-        let mut instances = Vec::with_capacity(n);
-        for _ in 0..n {
-            let mut instance = instantiate(&program, &skeleton, &args.skeleton)?;
-            apply(&mut instance, &skeleton, &assignments, &world)?;
-            instances.push(instance);
-        }
-        let offsets = (0..n).map(|i| i * track.inputs.len() / n).collect();
-        Ok(Crowd {
-            instances,
-            offsets,
-            batch: args.batch as usize,
-        })
-    };
+    let make_crowd = || Crowd::first(n, &program, &skeleton, args, &assignments, &world, &track);
     let mut crowd = make_crowd()?;
     let mut native_crowd = match native {
         Some(_) => Some(make_crowd()?),
@@ -592,18 +607,8 @@ fn profile_top(
 ) -> anyhow::Result<ProfileTop> {
     // The crowd's first batch, as the bench runs it: its characters at their offsets
     // into the scenario, together (or each alone with `--batch 1`).
-    let n = args.characters as usize;
-    let k = (args.batch as usize).min(n).max(1);
-    let mut crowd = Crowd {
-        instances: Vec::with_capacity(k),
-        offsets: (0..k).map(|i| i * track.inputs.len() / n.max(1)).collect(),
-        batch: args.batch as usize,
-    };
-    for _ in 0..k {
-        let mut instance = instantiate(program, skeleton, &args.skeleton)?;
-        apply(&mut instance, skeleton, assignments, world)?;
-        crowd.instances.push(instance);
-    }
+    let k = (args.batch as usize).min(args.characters as usize).max(1);
+    let mut crowd = Crowd::first(k, program, skeleton, args, assignments, world, track)?;
     for f in 0..warm_up {
         crowd.run_frame(track, world, f, None, 1, false);
     }

@@ -383,9 +383,10 @@ impl Instance {
     /// Instances with profiling on are batched with each other only: each dispatch's time
     /// is shared among the members at it, each counted as having run the instruction (see
     /// `Instance::profile`, with the `profile` feature). The one latitude in
-    /// "bit-identical" is a NaN result's sign and payload bits, which Rust leaves open (a NaN stays a NaN). A program
-    /// with fewer than two instructions per scalar slot runs its batches on each instance's
-    /// own slots, without the vectorised loops, whose copies it would not win back.
+    /// "bit-identical" is a NaN result's sign and payload bits, which Rust leaves open (a
+    /// NaN stays a NaN). A program with fewer than two instructions per scalar slot runs
+    /// its batches on each instance's own slots, without the vectorised loops, whose
+    /// copies it would not win back.
     ///
     /// Without `debug`, a batch on lanes leaves alone the slots of values that live only
     /// within a run (node outputs that share a slot with others, see
