@@ -138,8 +138,8 @@ fn main() -> Result<(), Box<dyn Error>> {
     }
 
     // A crowd: many characters of one program, run together through each instruction
-    // (up to 16 at a time) with the same results as one by one. Keep instances of one
-    // program next to each other; for threads, hand each thread a chunk of the crowd.
+    // (up to 16 at a time, picked by the path their last frame took) with the same results
+    // as one by one. For threads, hand each thread a large chunk of the crowd.
     let mut crowd = (0..64)
         .map(|_| Instance::new(Arc::clone(&program), Arc::clone(&skeleton)))
         .collect::<Result<Vec<_>, _>>()?;

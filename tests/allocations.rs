@@ -186,8 +186,9 @@ fn feet_finder_and_other_input_poses_do_not_allocate() {
 
 #[test]
 fn batched_crowd_frames_do_not_allocate() {
-    // `Instance::run_forward_batch` gathers each batch's members on the stack: 40
-    // characters of two programs (batches of 16, 4, 16 and 4), debug drawing on.
+    // `Instance::run_forward_batch` gathers each batch's members on the stack and sorts
+    // the crowd's indices in a list the thread keeps: 40 characters of two programs,
+    // interleaved (batches of 16, 16 and 8), debug drawing on.
     let _guard = SERIAL.lock().unwrap_or_else(|e| e.into_inner());
     let locomotion = compile_file("graphs/locomotion.ron");
     let bob = compile_file("graphs/pelvis_bob.ron");

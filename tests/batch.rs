@@ -125,14 +125,16 @@ fn a_crowd_batches_tunables_set_by_the_host_like_each_character_alone() {
     // no instruction writes from the program and keeps them in the thread's lanes for the
     // program's next batch; a batch with a character whose tunable the host set to another
     // value brings each character's own, and so does a batch after it or after another
-    // program's. Five crowds take turns on this thread (batches of 16): locomotion, 48
-    // characters, one in the second batch with longer strides (`set_variable`), so the
-    // third batch must take the defaults again; locomotion compiled with a shorter swing by
-    // default (the same slots, other values in them), 17; locomotion with the defaults, 33
-    // (the second batch keeps the first's); locomotion with every character's swing
-    // shorter (the same value on all: `set_float`, and `set_variable` on one), 17; and
-    // locomotion with one character's stride set and set back to its default, 17. Each
-    // character must walk as it would alone, frame after frame.
+    // program's. Five crowds take turns on this thread (batches of 16, picked by path):
+    // locomotion, 48 characters, one with longer strides (`set_variable`; in the second
+    // batch on the first frame, when every path key is equal and the crowd keeps its
+    // order), so a batch after its batch must take the defaults again; locomotion
+    // compiled with a shorter swing by default (the same slots, other values in them), 17;
+    // locomotion with the defaults, 33 (the second batch keeps the first's); locomotion
+    // with every character's swing shorter (the same value on all: `set_float`, and
+    // `set_variable` on one), 17; and locomotion with one character's stride set and set
+    // back to its default, 17. Each character must walk as it would alone, frame after
+    // frame.
     use strider::nodes::Value;
     let locomotion = compile("graphs/locomotion.ron");
     let path = Path::new("graphs/locomotion.ron");
@@ -317,4 +319,79 @@ fn a_batch_solves_each_character_with_its_own_ik_axes() {
         a.iter().zip(b).any(|(x, y)| !x.bit_eq(y))
     };
     assert!(differ(&pose(0), &pose(2)) && differ(&pose(0), &pose(4)));
+}
+
+/// A graph whose run takes a branch's jump for the items of `Flags` that differ from
+/// `Swap`: with `Swap` false the first item's, with it true the second's. The same jumps,
+/// in another order.
+const TWO_BRANCHES: &str = r#"
+Graph(
+    version: 1,
+    name: "two_branches",
+    variables: {
+        "Flags": (type: BoolArray, default: [true, false]),
+        "Swap":  (type: Bool, default: false, tunable: true),
+        "Taken": (type: Int),
+    },
+    nodes: {
+        "differs":    Xor(a: "flag", b: var("Swap")),
+        "taken_next": Add(a: var("Taken"), b: 1),
+    },
+    events: {
+        forward: [
+            Set("Taken", 0),
+            ForEach(items: var("Flags"), element: "flag", body: [
+                Branch(condition: "differs", then: [ Set("Taken", "taken_next") ]),
+            ]),
+        ],
+    },
+)
+"#;
+
+#[test]
+fn path_keys_name_the_jumps_in_their_order_alone_or_batched() {
+    use strider::nodes::Value;
+    let program = strider::compiler::compile_str(Path::new("two_branches.ron"), TWO_BRANCHES)
+        .map(Arc::new)
+        .unwrap_or_else(|d| panic!("{d:?}"));
+    let swap = program.variable_id("Swap").expect("Swap");
+    let taken = program.variable_id("Taken").expect("Taken");
+    let skeleton = mannequin();
+    // Instances 0, 2 and 4 keep `Swap` false; 1, 3 and 5 set it.
+    let make = || -> Vec<Instance> {
+        (0..6)
+            .map(|k| {
+                let mut instance =
+                    Instance::new(Arc::clone(&program), Arc::clone(&skeleton)).unwrap();
+                instance
+                    .set_variable(swap, &Value::Bool(k % 2 == 1))
+                    .expect("a bool");
+                instance
+            })
+            .collect()
+    };
+    let (mut batched, mut alone) = (make(), make());
+    for instance in &mut alone {
+        instance.run_forward(&FrameInput::default(), &EmptyWorld, false);
+    }
+    // Both kinds take one of the two branches: the same jumps, in another order.
+    for instance in &alone {
+        assert_eq!(instance.variable(taken), Value::Int(1));
+    }
+    let (straight, swapped) = (alone[0].path_key(), alone[1].path_key());
+    assert_ne!(straight, swapped, "the same jumps in another order");
+    for (k, instance) in alone.iter().enumerate() {
+        let expected = if k % 2 == 0 { straight } else { swapped };
+        assert_eq!(instance.path_key(), expected, "instance {k} alone");
+    }
+    // Batched: the first frame mixes both kinds in one batch (every key is the
+    // construction run's before it), the second batches each kind apart; the keys are the
+    // same as alone every time.
+    for f in 0..2 {
+        Instance::run_forward_batch(&mut batched, |_| FrameInput::default(), &EmptyWorld, false);
+        for (k, (a, b)) in batched.iter().zip(&alone).enumerate() {
+            assert_eq!(a.path_key(), b.path_key(), "instance {k}, frame {f}");
+            assert_eq!(a.variable(taken), Value::Int(1), "instance {k}, frame {f}");
+        }
+    }
 }

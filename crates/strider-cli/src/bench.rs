@@ -16,7 +16,7 @@ use strider_graph::SkeletonFile;
 use strider_host::scenario::{Scenario, Simulation};
 use strider_host::world::World;
 use strider_vm::native::NativeProgram;
-use strider_vm::{FrameInput, InputPose, Instance, Program};
+use strider_vm::{BATCH, FrameInput, InputPose, Instance, Program};
 
 /// A 60 Hz frame, in nanoseconds: the budget `characters_per_16ms` divides.
 const FRAME_BUDGET_NS: f64 = 1e9 / 60.0;
@@ -78,7 +78,8 @@ pub(crate) struct BenchArgs {
     #[arg(long)]
     pub json: bool,
 
-    /// Also profile the crowd's first batch (one character with `--batch 1`) and print the
+    /// Also profile the crowd as it runs (its first batch with a smaller `--batch`, one
+    /// character with `--batch 1`) and print the
     /// 20 graph nodes with the most time per character-frame (needs a build with
     /// `--features profile`).
     #[arg(long)]
@@ -213,15 +214,23 @@ impl Crowd {
                 Instance::run_forward_batch(instances, |k| input(offsets[k]), world, debug);
             };
             let (instances, offsets) = (&mut self.instances, &self.offsets);
+            // A full batch: each thread's share of the crowd in one call, which picks the
+            // batches (characters whose last frames took one path together). A smaller
+            // one: the crowd in batches of that size, in order.
+            let chunk = if self.batch == BATCH {
+                instances.len().div_ceil(threads as usize).max(1)
+            } else {
+                self.batch
+            };
             if threads == 1 {
                 instances
-                    .chunks_mut(self.batch)
-                    .zip(offsets.chunks(self.batch))
+                    .chunks_mut(chunk)
+                    .zip(offsets.chunks(chunk))
                     .for_each(run);
             } else {
                 instances
-                    .par_chunks_mut(self.batch)
-                    .zip(offsets.par_chunks(self.batch))
+                    .par_chunks_mut(chunk)
+                    .zip(offsets.par_chunks(chunk))
                     .for_each(run);
             }
             return;
@@ -605,9 +614,15 @@ fn profile_top(
     world: &World,
     warm_up: usize,
 ) -> anyhow::Result<ProfileTop> {
-    // The crowd's first batch, as the bench runs it: its characters at their offsets
-    // into the scenario, together (or each alone with `--batch 1`).
-    let k = (args.batch as usize).min(args.characters as usize).max(1);
+    // The crowd as the bench runs it, batched by path (with a smaller `--batch`, its first
+    // batch; with `--batch 1`, its first character alone), each character at its offset
+    // into the scenario.
+    let k = if args.batch as usize == BATCH {
+        args.characters as usize
+    } else {
+        (args.batch as usize).min(args.characters as usize)
+    }
+    .max(1);
     let mut crowd = Crowd::first(k, program, skeleton, args, assignments, world, track)?;
     for f in 0..warm_up {
         crowd.run_frame(track, world, f, None, 1, false);

@@ -64,6 +64,11 @@ pub(crate) struct Ctx<'a> {
     /// Number of this run (construction or frame), never 0: stateful nodes advance once per
     /// run and remember the run they last advanced in.
     pub run: i32,
+    /// The run's path key, written when the run ends: the jumps it took, in order, folded
+    /// by [`next_path`]. Two runs through the same instructions have the same key, whether
+    /// they ran alone or batched; `Instance::run_forward_batch` batches instances whose last
+    /// frames had the same key, which likely take one path again.
+    pub path: u64,
     /// Where to accumulate per-instruction time and counts (indexed by instruction), when
     /// profiling is on.
     #[cfg(feature = "profile")]
@@ -91,10 +96,22 @@ impl<'a> Ctx<'a> {
             to_world_matrix: Affine3A::IDENTITY,
             from_world_matrix: Affine3A::IDENTITY,
             run: 1,
+            path: 0,
             #[cfg(feature = "profile")]
             profile: None,
         }
     }
+}
+
+/// A run's path key ([`Ctx::path`]) `path` after a jump from instruction `pc`: the key
+/// turned by 7 bits, then the instruction's number spread over 64 bits (by the golden
+/// ratio's multiplier) mixed in. The turn makes the key depend on the jumps' order, not
+/// only on which were taken: a character whose left foot is planted and right foot
+/// swinging takes the same jumps as one the other way round, in another order, and the
+/// two part ways inside every loop over the feet.
+#[inline(always)]
+pub(crate) fn next_path(path: u64, pc: usize) -> u64 {
+    path.rotate_left(7) ^ (pc as u64 + 1).wrapping_mul(0x9E37_79B9_7F4A_7C15)
 }
 
 /// A bone slot's value as an index into the pose, if it names a bone.
@@ -1073,6 +1090,7 @@ fn run_loop<const PROFILE: bool>(
     // before it to its own end.
     #[cfg(feature = "profile")]
     let mut last = PROFILE.then(std::time::Instant::now);
+    let mut path = 0u64;
     loop {
         #[cfg(feature = "profile")]
         let here = pc;
@@ -1081,9 +1099,11 @@ fn run_loop<const PROFILE: bool>(
         let Instr { op, args } = unsafe { *code.get_unchecked(pc) };
         pc += 1;
         macro_rules! jump {
-            ($target:expr) => {
-                pc = $target
-            };
+            ($target:expr) => {{
+                // The jump is from the instruction before `pc`.
+                path = next_path(path, pc - 1);
+                pc = $target;
+            }};
         }
         macro_rules! end {
             () => {{
@@ -1092,6 +1112,7 @@ fn run_loop<const PROFILE: bool>(
                     // `End` counts as run but takes no time of its own.
                     profile[here].count += 1;
                 }
+                cx.path = path;
                 return;
             }};
         }
@@ -1122,8 +1143,9 @@ fn run_loop<const PROFILE: bool>(
     }
 }
 
-/// The most instances [`run_batch`] runs together.
-pub(crate) const BATCH: usize = 16;
+/// The most instances one batch of [`crate::Instance::run_forward_batch`] runs together
+/// through each instruction.
+pub const BATCH: usize = 16;
 
 /// Runs from `entry` until an `End` instruction on every member of a batch, dispatching each
 /// instruction once for all the members that are at it: their handlers run one after the
@@ -1309,6 +1331,8 @@ fn run_group<const LANES: bool, const PROFILE: bool>(
     // Where each member outside the group is (`END` once it has ended); the group's members
     // are all at `pc`.
     let mut pcs = [END; BATCH];
+    // The members' path keys (`Ctx::path`) so far.
+    let mut paths = [0u64; BATCH];
     let mut pc = entry as usize;
     let everyone: u32 = (1u32 << n) - 1;
     let mut group = everyone;
@@ -1389,7 +1413,7 @@ fn run_group<const LANES: bool, const PROFILE: bool>(
         // Where the first member that jumped went, and whether another went elsewhere.
         let mut common = END;
         let mut split = false;
-        macro_rules! jump {
+        macro_rules! go {
             ($target:expr) => {{
                 let target = $target;
                 if moved == 0 {
@@ -1401,9 +1425,15 @@ fn run_group<const LANES: bool, const PROFILE: bool>(
                 moved |= 1 << m;
             }};
         }
+        macro_rules! jump {
+            ($target:expr) => {{
+                paths[m] = next_path(paths[m], pc);
+                go!($target)
+            }};
+        }
         macro_rules! end {
             () => {
-                jump!(END)
+                go!(END)
             };
         }
         if LANES && group == everyone {
@@ -1412,6 +1442,7 @@ fn run_group<const LANES: bool, const PROFILE: bool>(
             // on all lanes together.
             match op {
                 Op::Jump => {
+                    paths = paths.map(|p| next_path(p, pc));
                     pc = o[0] as usize;
                     continue;
                 }
@@ -1423,6 +1454,7 @@ fn run_group<const LANES: bool, const PROFILE: bool>(
                             continue;
                         }
                         Some(false) => {
+                            paths = paths.map(|p| next_path(p, pc));
                             pc = o[1] as usize;
                             continue;
                         }
@@ -1446,6 +1478,7 @@ fn run_group<const LANES: bool, const PROFILE: bool>(
                             continue;
                         }
                         Some(false) => {
+                            paths = paths.map(|p| next_path(p, pc));
                             pc = o[5] as usize;
                             continue;
                         }
@@ -1532,6 +1565,9 @@ fn run_group<const LANES: bool, const PROFILE: bool>(
                 }
                 if LANES {
                     lanes.store(copies, members);
+                }
+                for (cx, path) in members.iter_mut().zip(paths) {
+                    cx.path = path;
                 }
                 return dispatches;
             }

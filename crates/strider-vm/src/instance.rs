@@ -133,6 +133,9 @@ pub struct Instance {
     /// instances at 0 takes those slots from the program, once for as long as the thread's
     /// lanes run this program.
     unwritten_changed: u32,
+    /// The path key of the last run ([`Ctx::path`](crate::exec::Ctx)): which jumps it took.
+    /// `Instance::run_forward_batch` batches instances with equal keys together.
+    path: u64,
     /// Whether runs accumulate into `profile`.
     #[cfg(feature = "profile")]
     profiling: bool,
@@ -161,6 +164,7 @@ impl Instance {
             runs: 0,
             native_checked: None,
             unwritten_changed: 0,
+            path: 0,
             #[cfg(feature = "profile")]
             profiling: false,
             #[cfg(feature = "profile")]
@@ -192,6 +196,7 @@ impl Instance {
             native_checked: self.native_checked,
             // Counted once the tunables are copied, below.
             unwritten_changed: 0,
+            path: 0,
             #[cfg(feature = "profile")]
             profiling: self.profiling,
             #[cfg(feature = "profile")]
@@ -378,11 +383,15 @@ impl Instance {
     /// `Arc`) go through the interpreter up to 16 at a time, each instruction dispatched
     /// once for all of them (instances that branch apart continue separately and meet again
     /// where their paths do), and while all of them are at one instruction its plain
-    /// scalar math runs for all of them as one vectorised loop. Consecutive instances are
-    /// batched together, so keep a crowd's instances of one program next to each other.
-    /// Instances with profiling on are batched with each other only: each dispatch's time
-    /// is shared among the members at it, each counted as having run the instruction (see
-    /// `Instance::profile`, with the `profile` feature). The one latitude in
+    /// scalar math runs for all of them as one vectorised loop. The batches are picked from
+    /// the whole of `crowd`: instances of one program whose last frames took the same path
+    /// through it ([`Instance::path_key`]) go together in whole batches of 16, as they
+    /// likely take one path again (characters at different points of their walk cycles
+    /// branch apart at every foot; batched by path, they rarely do); the others go in
+    /// crowd order, so keep characters that are placed and started alike next to each
+    /// other. Which instances share a batch never changes any result. Instances with profiling on are batched with each other only: each
+    /// dispatch's time is shared among the members at it, each counted as having run the
+    /// instruction (see `Instance::profile`, with the `profile` feature). The one latitude in
     /// "bit-identical" is a NaN result's sign and payload bits, which Rust leaves open (a
     /// NaN stays a NaN). A program with fewer than two instructions per scalar slot runs
     /// its batches on each instance's own slots, without the vectorised loops, whose
@@ -395,35 +404,52 @@ impl Instance {
     /// copies back every slot an instruction writes, so every pin value reads as after
     /// [`Instance::run_forward`].
     ///
-    /// For threads, split the crowd into chunks (e.g. rayon's `par_chunks_mut(64)`) and call
-    /// this on each. Allocates nothing after warm-up: each thread keeps one scratch copy of
-    /// 16 instances' scalar slots, made by its first batch.
+    /// For threads, split the crowd into a few large chunks (rayon's `par_chunks_mut` with
+    /// a chunk of the crowd's size divided by the thread count, say) and call this on each:
+    /// the larger the chunk, the more instances there are to pick each batch's path-sharing
+    /// members from. Allocates nothing after warm-up: each thread keeps one scratch copy of
+    /// 16 instances' scalar slots, made by its first batch, and one list of a crowd's
+    /// indices, grown to the largest crowd it has run.
     pub fn run_forward_batch<'i>(
         crowd: &mut [Instance],
         mut input: impl FnMut(usize) -> FrameInput<'i>,
         world: &dyn WorldQuery,
         debug: bool,
     ) {
+        // The thread's scratch lists, grown once.
+        let [mut order, mut rest] = ORDER.with(std::cell::Cell::take);
+        batch_order(crowd, &mut order, &mut rest);
         let mut start = 0;
-        while start < crowd.len() {
-            let first = &crowd[start];
+        while start < order.len() {
+            let first = &crowd[order[start] as usize];
             let mut end = start + 1;
-            while end < crowd.len()
+            while end < order.len()
                 && end - start < exec::BATCH
-                && Arc::ptr_eq(&crowd[end].program, &first.program)
-                && crowd[end].is_profiling() == first.is_profiling()
+                && Arc::ptr_eq(&crowd[order[end] as usize].program, &first.program)
+                && crowd[order[end] as usize].is_profiling() == first.is_profiling()
             {
                 end += 1;
             }
-            let batch = &mut crowd[start..end];
-            if let [single] = batch {
-                single.run_forward(&input(start), world, debug);
+            // The batch's instances in crowd order: picked from one pass over the crowd.
+            let batch = &mut order[start..end];
+            batch.sort_unstable();
+            if let [single] = *batch {
+                let single = single as usize;
+                crowd[single].run_forward(&input(single), world, debug);
             } else {
                 let mut program = None;
                 let mut members = smallvec::SmallVec::<[Ctx<'_>; exec::BATCH]>::new();
-                let unwritten_initial = batch.iter().all(|i| i.unwritten_changed == 0);
-                for (k, instance) in batch.iter_mut().enumerate() {
-                    let dt = instance.begin_frame(&input(start + k), debug);
+                let mut rest = crowd.iter_mut();
+                let mut next = 0;
+                let mut unwritten_initial = true;
+                for &i in batch.iter() {
+                    let i = i as usize;
+                    let instance = rest
+                        .nth(i - next)
+                        .expect("a batch's indices are the crowd's, ascending");
+                    next = i + 1;
+                    unwritten_initial &= instance.unwritten_changed == 0;
+                    let dt = instance.begin_frame(&input(i), debug);
                     let (p, cx) = instance.event_context(world, dt);
                     program = Some(p);
                     members.push(cx);
@@ -445,16 +471,26 @@ impl Instance {
                         &mut members,
                     );
                 }
+                let paths: smallvec::SmallVec<[u64; exec::BATCH]> =
+                    members.iter().map(|cx| cx.path).collect();
+                drop(members);
+                for (&i, path) in batch.iter().zip(paths) {
+                    crowd[i as usize].path = path;
+                }
             }
             start = end;
         }
+        ORDER.with(|cell| cell.set([order, rest]));
     }
 
     /// Runs an event's code on this instance.
     fn run_event(&mut self, body: Body, world: &dyn WorldQuery, dt: f32) {
         let (program, mut cx) = self.event_context(world, dt);
         match body {
-            Body::Program(entry) => exec::run(program, entry, &mut cx),
+            Body::Program(entry) => {
+                exec::run(program, entry, &mut cx);
+                self.path = cx.path;
+            }
             Body::Native(forward) => {
                 #[cfg(feature = "profile")]
                 {
@@ -494,10 +530,22 @@ impl Instance {
             to_world_matrix,
             from_world_matrix,
             run: next_run(&mut self.runs),
+            path: 0,
             #[cfg(feature = "profile")]
             profile: self.profiling.then_some(&mut self.profile[..]),
         };
         (&self.program, cx)
+    }
+
+    /// The key of the path the last run took through the program: the jumps it took, in
+    /// order, folded into 64 bits. Runs through the same instructions have the same key,
+    /// alone or batched; different paths almost always have different ones. Before the
+    /// first frame, the construction run's key. [`Instance::run_forward_batch`] batches
+    /// instances with equal keys together; a host that splits a crowd between threads
+    /// itself can sort by it first.
+    #[must_use]
+    pub fn path_key(&self) -> u64 {
+        self.path
     }
 
     /// The output pose. Call [`Pose::globals`] on it for rig-space transforms.
@@ -658,6 +706,55 @@ impl Instance {
     }
 }
 
+/// The order `Instance::run_forward_batch` takes `crowd`'s instances in, as indices into it
+/// (in `order`; `rest` is scratch), consecutive instances of one program forming its
+/// batches. First, for each program (and profiling choice), its instances whose last runs
+/// took the same path ([`Instance::path_key`]) as at least [`exec::BATCH`] others, in full
+/// batches of one path each: they likely take that path again, and a batch whose members
+/// take one path dispatches each instruction once for all of them. Then the rest of its
+/// instances, in crowd order (a path's last few, and the paths too rare to fill a
+/// batch), where neighbours in the crowd often share much of their paths (characters
+/// placed and started alike). Ties in crowd order everywhere.
+fn batch_order(crowd: &[Instance], order: &mut Vec<u32>, rest: &mut Vec<u32>) {
+    let program = |i: u32| {
+        let instance = &crowd[i as usize];
+        (
+            Arc::as_ptr(&instance.program) as usize,
+            instance.is_profiling(),
+        )
+    };
+    order.clear();
+    order.extend(0..crowd.len() as u32);
+    order.sort_unstable_by_key(|&i| (program(i), crowd[i as usize].path, i));
+    // Each run of one path keeps its whole batches in place, moved up over the
+    // remainders taken out before them; the remainders go to `rest`.
+    rest.clear();
+    let (mut read, mut write) = (0, 0);
+    while read < order.len() {
+        let first = order[read];
+        let key = (program(first), crowd[first as usize].path);
+        let mut end = read + 1;
+        while end < order.len() && (program(order[end]), crowd[order[end] as usize].path) == key {
+            end += 1;
+        }
+        let whole = (end - read) / exec::BATCH * exec::BATCH;
+        order.copy_within(read..read + whole, write);
+        write += whole;
+        rest.extend_from_slice(&order[read + whole..end]);
+        read = end;
+    }
+    order.truncate(write);
+    rest.sort_unstable_by_key(|&i| (program(i), i));
+    order.extend_from_slice(rest);
+}
+
+thread_local! {
+    /// Each thread's scratch lists of a crowd's indices for `Instance::run_forward_batch`
+    /// (its order, and the instances outside whole batches of one path), grown to the
+    /// largest crowd once.
+    static ORDER: std::cell::Cell<[Vec<u32>; 2]> = const { std::cell::Cell::new([Vec::new(), Vec::new()]) };
+}
+
 /// The code an event runs.
 enum Body {
     /// The interpreter, from this instruction.
@@ -714,6 +811,86 @@ mod tests {
     use crate::program::VariableInfo;
     use crate::tests::one_bone;
     use strider_nodes::Op;
+
+    /// A crowd's batch order: for each program (in the order of their addresses), whole
+    /// batches of instances whose last runs took one path, in key order; then each
+    /// program's other instances in crowd order. Profiling instances count as a program of
+    /// their own.
+    #[test]
+    fn a_crowd_is_ordered_in_whole_batches_of_one_path_then_in_crowd_order() {
+        let program = |name: &str| {
+            let mut pb = ProgramBuilder::new(name);
+            pb.set_forward_entry(pb.here());
+            pb.emit(Op::End, &[]);
+            Arc::new(pb.finish())
+        };
+        let (a, b) = (program("a"), program("b"));
+        // Program a: 17 instances of path 5 and 16 of path 2, interleaved, then 7 of path
+        // 9 (too few for a batch); program b: 3 of path 2, between them.
+        let mut of: Vec<(&Arc<Program>, u64)> = Vec::new();
+        for k in 0..33 {
+            of.push((&a, if k % 2 == 0 { 5 } else { 2 }));
+            if k % 11 == 0 {
+                of.push((&b, 2));
+            }
+        }
+        of.extend([(&a, 9); 7]);
+        let crowd: Vec<Instance> = of
+            .iter()
+            .map(|&(p, path)| {
+                let mut instance = Instance::new(Arc::clone(p), one_bone()).expect("instance");
+                instance.path = path;
+                instance
+            })
+            .collect();
+        let of_path = |p: &Arc<Program>, path: u64| -> Vec<u32> {
+            (0..of.len() as u32)
+                .filter(|&i| Arc::ptr_eq(of[i as usize].0, p) && of[i as usize].1 == path)
+                .collect()
+        };
+        let of_program = |p: &Arc<Program>| -> Vec<u32> {
+            (0..of.len() as u32)
+                .filter(|&i| Arc::ptr_eq(of[i as usize].0, p))
+                .collect()
+        };
+        let (twos, fives) = (of_path(&a, 2), of_path(&a, 5));
+        assert_eq!((twos.len(), fives.len()), (16, 17));
+        // a's whole batches: path 2's 16, path 5's first 16; the rest in crowd order.
+        let whole = [twos.clone(), fives[..16].to_vec()].concat();
+        let rest_a: Vec<u32> = of_program(&a)
+            .into_iter()
+            .filter(|i| !whole.contains(i))
+            .collect();
+        let rest_b = of_program(&b);
+        let a_first = Arc::as_ptr(&a) < Arc::as_ptr(&b);
+        let by_program = |of_a: Vec<u32>, of_b: Vec<u32>| {
+            if a_first {
+                [of_a, of_b].concat()
+            } else {
+                [of_b, of_a].concat()
+            }
+        };
+        let expected = [whole, by_program(rest_a, rest_b.clone())].concat();
+        let (mut order, mut rest) = (vec![99], vec![98]);
+        batch_order(&crowd, &mut order, &mut rest);
+        assert_eq!(order, expected);
+        #[cfg(feature = "profile")]
+        {
+            // One of path 2's instances profiles: it is of a program of its own (after a's
+            // plain one), and path 2 no longer fills a batch.
+            let mut crowd = crowd;
+            let profiling = twos[3];
+            crowd[profiling as usize].set_profiling(true);
+            batch_order(&crowd, &mut order, &mut rest);
+            let plain_rest: Vec<u32> = of_program(&a)
+                .into_iter()
+                .filter(|i| !fives[..16].contains(i) && *i != profiling)
+                .collect();
+            let rest_a = [plain_rest, vec![profiling]].concat();
+            let expected = [fives[..16].to_vec(), by_program(rest_a, rest_b)].concat();
+            assert_eq!(order, expected);
+        }
+    }
 
     /// The count of unwritten slots that differ from the program's follows the host's
     /// writes bit for bit: up when a tunable is set to another value, not again when it

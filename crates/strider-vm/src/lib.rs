@@ -36,6 +36,7 @@ pub mod slots;
 mod transpose;
 
 pub use batch_code::{BatchCode, allow_avx2, batch_code};
+pub use exec::BATCH;
 pub use instance::{
     FrameInput, InputPose, Instance, InstantiateError, MissingBone, NativeMismatch, VariableError,
 };
