@@ -72,6 +72,13 @@ fn batched_equals_alone(graph: &str, scenario: &str, hz: u32, characters: usize,
         }
         for (k, (a, b)) in batched.iter().zip(&alone).enumerate() {
             common::assert_same_frame(&what, &program, k, f, a, b);
+            // The path key too: batched on lanes, a jump the whole batch takes is folded
+            // into every member's key at once, each member's own into its own.
+            assert_eq!(
+                a.path_key(),
+                b.path_key(),
+                "{what}: character {k}'s path key at frame {f}"
+            );
         }
     }
     for (k, (a, b)) in batched.iter().zip(&alone).enumerate() {
@@ -321,9 +328,9 @@ fn a_batch_solves_each_character_with_its_own_ik_axes() {
     assert!(differ(&pose(0), &pose(2)) && differ(&pose(0), &pose(4)));
 }
 
-/// A graph whose run takes a branch's jump for the items of `Flags` that differ from
-/// `Swap`: with `Swap` false the first item's, with it true the second's. The same jumps,
-/// in another order.
+/// A graph whose run jumps past a branch's body for the items of `Flags` equal to `Swap`
+/// (its `JumpIfFalse` on `differs`): with `Swap` false the second item's, with it true
+/// the first's. The same jumps, in another order.
 const TWO_BRANCHES: &str = r#"
 Graph(
     version: 1,
@@ -384,9 +391,10 @@ fn path_keys_name_the_jumps_in_their_order_alone_or_batched() {
         let expected = if k % 2 == 0 { straight } else { swapped };
         assert_eq!(instance.path_key(), expected, "instance {k} alone");
     }
-    // Batched: the first frame mixes both kinds in one batch (every key is the
-    // construction run's before it), the second batches each kind apart; the keys are the
-    // same as alone every time.
+    // Batched: six instances are too few for a whole batch of one path, so every frame
+    // runs them as one batch in crowd order, the two kinds parting at each branch; the
+    // keys are the same as alone every time. (The locomotion crowds above compare keys on
+    // lanes, where whole-batch jumps fold into every member's key at once.)
     for f in 0..2 {
         Instance::run_forward_batch(&mut batched, |_| FrameInput::default(), &EmptyWorld, false);
         for (k, (a, b)) in batched.iter().zip(&alone).enumerate() {

@@ -104,14 +104,16 @@ impl<'a> Ctx<'a> {
 }
 
 /// A run's path key ([`Ctx::path`]) `path` after a jump from instruction `pc`: the key
-/// turned by 7 bits, then the instruction's number spread over 64 bits (by the golden
-/// ratio's multiplier) mixed in. The turn makes the key depend on the jumps' order, not
-/// only on which were taken: a character whose left foot is planted and right foot
-/// swinging takes the same jumps as one the other way round, in another order, and the
-/// two part ways inside every loop over the feet.
+/// turned by 5 bits, the instruction's number mixed in, and the whole multiplied by the
+/// golden ratio's 64-bit constant (FxHash's step). The turn makes the key depend on the
+/// jumps' order, not only on which were taken: a character whose left foot is planted
+/// and right foot swinging takes the same jumps as one the other way round, in another
+/// order, and the two part ways inside every loop over the feet. The multiplication
+/// keeps the key from being a linear function of the jumps (with turns and exclusive-ors
+/// alone, loops whose trip counts differ by 64 could fold to one key).
 #[inline(always)]
 pub(crate) fn next_path(path: u64, pc: usize) -> u64 {
-    path.rotate_left(7) ^ (pc as u64 + 1).wrapping_mul(0x9E37_79B9_7F4A_7C15)
+    (path.rotate_left(5) ^ (pc as u64 + 1)).wrapping_mul(0x9E37_79B9_7F4A_7C15)
 }
 
 /// A bone slot's value as an index into the pose, if it names a bone.

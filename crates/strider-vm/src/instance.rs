@@ -387,9 +387,10 @@ impl Instance {
     /// the whole of `crowd`: instances of one program whose last frames took the same path
     /// through it ([`Instance::path_key`]) go together in whole batches of 16, as they
     /// likely take one path again (characters at different points of their walk cycles
-    /// branch apart at every foot; batched by path, they rarely do); the others go in
-    /// crowd order, so keep characters that are placed and started alike next to each
-    /// other. Which instances share a batch never changes any result. Instances with profiling on are batched with each other only: each
+    /// branch apart at every foot; batched by path, they rarely do); after all of those,
+    /// the others go in crowd order, so keep characters that are placed and started alike
+    /// next to each other. Which instances share a batch never changes any result;
+    /// `input` is called once per instance, in that order (not the crowd's). Instances with profiling on are batched with each other only: each
     /// dispatch's time is shared among the members at it, each counted as having run the
     /// instruction (see `Instance::profile`, with the `profile` feature). The one latitude in
     /// "bit-identical" is a NaN result's sign and payload bits, which Rust leaves open (a
@@ -405,11 +406,12 @@ impl Instance {
     /// [`Instance::run_forward`].
     ///
     /// For threads, split the crowd into a few large chunks (rayon's `par_chunks_mut` with
-    /// a chunk of the crowd's size divided by the thread count, say) and call this on each:
+    /// a chunk of the crowd's size divided by the thread count, rounded up, at least 1) and call this on each:
     /// the larger the chunk, the more instances there are to pick each batch's path-sharing
     /// members from. Allocates nothing after warm-up: each thread keeps one scratch copy of
-    /// 16 instances' scalar slots, made by its first batch, and one list of a crowd's
-    /// indices, grown to the largest crowd it has run.
+    /// 16 instances' scalar slots, made by its first batch, and two lists of a crowd's
+    /// indices, grown to the largest crowd it has run (a batch run from inside another on
+    /// the same thread, by a world query that runs a rig of its own, makes its own).
     pub fn run_forward_batch<'i>(
         crowd: &mut [Instance],
         mut input: impl FnMut(usize) -> FrameInput<'i>,
@@ -421,12 +423,12 @@ impl Instance {
         batch_order(crowd, &mut order, &mut rest);
         let mut start = 0;
         while start < order.len() {
-            let first = &crowd[order[start] as usize];
+            let first = &crowd[order[start]];
             let mut end = start + 1;
             while end < order.len()
                 && end - start < exec::BATCH
-                && Arc::ptr_eq(&crowd[order[end] as usize].program, &first.program)
-                && crowd[order[end] as usize].is_profiling() == first.is_profiling()
+                && Arc::ptr_eq(&crowd[order[end]].program, &first.program)
+                && crowd[order[end]].is_profiling() == first.is_profiling()
             {
                 end += 1;
             }
@@ -434,7 +436,6 @@ impl Instance {
             let batch = &mut order[start..end];
             batch.sort_unstable();
             if let [single] = *batch {
-                let single = single as usize;
                 crowd[single].run_forward(&input(single), world, debug);
             } else {
                 let mut program = None;
@@ -443,7 +444,6 @@ impl Instance {
                 let mut next = 0;
                 let mut unwritten_initial = true;
                 for &i in batch.iter() {
-                    let i = i as usize;
                     let instance = rest
                         .nth(i - next)
                         .expect("a batch's indices are the crowd's, ascending");
@@ -475,7 +475,7 @@ impl Instance {
                     members.iter().map(|cx| cx.path).collect();
                 drop(members);
                 for (&i, path) in batch.iter().zip(paths) {
-                    crowd[i as usize].path = path;
+                    crowd[i].path = path;
                 }
             }
             start = end;
@@ -537,8 +537,8 @@ impl Instance {
         (&self.program, cx)
     }
 
-    /// The key of the path the last run took through the program: the jumps it took, in
-    /// order, folded into 64 bits. Runs through the same instructions have the same key,
+    /// The key of the path the last interpreted run took through the program (a run of
+    /// native code leaves it as it was): the jumps it took, in order, folded into 64 bits. Runs through the same instructions have the same key,
     /// alone or batched; different paths almost always have different ones. Before the
     /// first frame, the construction run's key. [`Instance::run_forward_batch`] batches
     /// instances with equal keys together; a host that splits a crowd between threads
@@ -708,33 +708,35 @@ impl Instance {
 
 /// The order `Instance::run_forward_batch` takes `crowd`'s instances in, as indices into it
 /// (in `order`; `rest` is scratch), consecutive instances of one program forming its
-/// batches. First, for each program (and profiling choice), its instances whose last runs
-/// took the same path ([`Instance::path_key`]) as at least [`exec::BATCH`] others, in full
-/// batches of one path each: they likely take that path again, and a batch whose members
-/// take one path dispatches each instruction once for all of them. Then the rest of its
-/// instances, in crowd order (a path's last few, and the paths too rare to fill a
-/// batch), where neighbours in the crowd often share much of their paths (characters
-/// placed and started alike). Ties in crowd order everywhere.
-fn batch_order(crowd: &[Instance], order: &mut Vec<u32>, rest: &mut Vec<u32>) {
-    let program = |i: u32| {
-        let instance = &crowd[i as usize];
+/// batches. First, program by program (and profiling choice by choice), whole batches of
+/// [`exec::BATCH`] instances whose last runs took one path ([`Instance::path_key`]): they
+/// likely take that path again, and a batch whose members take one path dispatches each
+/// instruction once for all of them. Then, program by program, the other instances in
+/// crowd order (a path's last few, and the paths too rare to fill a batch), where
+/// neighbours in the crowd often share much of their paths (characters placed and started
+/// alike). Ties in crowd order everywhere.
+fn batch_order(crowd: &[Instance], order: &mut Vec<usize>, rest: &mut Vec<usize>) {
+    let program = |i: usize| {
+        let instance = &crowd[i];
         (
             Arc::as_ptr(&instance.program) as usize,
             instance.is_profiling(),
         )
     };
     order.clear();
-    order.extend(0..crowd.len() as u32);
-    order.sort_unstable_by_key(|&i| (program(i), crowd[i as usize].path, i));
+    order.extend(0..crowd.len());
+    order.sort_unstable_by_key(|&i| (program(i), crowd[i].path, i));
     // Each run of one path keeps its whole batches in place, moved up over the
-    // remainders taken out before them; the remainders go to `rest`.
+    // remainders taken out before them; the remainders go to `rest` (reserved for the
+    // whole crowd, so that a crowd falling out of step later does not grow it).
     rest.clear();
+    rest.reserve(crowd.len());
     let (mut read, mut write) = (0, 0);
     while read < order.len() {
-        let first = order[read];
-        let key = (program(first), crowd[first as usize].path);
+        let key = |i: usize| (program(i), crowd[i].path);
+        let first = key(order[read]);
         let mut end = read + 1;
-        while end < order.len() && (program(order[end]), crowd[order[end] as usize].path) == key {
+        while end < order.len() && key(order[end]) == first {
             end += 1;
         }
         let whole = (end - read) / exec::BATCH * exec::BATCH;
@@ -752,7 +754,7 @@ thread_local! {
     /// Each thread's scratch lists of a crowd's indices for `Instance::run_forward_batch`
     /// (its order, and the instances outside whole batches of one path), grown to the
     /// largest crowd once.
-    static ORDER: std::cell::Cell<[Vec<u32>; 2]> = const { std::cell::Cell::new([Vec::new(), Vec::new()]) };
+    static ORDER: std::cell::Cell<[Vec<usize>; 2]> = const { std::cell::Cell::new([Vec::new(), Vec::new()]) };
 }
 
 /// The code an event runs.
@@ -843,27 +845,25 @@ mod tests {
                 instance
             })
             .collect();
-        let of_path = |p: &Arc<Program>, path: u64| -> Vec<u32> {
-            (0..of.len() as u32)
-                .filter(|&i| Arc::ptr_eq(of[i as usize].0, p) && of[i as usize].1 == path)
+        let of_path = |p: &Arc<Program>, path: u64| -> Vec<usize> {
+            (0..of.len())
+                .filter(|&i| Arc::ptr_eq(of[i].0, p) && of[i].1 == path)
                 .collect()
         };
-        let of_program = |p: &Arc<Program>| -> Vec<u32> {
-            (0..of.len() as u32)
-                .filter(|&i| Arc::ptr_eq(of[i as usize].0, p))
-                .collect()
+        let of_program = |p: &Arc<Program>| -> Vec<usize> {
+            (0..of.len()).filter(|&i| Arc::ptr_eq(of[i].0, p)).collect()
         };
         let (twos, fives) = (of_path(&a, 2), of_path(&a, 5));
         assert_eq!((twos.len(), fives.len()), (16, 17));
         // a's whole batches: path 2's 16, path 5's first 16; the rest in crowd order.
         let whole = [twos.clone(), fives[..16].to_vec()].concat();
-        let rest_a: Vec<u32> = of_program(&a)
+        let rest_a: Vec<usize> = of_program(&a)
             .into_iter()
             .filter(|i| !whole.contains(i))
             .collect();
         let rest_b = of_program(&b);
         let a_first = Arc::as_ptr(&a) < Arc::as_ptr(&b);
-        let by_program = |of_a: Vec<u32>, of_b: Vec<u32>| {
+        let by_program = |of_a: Vec<usize>, of_b: Vec<usize>| {
             if a_first {
                 [of_a, of_b].concat()
             } else {
@@ -880,9 +880,9 @@ mod tests {
             // plain one), and path 2 no longer fills a batch.
             let mut crowd = crowd;
             let profiling = twos[3];
-            crowd[profiling as usize].set_profiling(true);
+            crowd[profiling].set_profiling(true);
             batch_order(&crowd, &mut order, &mut rest);
-            let plain_rest: Vec<u32> = of_program(&a)
+            let plain_rest: Vec<usize> = of_program(&a)
                 .into_iter()
                 .filter(|i| !fives[..16].contains(i) && *i != profiling)
                 .collect();
