@@ -8,7 +8,7 @@
 
 use std::path::Path;
 use std::sync::{Arc, Mutex};
-use strider_core::{EmptyWorld, Transform, Vec3};
+use strider_core::{EmptyWorld, Skeleton, Transform, Vec3};
 use strider_nodes::Value;
 use strider_vm::{FrameInput, InputPose, Instance, Program};
 
@@ -37,11 +37,15 @@ fn compile_file(path: &str) -> Arc<Program> {
     }
 }
 
-fn instance(path: &str) -> Instance {
-    let skeleton = strider_graph::load_skeleton(Path::new("graphs/skeletons/mannequin.ron"))
+/// The mannequin skeleton every test here runs on.
+fn mannequin() -> Arc<Skeleton> {
+    strider_graph::load_skeleton(Path::new("graphs/skeletons/mannequin.ron"))
         .unwrap_or_else(|_| panic!("mannequin loads"))
-        .skeleton;
-    Instance::new(compile_file(path), skeleton).expect("instantiates")
+        .skeleton
+}
+
+fn instance(path: &str) -> Instance {
+    Instance::new(compile_file(path), mannequin()).expect("instantiates")
 }
 
 /// Runs 10 warm-up frames, then counts the allocations of 100 more.
@@ -186,15 +190,13 @@ fn feet_finder_and_other_input_poses_do_not_allocate() {
 
 #[test]
 fn batched_crowd_frames_do_not_allocate() {
-    // `Instance::run_forward_batch` gathers each batch's members on the stack and sorts
-    // the crowd's indices in a list the thread keeps: 40 characters of two programs,
+    // `Instance::run_forward_batch` gathers each batch's members on the stack and orders
+    // the crowd's indices in two lists the thread keeps: 40 characters of two programs,
     // interleaved (batches of 16, 16 and 8), debug drawing on.
     let _guard = SERIAL.lock().unwrap_or_else(|e| e.into_inner());
     let locomotion = compile_file("graphs/locomotion.ron");
     let bob = compile_file("graphs/pelvis_bob.ron");
-    let skeleton = strider_graph::load_skeleton(Path::new("graphs/skeletons/mannequin.ron"))
-        .unwrap_or_else(|_| panic!("mannequin loads"))
-        .skeleton;
+    let skeleton = mannequin();
     let mut crowd: Vec<Instance> = (0..40)
         .map(|k| {
             let program = if k % 20 < 16 { &locomotion } else { &bob };
@@ -247,9 +249,7 @@ fn profiled_frames_do_not_allocate() {
     }
     // Profiling instances batched together (the batch loop's profiled copy), on lanes.
     let locomotion = compile_file("graphs/locomotion.ron");
-    let skeleton = strider_graph::load_skeleton(Path::new("graphs/skeletons/mannequin.ron"))
-        .unwrap_or_else(|_| panic!("mannequin loads"))
-        .skeleton;
+    let skeleton = mannequin();
     let mut crowd: Vec<Instance> = (0..6)
         .map(|_| {
             let mut i = Instance::new(Arc::clone(&locomotion), Arc::clone(&skeleton)).unwrap();

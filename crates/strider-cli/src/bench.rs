@@ -79,9 +79,8 @@ pub(crate) struct BenchArgs {
     pub json: bool,
 
     /// Also profile the crowd as it runs (its first batch with a smaller `--batch`, one
-    /// character with `--batch 1`) and print the
-    /// 20 graph nodes with the most time per character-frame (needs a build with
-    /// `--features profile`).
+    /// character with `--batch 1`) and print the 20 graph nodes with the most time per
+    /// character-frame (needs a build with `--features profile`).
     #[arg(long)]
     pub profile: bool,
 
@@ -90,8 +89,9 @@ pub(crate) struct BenchArgs {
     pub no_native: bool,
 
     /// Characters the interpreter runs together through each instruction
-    /// (`Instance::run_forward_batch`); 1 runs each alone (`Instance::run_forward`). The
-    /// native baseline always runs each character alone.
+    /// (`Instance::run_forward_batch`): 16 hands it each thread's share of the crowd, which
+    /// it batches by path; fewer, consecutive chunks of that many; 1 runs each alone
+    /// (`Instance::run_forward`). The native baseline always runs each character alone.
     #[arg(long, value_name = "B", default_value_t = 16, value_parser = clap::value_parser!(u32).range(1..=16))]
     pub batch: u32,
 

@@ -1442,12 +1442,16 @@ fn run_group<const LANES: bool, const PROFILE: bool>(
             // The whole batch is here (so no member waits elsewhere): a jump that every
             // member takes, or none, moves the batch at once, and a plain scalar op runs
             // on all lanes together.
-            match op {
-                Op::Jump => {
+            // Every member jumps to `$target`: the jump goes into every member's path key.
+            macro_rules! batch_jump {
+                ($target:expr) => {{
                     paths = paths.map(|p| next_path(p, pc));
-                    pc = o[0] as usize;
+                    pc = $target;
                     continue;
-                }
+                }};
+            }
+            match op {
+                Op::Jump => batch_jump!(o[0] as usize),
                 Op::JumpIfFalse => {
                     // SAFETY: operand 0 is a bool slot (the op's layout).
                     match unsafe { crate::lanes::agree(lane0, o[0], n) } {
@@ -1455,11 +1459,7 @@ fn run_group<const LANES: bool, const PROFILE: bool>(
                             pc += 1;
                             continue;
                         }
-                        Some(false) => {
-                            paths = paths.map(|p| next_path(p, pc));
-                            pc = o[1] as usize;
-                            continue;
-                        }
+                        Some(false) => batch_jump!(o[1] as usize),
                         None => {}
                     }
                 }
@@ -1479,11 +1479,7 @@ fn run_group<const LANES: bool, const PROFILE: bool>(
                             pc += 1;
                             continue;
                         }
-                        Some(false) => {
-                            paths = paths.map(|p| next_path(p, pc));
-                            pc = o[5] as usize;
-                            continue;
-                        }
+                        Some(false) => batch_jump!(o[5] as usize),
                         None => {}
                     }
                 }

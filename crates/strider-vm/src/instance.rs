@@ -440,11 +440,11 @@ impl Instance {
             } else {
                 let mut program = None;
                 let mut members = smallvec::SmallVec::<[Ctx<'_>; exec::BATCH]>::new();
-                let mut rest = crowd.iter_mut();
+                let mut instances = crowd.iter_mut();
                 let mut next = 0;
                 let mut unwritten_initial = true;
                 for &i in batch.iter() {
-                    let instance = rest
+                    let instance = instances
                         .nth(i - next)
                         .expect("a batch's indices are the crowd's, ascending");
                     next = i + 1;
@@ -723,9 +723,10 @@ fn batch_order(crowd: &[Instance], order: &mut Vec<usize>, rest: &mut Vec<usize>
             instance.is_profiling(),
         )
     };
+    let path = |i: usize| (program(i), crowd[i].path);
     order.clear();
     order.extend(0..crowd.len());
-    order.sort_unstable_by_key(|&i| (program(i), crowd[i].path, i));
+    order.sort_unstable_by_key(|&i| (path(i), i));
     // Each run of one path keeps its whole batches in place, moved up over the
     // remainders taken out before them; the remainders go to `rest` (reserved for the
     // whole crowd, so that a crowd falling out of step later does not grow it).
@@ -733,10 +734,9 @@ fn batch_order(crowd: &[Instance], order: &mut Vec<usize>, rest: &mut Vec<usize>
     rest.reserve(crowd.len());
     let (mut read, mut write) = (0, 0);
     while read < order.len() {
-        let key = |i: usize| (program(i), crowd[i].path);
-        let first = key(order[read]);
+        let first = path(order[read]);
         let mut end = read + 1;
-        while end < order.len() && key(order[end]) == first {
+        while end < order.len() && path(order[end]) == first {
             end += 1;
         }
         let whole = (end - read) / exec::BATCH * exec::BATCH;
