@@ -1333,7 +1333,10 @@ fn run_group<const LANES: bool, const PROFILE: bool>(
     // Where each member outside the group is (`END` once it has ended); the group's members
     // are all at `pc`.
     let mut pcs = [END; BATCH];
-    // The members' path keys (`Ctx::path`) so far.
+    // The members' path keys (`Ctx::path`) so far: all `shared` until a member jumps on its
+    // own (`apart`), then each member's in `paths`.
+    let mut shared = 0u64;
+    let mut apart = false;
     let mut paths = [0u64; BATCH];
     let mut pc = entry as usize;
     let everyone: u32 = (1u32 << n) - 1;
@@ -1429,6 +1432,10 @@ fn run_group<const LANES: bool, const PROFILE: bool>(
         }
         macro_rules! jump {
             ($target:expr) => {{
+                if !apart {
+                    paths = [shared; BATCH];
+                    apart = true;
+                }
                 paths[m] = next_path(paths[m], pc);
                 go!($target)
             }};
@@ -1445,7 +1452,11 @@ fn run_group<const LANES: bool, const PROFILE: bool>(
             // Every member jumps to `$target`: the jump goes into every member's path key.
             macro_rules! batch_jump {
                 ($target:expr) => {{
-                    paths = paths.map(|p| next_path(p, pc));
+                    if apart {
+                        paths = paths.map(|p| next_path(p, pc));
+                    } else {
+                        shared = next_path(shared, pc);
+                    }
                     pc = $target;
                     continue;
                 }};
@@ -1565,7 +1576,7 @@ fn run_group<const LANES: bool, const PROFILE: bool>(
                     lanes.store(copies, members);
                 }
                 for (cx, path) in members.iter_mut().zip(paths) {
-                    cx.path = path;
+                    cx.path = if apart { path } else { shared };
                 }
                 return dispatches;
             }

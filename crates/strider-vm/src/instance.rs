@@ -419,8 +419,9 @@ impl Instance {
         debug: bool,
     ) {
         // The thread's scratch lists, grown once.
-        let [mut order, mut rest] = ORDER.with(std::cell::Cell::take);
-        batch_order(crowd, &mut order, &mut rest);
+        let mut scratch = ORDER.with(std::cell::Cell::take);
+        batch_order(crowd, &mut scratch);
+        let order = &mut scratch.order;
         let mut start = 0;
         while start < order.len() {
             let first = &crowd[order[start]];
@@ -480,7 +481,7 @@ impl Instance {
             }
             start = end;
         }
-        ORDER.with(|cell| cell.set([order, rest]));
+        ORDER.with(|cell| cell.set(scratch));
     }
 
     /// Runs an event's code on this instance.
@@ -706,8 +707,25 @@ impl Instance {
     }
 }
 
-/// The order `Instance::run_forward_batch` takes `crowd`'s instances in, as indices into it
-/// (in `order`; `rest` is scratch), consecutive instances of one program forming its
+/// An instance's place in [`batch_order`]'s sort: its program (address), whether it
+/// profiles, its last run's path key ([`Instance::path_key`]) and its index in the crowd,
+/// read off the instance once per frame rather than at every comparison.
+type OrderKey = (usize, bool, u64, usize);
+
+/// The order `Instance::run_forward_batch` takes a crowd's instances in, and the scratch
+/// lists it is worked out in: kept by each thread and grown to its largest crowd once.
+#[derive(Default)]
+struct BatchOrder {
+    /// Indices into the crowd, consecutive instances of one program forming its batches.
+    order: Vec<usize>,
+    /// Every instance's sort key.
+    keys: Vec<OrderKey>,
+    /// The keys of the instances outside whole batches of one path.
+    rest: Vec<OrderKey>,
+}
+
+/// Works out the order `Instance::run_forward_batch` takes `crowd`'s instances in, as
+/// indices into it (`scratch.order`), consecutive instances of one program forming its
 /// batches. First, program by program (and profiling choice by choice), whole batches of
 /// [`exec::BATCH`] instances whose last runs took one path ([`Instance::path_key`]): they
 /// likely take that path again, and a batch whose members take one path dispatches each
@@ -715,46 +733,48 @@ impl Instance {
 /// crowd order (a path's last few, and the paths too rare to fill a batch), where
 /// neighbours in the crowd often share much of their paths (characters placed and started
 /// alike). Ties in crowd order everywhere.
-fn batch_order(crowd: &[Instance], order: &mut Vec<usize>, rest: &mut Vec<usize>) {
-    let program = |i: usize| {
-        let instance = &crowd[i];
+fn batch_order(crowd: &[Instance], scratch: &mut BatchOrder) {
+    let BatchOrder { order, keys, rest } = scratch;
+    keys.clear();
+    keys.extend(crowd.iter().enumerate().map(|(i, instance)| {
         (
             Arc::as_ptr(&instance.program) as usize,
             instance.is_profiling(),
+            instance.path,
+            i,
         )
-    };
-    let path = |i: usize| (program(i), crowd[i].path);
+    }));
+    keys.sort_unstable();
+    // Each run of one path gives its whole batches to the order, in crowd order; the
+    // remainders go to `rest` (reserved for the whole crowd, so that a crowd falling out
+    // of step later does not grow it).
     order.clear();
-    order.extend(0..crowd.len());
-    order.sort_unstable_by_key(|&i| (path(i), i));
-    // Each run of one path keeps its whole batches in place, moved up over the
-    // remainders taken out before them; the remainders go to `rest` (reserved for the
-    // whole crowd, so that a crowd falling out of step later does not grow it).
+    order.reserve(crowd.len());
     rest.clear();
     rest.reserve(crowd.len());
-    let (mut read, mut write) = (0, 0);
-    while read < order.len() {
-        let first = path(order[read]);
-        let mut end = read + 1;
-        while end < order.len() && path(order[end]) == first {
-            end += 1;
-        }
+    let mut read = 0;
+    while read < keys.len() {
+        let (program, profiling, path, _) = keys[read];
+        let end = read
+            + keys[read..]
+                .iter()
+                .take_while(|k| (k.0, k.1, k.2) == (program, profiling, path))
+                .count();
         let whole = (end - read) / exec::BATCH * exec::BATCH;
-        order.copy_within(read..read + whole, write);
-        write += whole;
-        rest.extend_from_slice(&order[read + whole..end]);
+        order.extend(keys[read..read + whole].iter().map(|k| k.3));
+        rest.extend_from_slice(&keys[read + whole..end]);
         read = end;
     }
-    order.truncate(write);
-    rest.sort_unstable_by_key(|&i| (program(i), i));
-    order.extend_from_slice(rest);
+    rest.sort_unstable_by_key(|&(program, profiling, _, i)| (program, profiling, i));
+    order.extend(rest.iter().map(|k| k.3));
 }
 
 thread_local! {
-    /// Each thread's scratch lists of a crowd's indices for `Instance::run_forward_batch`
-    /// (its order, and the instances outside whole batches of one path), grown to the
-    /// largest crowd once.
-    static ORDER: std::cell::Cell<[Vec<usize>; 2]> = const { std::cell::Cell::new([Vec::new(), Vec::new()]) };
+    /// Each thread's order of a crowd for `Instance::run_forward_batch`, with its scratch
+    /// lists.
+    static ORDER: std::cell::Cell<BatchOrder> = const {
+        std::cell::Cell::new(BatchOrder { order: Vec::new(), keys: Vec::new(), rest: Vec::new() })
+    };
 }
 
 /// The code an event runs.
@@ -871,9 +891,13 @@ mod tests {
             }
         };
         let expected = [whole, by_program(rest_a, rest_b.clone())].concat();
-        let (mut order, mut rest) = (vec![99], vec![98]);
-        batch_order(&crowd, &mut order, &mut rest);
-        assert_eq!(order, expected);
+        let mut scratch = BatchOrder {
+            order: vec![99],
+            keys: vec![(0, false, 0, 97)],
+            rest: vec![(0, false, 0, 98)],
+        };
+        batch_order(&crowd, &mut scratch);
+        assert_eq!(scratch.order, expected);
         #[cfg(feature = "profile")]
         {
             // One of path 2's instances profiles: it is of a program of its own (after a's
@@ -881,14 +905,14 @@ mod tests {
             let mut crowd = crowd;
             let profiling = twos[3];
             crowd[profiling].set_profiling(true);
-            batch_order(&crowd, &mut order, &mut rest);
+            batch_order(&crowd, &mut scratch);
             let plain_rest: Vec<usize> = of_program(&a)
                 .into_iter()
                 .filter(|i| !fives[..16].contains(i) && *i != profiling)
                 .collect();
             let rest_a = [plain_rest, vec![profiling]].concat();
             let expected = [fives[..16].to_vec(), by_program(rest_a, rest_b)].concat();
-            assert_eq!(order, expected);
+            assert_eq!(scratch.order, expected);
         }
     }
 
