@@ -79,6 +79,11 @@ fn batched_equals_alone(graph: &str, scenario: &str, hz: u32, characters: usize,
                 b.path_key(),
                 "{what}: character {k}'s path key at frame {f}"
             );
+            assert_eq!(
+                a.jump_sites(),
+                b.jump_sites(),
+                "{what}: character {k}'s jump sites at frame {f}"
+            );
         }
     }
     for (k, (a, b)) in batched.iter().zip(&alone).enumerate() {
@@ -387,6 +392,16 @@ fn path_keys_name_the_jumps_in_their_order_alone_or_batched() {
     }
     let (straight, swapped) = (alone[0].path_key(), alone[1].path_key());
     assert_ne!(straight, swapped, "the same jumps in another order");
+    // The jump sites are a set: the same for both kinds, and not empty.
+    let sites = alone[0].jump_sites();
+    assert_ne!(sites, 0, "the runs jump");
+    for (k, instance) in alone.iter().enumerate() {
+        assert_eq!(
+            instance.jump_sites(),
+            sites,
+            "instance {k}'s jump sites alone"
+        );
+    }
     for (k, instance) in alone.iter().enumerate() {
         let expected = if k % 2 == 0 { straight } else { swapped };
         assert_eq!(instance.path_key(), expected, "instance {k} alone");
@@ -399,6 +414,7 @@ fn path_keys_name_the_jumps_in_their_order_alone_or_batched() {
         Instance::run_forward_batch(&mut batched, |_| FrameInput::default(), &EmptyWorld, false);
         for (k, (a, b)) in batched.iter().zip(&alone).enumerate() {
             assert_eq!(a.path_key(), b.path_key(), "instance {k}, frame {f}");
+            assert_eq!(a.jump_sites(), b.jump_sites(), "instance {k}, frame {f}");
             assert_eq!(a.variable(taken), Value::Int(1), "instance {k}, frame {f}");
         }
     }

@@ -98,11 +98,13 @@ fn a_batched_locomotion_crowd_matches_its_native_code_on_either_batch_loop() {
             "--json",
         ];
         if baseline {
-            args.push("--baseline-code");
+            // With the crowd in scrambled order too: other batches, the same answers.
+            args.extend(["--baseline-code", "--shuffle"]);
         }
         let (ok, j, err) = bench(&args);
         assert!(ok, "{err}");
         assert_eq!(j["batch"], 16);
+        assert_eq!(j["shuffled"], baseline);
         assert_eq!(j["native_identical"], true, "{j}");
         let code = j["batch_code"].as_str().expect("batch_code");
         if baseline {

@@ -95,6 +95,13 @@ pub(crate) struct BenchArgs {
     #[arg(long, value_name = "B", default_value_t = 16, value_parser = clap::value_parser!(u32).range(1..=16))]
     pub batch: u32,
 
+    /// Place the characters in the crowd in a scrambled order of their offsets into the
+    /// scenario (a fixed permutation that puts neighbours in the crowd far apart in their
+    /// cycles), as a game that spawns characters where and when it likes would, instead of
+    /// in the order of their offsets (neighbours nearly in step).
+    #[arg(long)]
+    pub shuffle: bool,
+
     /// Run batches on the baseline x86-64 copy of the batch loop even where the processor
     /// has AVX2 (results are bit for bit the same; for measuring what AVX2 gives).
     #[arg(long)]
@@ -108,6 +115,20 @@ pub(crate) struct BenchArgs {
     /// the inspector exports) before the first frame; `--set` wins for a variable both give.
     #[arg(long, value_name = "FILE")]
     pub overrides: Option<PathBuf>,
+}
+
+/// Character `i`'s place among `n` in `--shuffle`'s scrambled order: `i` times a stride
+/// near `n` divided by the golden ratio that shares no factor with `n` (so every place is
+/// taken once), modulo `n`. Consecutive characters land about 0.38 × `n` places apart.
+fn scrambled(i: usize, n: usize) -> usize {
+    fn gcd(a: usize, b: usize) -> usize {
+        if b == 0 { a } else { gcd(b, a % b) }
+    }
+    let mut stride = (n as f64 * 0.618_034) as usize | 1;
+    while gcd(stride, n) != 1 {
+        stride += 1;
+    }
+    (i % n) * stride % n
 }
 
 /// Time per character-frame over the repetitions of one configuration, ns.
@@ -162,7 +183,8 @@ struct Crowd {
 impl Crowd {
     /// The first `count` characters of the bench's crowd of `args.characters`: each an
     /// instance of `program` with the `assignments` applied, at its offset into `track`
-    /// (the crowd's characters spread evenly over it), run in batches of `args.batch`.
+    /// (the crowd's characters spread evenly over it, in the order of their offsets or, with
+    /// `args.shuffle`, in [`scrambled`] order), run in batches of `args.batch`.
     fn first(
         count: usize,
         program: &Arc<Program>,
@@ -182,7 +204,14 @@ impl Crowd {
         Ok(Crowd {
             instances,
             offsets: (0..count)
-                .map(|i| i * track.inputs.len() / characters)
+                .map(|i| {
+                    let place = if args.shuffle {
+                        scrambled(i, characters)
+                    } else {
+                        i
+                    };
+                    place * track.inputs.len() / characters
+                })
                 .collect(),
             batch: args.batch as usize,
         })
@@ -454,6 +483,7 @@ pub(crate) fn run(args: &BenchArgs) -> anyhow::Result<ExitCode> {
             "warm_up_frames": warm_up,
             "threads": max_threads,
             "batch": args.batch,
+            "shuffled": args.shuffle,
             "batch_code": batch_code.name(),
             "cores": cores,
             "ns_per_character_frame": headline.ns_per_character_frame,
@@ -471,7 +501,7 @@ pub(crate) fn run(args: &BenchArgs) -> anyhow::Result<ExitCode> {
         let mut text = String::new();
         let _ = writeln!(
             text,
-            "graph       {} ({})\nscenario    {} ({}), 60 Hz input, characters offset in time\n\
+            "graph       {} ({})\nscenario    {} ({}), 60 Hz input, characters offset in time{}\n\
              workload    {n} characters x {} frames x {} repetitions per thread count, after {} warm-up frames\n\
              batch       {} characters through each instruction together (native: each alone), {} code\n\
              machine     {cores} cores\n\
@@ -480,6 +510,11 @@ pub(crate) fn run(args: &BenchArgs) -> anyhow::Result<ExitCode> {
             args.graph.display(),
             scenario.name,
             args.scenario.display(),
+            if args.shuffle {
+                ", in scrambled order"
+            } else {
+                ""
+            },
             args.frames,
             args.repetitions,
             warm_up,
@@ -694,4 +729,29 @@ fn profile_top(
     bail!(
         "--profile needs a build with profiling: cargo run --release --features profile -- bench ..."
     )
+}
+
+#[cfg(test)]
+mod tests {
+    use super::scrambled;
+
+    /// `--shuffle` takes every place once, for crowds whose size shares factors with the
+    /// stride's first guess too, and puts neighbours apart.
+    #[test]
+    fn the_scrambled_order_is_a_permutation_that_parts_neighbours() {
+        for n in (1..=64).chain([100, 618, 1000, 1024, 7919, 10_000]) {
+            let mut taken = vec![false; n];
+            for i in 0..n {
+                let place = scrambled(i, n);
+                assert!(place < n && !taken[place], "n = {n}: place {place} twice");
+                taken[place] = true;
+            }
+        }
+        assert_eq!(scrambled(0, 1000), 0);
+        let apart = scrambled(1, 1000).abs_diff(scrambled(0, 1000));
+        assert!(
+            (300..=700).contains(&apart),
+            "neighbours {apart} places apart"
+        );
+    }
 }

@@ -69,6 +69,9 @@ pub(crate) struct Ctx<'a> {
     /// they ran alone or batched; `Instance::run_forward_batch` batches instances whose last
     /// frames had the same key, which likely take one path again.
     pub path: u64,
+    /// The run's jump sites, written when the run ends: bit [`site_bit`] of every
+    /// instruction it jumped from (`Instance::jump_sites`).
+    pub taken: u64,
     /// Where to accumulate per-instruction time and counts (indexed by instruction), when
     /// profiling is on.
     #[cfg(feature = "profile")]
@@ -97,6 +100,7 @@ impl<'a> Ctx<'a> {
             from_world_matrix: Affine3A::IDENTITY,
             run: 1,
             path: 0,
+            taken: 0,
             #[cfg(feature = "profile")]
             profile: None,
         }
@@ -114,6 +118,13 @@ impl<'a> Ctx<'a> {
 #[inline(always)]
 pub(crate) fn next_path(path: u64, pc: usize) -> u64 {
     (path.rotate_left(5) ^ (pc as u64 + 1)).wrapping_mul(0x9E37_79B9_7F4A_7C15)
+}
+
+/// The bit of a run's jump sites ([`Ctx::taken`]) for a jump from instruction `pc`: bit
+/// `pc % 64` (a jump's instruction index is as good a spread as a hash of it, and cheaper).
+#[inline(always)]
+pub(crate) fn site_bit(pc: usize) -> u64 {
+    1 << (pc % 64)
 }
 
 /// A bone slot's value as an index into the pose, if it names a bone.
@@ -1093,6 +1104,7 @@ fn run_loop<const PROFILE: bool>(
     #[cfg(feature = "profile")]
     let mut last = PROFILE.then(std::time::Instant::now);
     let mut path = 0u64;
+    let mut taken = 0u64;
     loop {
         #[cfg(feature = "profile")]
         let here = pc;
@@ -1104,6 +1116,7 @@ fn run_loop<const PROFILE: bool>(
             ($target:expr) => {{
                 // The jump is from the instruction before `pc`.
                 path = next_path(path, pc - 1);
+                taken |= site_bit(pc - 1);
                 pc = $target;
             }};
         }
@@ -1115,6 +1128,7 @@ fn run_loop<const PROFILE: bool>(
                     profile[here].count += 1;
                 }
                 cx.path = path;
+                cx.taken = taken;
                 return;
             }};
         }
@@ -1338,6 +1352,8 @@ fn run_group<const LANES: bool, const PROFILE: bool>(
     let mut shared = 0u64;
     let mut apart = false;
     let mut paths = [0u64; BATCH];
+    let mut shared_taken = 0u64;
+    let mut takens = [0u64; BATCH];
     let mut pc = entry as usize;
     let everyone: u32 = (1u32 << n) - 1;
     let mut group = everyone;
@@ -1434,9 +1450,11 @@ fn run_group<const LANES: bool, const PROFILE: bool>(
             ($target:expr) => {{
                 if !apart {
                     paths = [shared; BATCH];
+                    takens = [shared_taken; BATCH];
                     apart = true;
                 }
                 paths[m] = next_path(paths[m], pc);
+                takens[m] |= site_bit(pc);
                 go!($target)
             }};
         }
@@ -1454,8 +1472,10 @@ fn run_group<const LANES: bool, const PROFILE: bool>(
                 ($target:expr) => {{
                     if apart {
                         paths = paths.map(|p| next_path(p, pc));
+                        takens = takens.map(|t| t | site_bit(pc));
                     } else {
                         shared = next_path(shared, pc);
+                        shared_taken |= site_bit(pc);
                     }
                     pc = $target;
                     continue;
@@ -1575,8 +1595,9 @@ fn run_group<const LANES: bool, const PROFILE: bool>(
                 if LANES {
                     lanes.store(copies, members);
                 }
-                for (cx, path) in members.iter_mut().zip(paths) {
+                for ((cx, path), taken) in members.iter_mut().zip(paths).zip(takens) {
                     cx.path = if apart { path } else { shared };
+                    cx.taken = if apart { taken } else { shared_taken };
                 }
                 return dispatches;
             }

@@ -136,6 +136,8 @@ pub struct Instance {
     /// The path key of the last run ([`Ctx::path`](crate::exec::Ctx)): which jumps it took.
     /// `Instance::run_forward_batch` batches instances with equal keys together.
     path: u64,
+    /// The jump sites of the last run ([`Instance::jump_sites`]).
+    taken: u64,
     /// Whether runs accumulate into `profile`.
     #[cfg(feature = "profile")]
     profiling: bool,
@@ -165,6 +167,7 @@ impl Instance {
             native_checked: None,
             unwritten_changed: 0,
             path: 0,
+            taken: 0,
             #[cfg(feature = "profile")]
             profiling: false,
             #[cfg(feature = "profile")]
@@ -197,6 +200,7 @@ impl Instance {
             // Counted once the tunables are copied, below.
             unwritten_changed: 0,
             path: 0,
+            taken: 0,
             #[cfg(feature = "profile")]
             profiling: self.profiling,
             #[cfg(feature = "profile")]
@@ -388,8 +392,9 @@ impl Instance {
     /// through it ([`Instance::path_key`]) go together in whole batches of 16, as they
     /// likely take one path again (characters at different points of their walk cycles
     /// branch apart at every foot; batched by path, they rarely do); after all of those,
-    /// the others go in crowd order, so keep characters that are placed and started alike
-    /// next to each other. Which instances share a batch never changes any result;
+    /// the others go path after path, each next path the one whose jumps are most like the
+    /// last one's ([`Instance::jump_sites`]), so that the batches holding several paths
+    /// split as little as they can. Which instances share a batch never changes any result;
     /// `input` is called once per instance, in that order (not the crowd's). Instances with profiling on are batched with each other only: each
     /// dispatch's time is shared among the members at it, each counted as having run the
     /// instruction (see `Instance::profile`, with the `profile` feature). The one latitude in
@@ -472,11 +477,12 @@ impl Instance {
                         &mut members,
                     );
                 }
-                let paths: smallvec::SmallVec<[u64; exec::BATCH]> =
-                    members.iter().map(|cx| cx.path).collect();
+                let paths: smallvec::SmallVec<[(u64, u64); exec::BATCH]> =
+                    members.iter().map(|cx| (cx.path, cx.taken)).collect();
                 drop(members);
-                for (&i, path) in batch.iter().zip(paths) {
+                for (&i, (path, taken)) in batch.iter().zip(paths) {
                     crowd[i].path = path;
+                    crowd[i].taken = taken;
                 }
             }
             start = end;
@@ -490,7 +496,9 @@ impl Instance {
         match body {
             Body::Program(entry) => {
                 exec::run(program, entry, &mut cx);
-                self.path = cx.path;
+                let (path, taken) = (cx.path, cx.taken);
+                self.path = path;
+                self.taken = taken;
             }
             Body::Native(forward) => {
                 #[cfg(feature = "profile")]
@@ -532,6 +540,7 @@ impl Instance {
             from_world_matrix,
             run: next_run(&mut self.runs),
             path: 0,
+            taken: 0,
             #[cfg(feature = "profile")]
             profile: self.profiling.then_some(&mut self.profile[..]),
         };
@@ -547,6 +556,17 @@ impl Instance {
     #[must_use]
     pub fn path_key(&self) -> u64 {
         self.path
+    }
+
+    /// The instructions the last interpreted run jumped from, as a set: bit `k` is set
+    /// when it jumped from an instruction whose index is `k` modulo 64 (a run of native
+    /// code leaves it as it was). Unlike [`Instance::path_key`] it keeps no order or count,
+    /// so runs that share most of their jumps have sets that differ in few bits; the same
+    /// alone or batched. [`Instance::run_forward_batch`] orders the instances it cannot put
+    /// in whole batches of one path by it.
+    #[must_use]
+    pub fn jump_sites(&self) -> u64 {
+        self.taken
     }
 
     /// The output pose. Call [`Pose::globals`] on it for rig-space transforms.
@@ -709,8 +729,10 @@ impl Instance {
 
 /// An instance's place in [`batch_order`]'s sort: its program (address), whether it
 /// profiles, its last run's path key ([`Instance::path_key`]) and its index in the crowd,
-/// read off the instance once per frame rather than at every comparison.
-type OrderKey = (usize, bool, u64, usize);
+/// read off the instance once per frame rather than at every comparison; and its last
+/// run's jump sites ([`Instance::jump_sites`]), which the sort does not need (the index
+/// before them is unique).
+type OrderKey = (usize, bool, u64, usize, u64);
 
 /// The order `Instance::run_forward_batch` takes a crowd's instances in, and the scratch
 /// lists it is worked out in: kept by each thread and grown to its largest crowd once.
@@ -722,19 +744,30 @@ struct BatchOrder {
     keys: Vec<OrderKey>,
     /// The keys of the instances outside whole batches of one path.
     rest: Vec<OrderKey>,
+    /// One program's runs of one path in `rest`, as ranges of it.
+    paths: Vec<(usize, usize)>,
 }
+
+/// At most this many paths outside whole batches, per program, are ordered by likeness
+/// ([`order_by_likeness`], whose search grows with their square); more go in crowd order.
+const LIKENESS_PATHS: usize = 128;
 
 /// Works out the order `Instance::run_forward_batch` takes `crowd`'s instances in, as
 /// indices into it (`scratch.order`), consecutive instances of one program forming its
 /// batches. First, program by program (and profiling choice by choice), whole batches of
 /// [`exec::BATCH`] instances whose last runs took one path ([`Instance::path_key`]): they
 /// likely take that path again, and a batch whose members take one path dispatches each
-/// instruction once for all of them. Then, program by program, the other instances in
-/// crowd order (a path's last few, and the paths too rare to fill a batch), where
-/// neighbours in the crowd often share much of their paths (characters placed and started
-/// alike). Ties in crowd order everywhere.
+/// instruction once for all of them. Then, program by program, the others (a path's last
+/// few, and the paths too rare to fill a batch), path after path, each next path the most
+/// like the one before ([`order_by_likeness`]), so that a batch that holds several paths
+/// holds paths that share most of their jumps. Ties in crowd order everywhere.
 fn batch_order(crowd: &[Instance], scratch: &mut BatchOrder) {
-    let BatchOrder { order, keys, rest } = scratch;
+    let BatchOrder {
+        order,
+        keys,
+        rest,
+        paths,
+    } = scratch;
     keys.clear();
     keys.extend(crowd.iter().enumerate().map(|(i, instance)| {
         (
@@ -742,6 +775,7 @@ fn batch_order(crowd: &[Instance], scratch: &mut BatchOrder) {
             instance.is_profiling(),
             instance.path,
             i,
+            instance.taken,
         )
     }));
     keys.sort_unstable();
@@ -754,7 +788,7 @@ fn batch_order(crowd: &[Instance], scratch: &mut BatchOrder) {
     rest.reserve(crowd.len());
     let mut read = 0;
     while read < keys.len() {
-        let (program, profiling, path, _) = keys[read];
+        let (program, profiling, path, _, _) = keys[read];
         let end = read
             + keys[read..]
                 .iter()
@@ -765,15 +799,80 @@ fn batch_order(crowd: &[Instance], scratch: &mut BatchOrder) {
         rest.extend_from_slice(&keys[read + whole..end]);
         read = end;
     }
-    rest.sort_unstable_by_key(|&(program, profiling, _, i)| (program, profiling, i));
-    order.extend(rest.iter().map(|k| k.3));
+    // `rest` is sorted as `keys`: program by program, path by path.
+    let mut start = 0;
+    while start < rest.len() {
+        let (program, profiling) = (rest[start].0, rest[start].1);
+        let end = start
+            + rest[start..]
+                .iter()
+                .take_while(|k| (k.0, k.1) == (program, profiling))
+                .count();
+        order_by_likeness(&mut rest[start..end], paths, order);
+        start = end;
+    }
+}
+
+/// Appends one program's instances outside whole batches (`rest`, sorted by path key,
+/// then crowd index) to `order`, path after path: first the path of the crowd's first
+/// instance among them, then each time the path left whose jump sites
+/// ([`Instance::jump_sites`]) differ in the fewest bits from the last one's (ties: the one
+/// whose first instance comes first in the crowd). Two characters a little apart in their
+/// cycles (one foot about to land, the other just landed) differ in a few jumps; a batch
+/// of both splits only there. With more than [`LIKENESS_PATHS`] paths, the instances go in
+/// crowd order instead. `paths` is scratch.
+fn order_by_likeness(
+    rest: &mut [OrderKey],
+    paths: &mut Vec<(usize, usize)>,
+    order: &mut Vec<usize>,
+) {
+    paths.clear();
+    let mut read = 0;
+    while read < rest.len() {
+        let path = rest[read].2;
+        let end = read + rest[read..].iter().take_while(|k| k.2 == path).count();
+        paths.push((read, end));
+        read = end;
+    }
+    if paths.len() > LIKENESS_PATHS {
+        rest.sort_unstable_by_key(|k| k.3);
+        order.extend(rest.iter().map(|k| k.3));
+        return;
+    }
+    // A path's first instance in the crowd, and its jump sites.
+    let first = |p: usize| rest[paths[p].0].3;
+    let sites = |p: usize| rest[paths[p].0].4;
+    // The paths not yet ordered, one bit each (`LIKENESS_PATHS` fit).
+    let mut left = u128::MAX >> (128 - paths.len());
+    let mut at = (0..paths.len()).min_by_key(|&p| first(p)).unwrap_or(0);
+    loop {
+        left &= !(1 << at);
+        let (start, end) = paths[at];
+        order.extend(rest[start..end].iter().map(|k| k.3));
+        if left == 0 {
+            return;
+        }
+        let mut best = (u32::MAX, usize::MAX, 0);
+        let mut bits = left;
+        while bits != 0 {
+            let p = bits.trailing_zeros() as usize;
+            bits &= bits - 1;
+            best = best.min(((sites(p) ^ sites(at)).count_ones(), first(p), p));
+        }
+        at = best.2;
+    }
 }
 
 thread_local! {
     /// Each thread's order of a crowd for `Instance::run_forward_batch`, with its scratch
     /// lists.
     static ORDER: std::cell::Cell<BatchOrder> = const {
-        std::cell::Cell::new(BatchOrder { order: Vec::new(), keys: Vec::new(), rest: Vec::new() })
+        std::cell::Cell::new(BatchOrder {
+            order: Vec::new(),
+            keys: Vec::new(),
+            rest: Vec::new(),
+            paths: Vec::new(),
+        })
     };
 }
 
@@ -836,10 +935,11 @@ mod tests {
 
     /// A crowd's batch order: for each program (in the order of their addresses), whole
     /// batches of instances whose last runs took one path, in key order; then each
-    /// program's other instances in crowd order. Profiling instances count as a program of
-    /// their own.
+    /// program's other instances (here all of one set of jump sites, so path by path in
+    /// the crowd order of their first instances, which is crowd order). Profiling
+    /// instances count as a program of their own.
     #[test]
-    fn a_crowd_is_ordered_in_whole_batches_of_one_path_then_in_crowd_order() {
+    fn a_crowd_is_ordered_in_whole_batches_of_one_path_then_the_rest() {
         let program = |name: &str| {
             let mut pb = ProgramBuilder::new(name);
             pb.set_forward_entry(pb.here());
@@ -893,8 +993,9 @@ mod tests {
         let expected = [whole, by_program(rest_a, rest_b.clone())].concat();
         let mut scratch = BatchOrder {
             order: vec![99],
-            keys: vec![(0, false, 0, 97)],
-            rest: vec![(0, false, 0, 98)],
+            keys: vec![(0, false, 0, 97, 0)],
+            rest: vec![(0, false, 0, 98, 0)],
+            paths: vec![(96, 95)],
         };
         batch_order(&crowd, &mut scratch);
         assert_eq!(scratch.order, expected);
@@ -914,6 +1015,55 @@ mod tests {
             let expected = [fives[..16].to_vec(), by_program(rest_a, rest_b)].concat();
             assert_eq!(scratch.order, expected);
         }
+    }
+
+    /// The instances outside whole batches go path after path, each next path the one
+    /// whose jump sites differ least from the last one's, from the path of the crowd's
+    /// first of them; ties in crowd order. With more paths than `LIKENESS_PATHS`, crowd
+    /// order.
+    #[test]
+    fn paths_too_rare_for_a_batch_follow_each_other_by_likeness() {
+        let mut pb = ProgramBuilder::new("likeness");
+        pb.set_forward_entry(pb.here());
+        pb.emit(Op::End, &[]);
+        let program = Arc::new(pb.finish());
+        // (path, jump sites) by crowd index: path 4 first in the crowd, then paths 2, 1, 3,
+        // 5 interleaved. From path 4 (sites 0b0001), path 3 (0b0011) and path 5 (0b1001)
+        // both differ in one bit: path 3 has the earlier first instance. From 3, path 1
+        // (0b0111, one bit) before paths 2 and 5 (two bits each); from 1, path 2 (0b1111,
+        // one bit) before path 5 (three bits).
+        let of: [(u64, u64); 9] = [
+            (4, 0b0001),
+            (2, 0b1111),
+            (1, 0b0111),
+            (3, 0b0011),
+            (5, 0b1001),
+            (2, 0b1111),
+            (3, 0b0011),
+            (1, 0b0111),
+            (4, 0b0001),
+        ];
+        let crowd_of = |of: &[(u64, u64)]| -> Vec<Instance> {
+            of.iter()
+                .map(|&(path, sites)| {
+                    let mut instance =
+                        Instance::new(Arc::clone(&program), one_bone()).expect("instance");
+                    instance.path = path;
+                    instance.taken = sites;
+                    instance
+                })
+                .collect()
+        };
+        let mut scratch = BatchOrder::default();
+        batch_order(&crowd_of(&of), &mut scratch);
+        // Paths 4, 3, 1, 2, 5; each path's instances in crowd order.
+        assert_eq!(scratch.order, [0, 8, 3, 6, 2, 7, 1, 5, 4]);
+        // One instance per path, more paths than are ordered by likeness: crowd order.
+        let many: Vec<(u64, u64)> = (0..LIKENESS_PATHS as u64 + 1)
+            .map(|k| (1000 - k, k % 7))
+            .collect();
+        batch_order(&crowd_of(&many), &mut scratch);
+        assert_eq!(scratch.order, (0..many.len()).collect::<Vec<_>>());
     }
 
     /// The count of unwritten slots that differ from the program's follows the host's
