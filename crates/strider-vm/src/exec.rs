@@ -1347,8 +1347,9 @@ fn run_group<const LANES: bool, const PROFILE: bool>(
     // Where each member outside the group is (`END` once it has ended); the group's members
     // are all at `pc`.
     let mut pcs = [END; BATCH];
-    // The members' path keys (`Ctx::path`) so far: all `shared` until a member jumps on its
-    // own (`apart`), then each member's in `paths`.
+    // The members' path keys (`Ctx::path`) and jump sites (`Ctx::taken`) so far: all
+    // `shared` and `shared_taken` until a member jumps on its own (`apart`), then each
+    // member's in `paths` and `takens`.
     let mut shared = 0u64;
     let mut apart = false;
     let mut paths = [0u64; BATCH];
@@ -1467,7 +1468,8 @@ fn run_group<const LANES: bool, const PROFILE: bool>(
             // The whole batch is here (so no member waits elsewhere): a jump that every
             // member takes, or none, moves the batch at once, and a plain scalar op runs
             // on all lanes together.
-            // Every member jumps to `$target`: the jump goes into every member's path key.
+            // Every member jumps to `$target`: the jump goes into every member's path key and
+            // jump sites.
             macro_rules! batch_jump {
                 ($target:expr) => {{
                     if apart {
