@@ -191,7 +191,7 @@ fn feet_finder_and_other_input_poses_do_not_allocate() {
 #[test]
 fn batched_crowd_frames_do_not_allocate() {
     // `Instance::run_forward_batch` gathers each batch's members on the stack and orders
-    // the crowd's indices in two lists the thread keeps: 40 characters of two programs,
+    // the crowd in scratch lists the thread keeps: 40 characters of two programs,
     // interleaved (batches of 16, 16 and 8), debug drawing on.
     let _guard = SERIAL.lock().unwrap_or_else(|e| e.into_inner());
     let locomotion = compile_file("graphs/locomotion.ron");

@@ -117,10 +117,11 @@ pub(crate) struct BenchArgs {
     pub overrides: Option<PathBuf>,
 }
 
-/// Character `i`'s place among `n` in `--shuffle`'s scrambled order: `i` times a stride
-/// near `n` divided by the golden ratio that shares no factor with `n` (so every place is
-/// taken once), modulo `n`. Consecutive characters land about 0.38 × `n` places apart.
-fn scrambled(i: usize, n: usize) -> usize {
+/// `--shuffle`'s scrambled order of `n` characters: character `i`'s place is `i` times a
+/// stride near `n` divided by the golden ratio that shares no factor with `n` (so every
+/// place is taken once), modulo `n`. Consecutive characters land about 0.38 × `n` places
+/// apart.
+fn scrambled(n: usize) -> impl Fn(usize) -> usize {
     fn gcd(a: usize, b: usize) -> usize {
         if b == 0 { a } else { gcd(b, a % b) }
     }
@@ -128,7 +129,7 @@ fn scrambled(i: usize, n: usize) -> usize {
     while gcd(stride, n) != 1 {
         stride += 1;
     }
-    (i % n) * stride % n
+    move |i| (i % n) * stride % n
 }
 
 /// Time per character-frame over the repetitions of one configuration, ns.
@@ -201,15 +202,12 @@ impl Crowd {
             apply(&mut instance, skeleton, assignments, world)?;
             instances.push(instance);
         }
+        let place = scrambled(characters);
         Ok(Crowd {
             instances,
             offsets: (0..count)
                 .map(|i| {
-                    let place = if args.shuffle {
-                        scrambled(i, characters)
-                    } else {
-                        i
-                    };
+                    let place = if args.shuffle { place(i) } else { i };
                     place * track.inputs.len() / characters
                 })
                 .collect(),
@@ -741,14 +739,16 @@ mod tests {
     fn the_scrambled_order_is_a_permutation_that_parts_neighbours() {
         for n in (1..=64).chain([100, 618, 1000, 1024, 7919, 10_000]) {
             let mut taken = vec![false; n];
+            let scrambled = scrambled(n);
             for i in 0..n {
-                let place = scrambled(i, n);
+                let place = scrambled(i);
                 assert!(place < n && !taken[place], "n = {n}: place {place} twice");
                 taken[place] = true;
             }
         }
-        assert_eq!(scrambled(0, 1000), 0);
-        let apart = scrambled(1, 1000).abs_diff(scrambled(0, 1000));
+        let scrambled = scrambled(1000);
+        assert_eq!(scrambled(0), 0);
+        let apart = scrambled(1).abs_diff(scrambled(0));
         assert!(
             (300..=700).contains(&apart),
             "neighbours {apart} places apart"

@@ -786,30 +786,14 @@ fn batch_order(crowd: &[Instance], scratch: &mut BatchOrder) {
     order.reserve(crowd.len());
     rest.clear();
     rest.reserve(crowd.len());
-    let mut read = 0;
-    while read < keys.len() {
-        let (program, profiling, path, _, _) = keys[read];
-        let end = read
-            + keys[read..]
-                .iter()
-                .take_while(|k| (k.0, k.1, k.2) == (program, profiling, path))
-                .count();
-        let whole = (end - read) / exec::BATCH * exec::BATCH;
-        order.extend(keys[read..read + whole].iter().map(|k| k.3));
-        rest.extend_from_slice(&keys[read + whole..end]);
-        read = end;
+    for run in keys.chunk_by(|a, b| (a.0, a.1, a.2) == (b.0, b.1, b.2)) {
+        let (whole, part) = run.split_at(run.len() / exec::BATCH * exec::BATCH);
+        order.extend(whole.iter().map(|k| k.3));
+        rest.extend_from_slice(part);
     }
     // `rest` is sorted as `keys`: program by program, path by path.
-    let mut start = 0;
-    while start < rest.len() {
-        let (program, profiling) = (rest[start].0, rest[start].1);
-        let end = start
-            + rest[start..]
-                .iter()
-                .take_while(|k| (k.0, k.1) == (program, profiling))
-                .count();
-        order_by_likeness(&mut rest[start..end], paths, order);
-        start = end;
+    for program in rest.chunk_by_mut(|a, b| (a.0, a.1) == (b.0, b.1)) {
+        order_by_likeness(program, paths, order);
     }
 }
 
@@ -827,12 +811,10 @@ fn order_by_likeness(
     order: &mut Vec<usize>,
 ) {
     paths.clear();
-    let mut read = 0;
-    while read < rest.len() {
-        let path = rest[read].2;
-        let end = read + rest[read..].iter().take_while(|k| k.2 == path).count();
-        paths.push((read, end));
-        read = end;
+    let mut start = 0;
+    for run in rest.chunk_by(|a, b| a.2 == b.2) {
+        paths.push((start, start + run.len()));
+        start += run.len();
     }
     if paths.len() > LIKENESS_PATHS {
         rest.sort_unstable_by_key(|k| k.3);
