@@ -207,6 +207,51 @@ fn batched_crowd_frames_do_not_allocate() {
     assert_eq!(n, 0, "{n} allocations in 50 frames of 40 characters");
 }
 
+#[test]
+fn a_worker_thread_that_reserved_its_batch_scratch_allocates_nothing_in_its_first_batch() {
+    // A thread pool may give a worker its first share of a warmed-up crowd at any frame:
+    // that worker's first batch makes the thread's scratch (the lanes, the IKs' chain
+    // lanes, the crowd's order lists), unless `reserve_batch_scratch` made it before.
+    let _guard = SERIAL.lock().unwrap_or_else(|e| e.into_inner());
+    let locomotion = compile_file("graphs/locomotion.ron");
+    let skeleton = mannequin();
+    // One whole batch of a path and four more: every order list is used.
+    let mut crowd: Vec<Instance> = (0..20)
+        .map(|_| {
+            Instance::new(Arc::clone(&locomotion), Arc::clone(&skeleton)).expect("instantiates")
+        })
+        .collect();
+    let input = |_| FrameInput {
+        dt: 1.0 / 60.0,
+        ..Default::default()
+    };
+    // Warmed up on this thread: the instances' own buffers are at their working size.
+    for _ in 0..10 {
+        Instance::run_forward_batch(&mut crowd, input, &EmptyWorld, false);
+    }
+    let first_batch_on_a_new_thread = |crowd: &mut [Instance], reserve: bool| {
+        std::thread::scope(|s| {
+            s.spawn(|| {
+                if reserve {
+                    Instance::reserve_batch_scratch(&locomotion, crowd.len());
+                }
+                allocations_in(|| {
+                    Instance::run_forward_batch(crowd, input, &EmptyWorld, false);
+                })
+            })
+            .join()
+            .expect("the worker runs")
+        })
+    };
+    let unreserved = first_batch_on_a_new_thread(&mut crowd, false);
+    assert!(
+        unreserved > 0,
+        "a new thread's first batch makes its scratch"
+    );
+    let reserved = first_batch_on_a_new_thread(&mut crowd, true);
+    assert_eq!(reserved, 0, "{reserved} allocations after reserving");
+}
+
 /// Allocations in `frames` frames of `crowd` run in batches (`debug` as given), after 10
 /// frames of warm-up; each character's time step one of 1/60 s, 1/30 s and 0.
 fn batched_allocations(crowd: &mut [Instance], debug: bool, frames: usize) -> u64 {

@@ -337,8 +337,10 @@ pub(crate) fn run(args: &BenchArgs) -> anyhow::Result<ExitCode> {
     // A pool's threads start on their own time, and each allocates its job queue as it
     // starts: wait until every worker of every pool has run a job, so none is still starting
     // while frames are counted (the one-thread row runs outside the pools, alongside them).
+    // That job makes each worker's batch scratch too: the scheduler may give a worker its
+    // first share of the crowd in a counted frame.
     for pool in &pools {
-        pool.broadcast(|_| ());
+        pool.broadcast(|_| Instance::reserve_batch_scratch(&program, n));
     }
 
     // Warm-up: both crowds run the same frames, so they stay in step.

@@ -1294,6 +1294,24 @@ fn profile_dispatch(members: &mut [Ctx<'_>], group: u32, pc: usize, nanos: u64) 
     }
 }
 
+/// Grows the calling thread's scratch that [`run_batch`] keeps for a program of `code`
+/// over scalar slots `lens` to what its first batch on this thread would grow it to: the
+/// lanes, when the program runs on them, and the IKs' chain lanes when it also has a
+/// `TwoBoneIK`. Does nothing while a batch runs on this thread (it holds the lanes).
+pub(crate) fn reserve_batch_scratch(code: &[Instr], lens: &ScalarLens) {
+    if !lanes_pay_off(code.len(), lens) {
+        return;
+    }
+    LANES.with(|cell| {
+        if let Ok(mut lanes) = cell.try_borrow_mut() {
+            lanes.reserve(lens);
+        }
+    });
+    if code.iter().any(|i| i.op == Op::TwoBoneIK) {
+        crate::per_member::reserve_chain_lanes();
+    }
+}
+
 /// Whether a program of `code_len` instructions over scalar slots `lens` runs its batches
 /// on lanes: when it has at least two instructions per scalar slot. Copying a member's
 /// slots into the lanes and back costs a few machine instructions per slot, which a

@@ -414,9 +414,11 @@ impl Instance {
     /// a chunk of the crowd's size divided by the thread count, rounded up, at least 1) and call this on each:
     /// the larger the chunk, the more instances there are to pick each batch's path-sharing
     /// members from. Allocates nothing after warm-up: each thread keeps one scratch copy of
-    /// 16 instances' scalar slots, made by its first batch, and two lists of a crowd's
-    /// indices, grown to the largest crowd it has run (a batch run from inside another on
-    /// the same thread, by a world query that runs a rig of its own, makes its own).
+    /// 16 instances' scalar slots and one of their IK chains, made by its first batch, and
+    /// the lists the crowd is ordered in, grown to the largest crowd it has run (a batch
+    /// run from inside another on the same thread, by a world query that runs a rig of its
+    /// own, makes its own). A worker thread that has run no batch yet makes them on its
+    /// first: [`Instance::reserve_batch_scratch`] makes them ahead.
     pub fn run_forward_batch<'i>(
         crowd: &mut [Instance],
         mut input: impl FnMut(usize) -> FrameInput<'i>,
@@ -487,6 +489,24 @@ impl Instance {
             }
             start = end;
         }
+        ORDER.with(|cell| cell.set(scratch));
+    }
+
+    /// Grows the calling thread's scratch for [`Instance::run_forward_batch`] to what it
+    /// needs for crowds of up to `crowd` instances of `program`, so that the thread's next
+    /// batches allocate nothing even when it has run none: the scalar lanes (when
+    /// `program`'s batches run on them), the IKs' chain lanes (when it has a `TwoBoneIK`)
+    /// and the lists the crowd is ordered in. A thread grows these by itself on its first
+    /// batches; a crowd split over a thread pool should call this on every worker once
+    /// before the frames that must not allocate (with rayon,
+    /// `pool.broadcast(|_| Instance::reserve_batch_scratch(&program, chunk))`), since the
+    /// scheduler may hand a worker its first share of the crowd at any frame. Cheap when
+    /// the scratch is large enough already; does nothing to the lanes of a batch running
+    /// on this thread (called from inside a world query).
+    pub fn reserve_batch_scratch(program: &Program, crowd: usize) {
+        exec::reserve_batch_scratch(&program.code, &program.scalar_lens);
+        let mut scratch = ORDER.with(std::cell::Cell::take);
+        scratch.reserve(crowd);
         ORDER.with(|cell| cell.set(scratch));
     }
 
@@ -748,6 +768,23 @@ struct BatchOrder {
     paths: Vec<(usize, usize)>,
 }
 
+impl BatchOrder {
+    /// Makes room in every list for a crowd of `crowd` instances, whatever its paths: a
+    /// crowd that falls out of step later grows none of them.
+    fn reserve(&mut self, crowd: usize) {
+        let Self {
+            order,
+            keys,
+            rest,
+            paths,
+        } = self;
+        order.reserve(crowd.saturating_sub(order.len()));
+        keys.reserve(crowd.saturating_sub(keys.len()));
+        rest.reserve(crowd.saturating_sub(rest.len()));
+        paths.reserve(crowd.saturating_sub(paths.len()));
+    }
+}
+
 /// At most this many paths outside whole batches, per program, are ordered by likeness
 /// ([`order_by_likeness`], whose search grows with their square); more go in crowd order.
 const LIKENESS_PATHS: usize = 128;
@@ -762,6 +799,7 @@ const LIKENESS_PATHS: usize = 128;
 /// like the one before ([`order_by_likeness`]), so that a batch that holds several paths
 /// holds paths that share most of their jumps. Ties in crowd order everywhere.
 fn batch_order(crowd: &[Instance], scratch: &mut BatchOrder) {
+    scratch.reserve(crowd.len());
     let BatchOrder {
         order,
         keys,
@@ -780,12 +818,9 @@ fn batch_order(crowd: &[Instance], scratch: &mut BatchOrder) {
     }));
     keys.sort_unstable();
     // Each run of one path gives its whole batches to the order, in crowd order; the
-    // remainders go to `rest` (reserved for the whole crowd, so that a crowd falling out
-    // of step later does not grow it).
+    // remainders go to `rest`.
     order.clear();
-    order.reserve(crowd.len());
     rest.clear();
-    rest.reserve(crowd.len());
     for run in keys.chunk_by(|a, b| (a.0, a.1, a.2) == (b.0, b.1, b.2)) {
         let (whole, part) = run.split_at(run.len() / exec::BATCH * exec::BATCH);
         order.extend(whole.iter().map(|k| k.3));

@@ -140,14 +140,12 @@ impl Lanes {
         let (program, held) = (copies.program, self.unwritten_of);
         // Until the lanes are loaded, they hold no program's values.
         self.unwritten_of = 0;
+        self.reserve(copies.lens);
         macro_rules! load {
             ($a:ident, $t:expr) => {{
                 let len = copies.lens.0[$t];
                 let kept = copies.kept.0[$t].min(len);
                 let rest = copies.written.0[$t].clamp(kept, len);
-                if self.$a.len() < len * BATCH {
-                    self.$a.resize(len * BATCH, Default::default());
-                }
                 let lanes = self.$a[..len * BATCH].as_mut_ptr();
                 for (m, cx) in members.iter().enumerate() {
                     let from = &cx.slots.$a[..len];
@@ -174,6 +172,21 @@ impl Lanes {
         }
         each_scalar_type!(load);
         self.unwritten_of = program;
+    }
+
+    /// Grows each scalar type's lanes to `lens` slots of [`BATCH`] members where they are
+    /// shorter (the items added hold default values; the others keep theirs).
+    #[inline(always)]
+    pub(crate) fn reserve(&mut self, lens: &ScalarLens) {
+        macro_rules! grow {
+            ($a:ident, $t:expr) => {{
+                let len = lens.0[$t] * BATCH;
+                if self.$a.len() < len {
+                    self.$a.resize(len, Default::default());
+                }
+            }};
+        }
+        each_scalar_type!(grow);
     }
 
     /// Copies each scalar type's slots `0..copies.kept` back to every member, member by

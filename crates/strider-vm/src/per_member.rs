@@ -392,6 +392,15 @@ thread_local! {
         const { std::cell::Cell::new(None) };
 }
 
+/// Makes the calling thread's chain lanes, as its first batch's IK would (they are kept
+/// after that); nothing when it has them.
+pub(crate) fn reserve_chain_lanes() {
+    CHAIN_LANES.with(|cell| {
+        let lanes = cell.take().unwrap_or_default();
+        cell.set(Some(lanes));
+    });
+}
+
 /// [`two_bone_iks`]' chains read, solved on `lanes` and written back, once the members'
 /// `axes` (from `(p0, s0)`) are known to be shared and solvable on lanes.
 ///
