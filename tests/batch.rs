@@ -3,8 +3,7 @@
 //! graph variables bit-identical every frame, and every slot after a frame run with debug
 //! (without it a batch leaves the slots of values that live only within a run as they
 //! were), through scenarios where characters at different points of their walk take
-//! different branches; and so does `Instance::run_forward_batch_parallel`, which spreads
-//! the batches over a thread pool.
+//! different branches.
 
 use std::path::Path;
 use std::sync::Arc;
@@ -49,9 +48,7 @@ fn run_both<'i>(
 
 /// Runs `characters` instances of `graph` through `scenario` at `hz`, character `k` offset
 /// by `7 k` frames into it (so they are at different points of their cycles), `frames`
-/// frames, once batched, once batched on three threads
-/// (`Instance::run_forward_batch_parallel`) and once each alone, and compares them after
-/// every frame.
+/// frames, once batched and once each alone, and compares them after every frame.
 fn batched_equals_alone(graph: &str, scenario: &str, hz: u32, characters: usize, frames: usize) {
     let program = compile(graph);
     let skeleton = mannequin();
@@ -63,49 +60,37 @@ fn batched_equals_alone(graph: &str, scenario: &str, hz: u32, characters: usize,
             .map(|_| Instance::new(Arc::clone(&program), Arc::clone(&skeleton)).unwrap())
             .collect()
     };
-    let (mut batched, mut parallel, mut alone) = (make(), make(), make());
-    let pool = rayon::ThreadPoolBuilder::new()
-        .num_threads(3)
-        .build()
-        .expect("a pool of three threads");
+    let (mut batched, mut alone) = (make(), make());
+    let what = format!("{graph} in {}", scenario.name);
     for f in 0..frames {
         let input = |k: usize| common::input_at(&track, f, 7 * k);
         // Debug on every other frame and on the last.
         let debug = f % 2 == 0 || f + 1 == frames;
         Instance::run_forward_batch(&mut batched, input, sim.world(), debug);
-        pool.install(|| {
-            Instance::run_forward_batch_parallel(&mut parallel, input, sim.world(), debug);
-        });
         for (k, instance) in alone.iter_mut().enumerate() {
             instance.run_forward(&input(k), sim.world(), debug);
         }
-        for (crowd, how) in [(&batched, "batched"), (&parallel, "on three threads")] {
-            let what = format!("{graph} in {}, {how}", scenario.name);
-            for (k, (a, b)) in crowd.iter().zip(&alone).enumerate() {
-                common::assert_same_frame(&what, &program, k, f, a, b);
-                // The path key too: batched on lanes, a jump the whole batch takes is
-                // folded into every member's key at once, each member's own into its own.
-                assert_eq!(
-                    a.path_key(),
-                    b.path_key(),
-                    "{what}: character {k}'s path key at frame {f}"
-                );
-                assert_eq!(
-                    a.jump_sites(),
-                    b.jump_sites(),
-                    "{what}: character {k}'s jump sites at frame {f}"
-                );
-            }
-        }
-    }
-    for (crowd, how) in [(&batched, "batched"), (&parallel, "on three threads")] {
-        for (k, (a, b)) in crowd.iter().zip(&alone).enumerate() {
-            assert!(
-                a.slots().bit_eq(b.slots()),
-                "{graph} in {}, {how}: character {k}'s slots differ",
-                scenario.name
+        for (k, (a, b)) in batched.iter().zip(&alone).enumerate() {
+            common::assert_same_frame(&what, &program, k, f, a, b);
+            // The path key too: batched on lanes, a jump the whole batch takes is folded
+            // into every member's key at once, each member's own into its own.
+            assert_eq!(
+                a.path_key(),
+                b.path_key(),
+                "{what}: character {k}'s path key at frame {f}"
+            );
+            assert_eq!(
+                a.jump_sites(),
+                b.jump_sites(),
+                "{what}: character {k}'s jump sites at frame {f}"
             );
         }
+    }
+    for (k, (a, b)) in batched.iter().zip(&alone).enumerate() {
+        assert!(
+            a.slots().bit_eq(b.slots()),
+            "{what}: character {k}'s slots differ"
+        );
     }
 }
 

@@ -241,24 +241,14 @@ impl Crowd {
                 Instance::run_forward_batch(instances, |k| input(offsets[k]), world, debug);
             };
             let (instances, offsets) = (&mut self.instances, &self.offsets);
-            // A full batch: the whole crowd in one call, which picks the batches
-            // (characters whose last frames took one path together) and, on more threads,
-            // spreads them over the pool's threads. A smaller one: the crowd in batches
-            // of that size, in order, each thread taking some.
-            if self.batch == BATCH {
-                if threads == 1 {
-                    run((instances, offsets));
-                } else {
-                    Instance::run_forward_batch_parallel(
-                        instances,
-                        |k| input(offsets[k]),
-                        world,
-                        debug,
-                    );
-                }
-                return;
-            }
-            let chunk = self.batch;
+            // A full batch: each thread's share of the crowd in one call, which picks the
+            // batches (characters whose last frames took one path together). A smaller
+            // one: the crowd in batches of that size, in order.
+            let chunk = if self.batch == BATCH {
+                instances.len().div_ceil(threads as usize).max(1)
+            } else {
+                self.batch
+            };
             if threads == 1 {
                 instances
                     .chunks_mut(chunk)
@@ -348,7 +338,7 @@ pub(crate) fn run(args: &BenchArgs) -> anyhow::Result<ExitCode> {
     // starts: wait until every worker of every pool has run a job, so none is still starting
     // while frames are counted (the one-thread row runs outside the pools, alongside them).
     // That job makes each worker's batch scratch too: the scheduler may give a worker its
-    // first batch in a counted frame.
+    // first share of the crowd in a counted frame.
     for pool in &pools {
         pool.broadcast(|_| Instance::reserve_batch_scratch(&program, n));
     }

@@ -6,7 +6,6 @@ use crate::native::NativeProgram;
 use crate::program::{BoneSlot, Program, VariableId};
 use crate::slots::Slots;
 use glam::Affine3A;
-use rayon::prelude::*;
 use std::fmt;
 use std::sync::Arc;
 use strider_core::{DebugDraw, EmptyWorld, Pose, Skeleton, Transform, WorldQuery};
@@ -437,69 +436,67 @@ impl Instance {
         // The thread's scratch lists, grown once.
         let mut scratch = ORDER.with(std::cell::Cell::take);
         batch_order(crowd, &mut scratch);
-        batch_bounds(crowd, &mut scratch);
-        for &(start, end) in &scratch.batches {
-            let batch = &scratch.order[start..end];
-            // The batch's instances, in crowd order: picked from one pass over the crowd.
-            let mut members = smallvec::SmallVec::<[(usize, &mut Instance); exec::BATCH]>::new();
-            let mut instances = crowd.iter_mut();
-            let mut next = 0;
-            for &i in batch {
-                let instance = instances
-                    .nth(i - next)
-                    .expect("a batch's indices are the crowd's, ascending");
-                next = i + 1;
-                members.push((i, instance));
+        let order = &mut scratch.order;
+        let mut start = 0;
+        while start < order.len() {
+            let first = &crowd[order[start]];
+            let mut end = start + 1;
+            while end < order.len()
+                && end - start < exec::BATCH
+                && Arc::ptr_eq(&crowd[order[end]].program, &first.program)
+                && crowd[order[end]].is_profiling() == first.is_profiling()
+            {
+                end += 1;
             }
-            run_members(&mut members, &mut input, world, debug);
+            // The batch's instances in crowd order: picked from one pass over the crowd.
+            let batch = &mut order[start..end];
+            batch.sort_unstable();
+            if let [single] = *batch {
+                crowd[single].run_forward(&input(single), world, debug);
+            } else {
+                let mut program = None;
+                let mut members = smallvec::SmallVec::<[Ctx<'_>; exec::BATCH]>::new();
+                let mut instances = crowd.iter_mut();
+                let mut next = 0;
+                let mut unwritten_initial = true;
+                for &i in batch.iter() {
+                    let instance = instances
+                        .nth(i - next)
+                        .expect("a batch's indices are the crowd's, ascending");
+                    next = i + 1;
+                    unwritten_initial &= instance.unwritten_changed == 0;
+                    let dt = instance.begin_frame(&input(i), debug);
+                    let (p, cx) = instance.event_context(world, dt);
+                    program = Some(p);
+                    members.push(cx);
+                }
+                if let Some(p) = program {
+                    // The dispatch count it returns is for the executor's tests.
+                    exec::run_batch(
+                        &p.code,
+                        &p.operands,
+                        p.forward,
+                        crate::lanes::Copies {
+                            lens: &p.scalar_lens,
+                            // With debug every written slot goes back: pin values too.
+                            kept: if debug { &p.written_lens } else { &p.kept_lens },
+                            written: &p.written_lens,
+                            program: if unwritten_initial { p.id } else { 0 },
+                            initial: &p.initial,
+                        },
+                        &mut members,
+                    );
+                }
+                let paths: smallvec::SmallVec<[(u64, u64); exec::BATCH]> =
+                    members.iter().map(|cx| (cx.path, cx.taken)).collect();
+                drop(members);
+                for (&i, (path, taken)) in batch.iter().zip(paths) {
+                    crowd[i].path = path;
+                    crowd[i].taken = taken;
+                }
+            }
+            start = end;
         }
-        ORDER.with(|cell| cell.set(scratch));
-    }
-
-    /// [`Instance::run_forward_batch`], with the batches spread over the threads of a rayon
-    /// pool: the one this is called in (inside `ThreadPool::install`, or from one of its
-    /// threads), else rayon's global pool. The crowd is ordered and split into batches as
-    /// one, on the calling thread, so every batch picks its members from the whole crowd;
-    /// the pool's threads then take batches as they become free, so a thread whose
-    /// batches cost more (characters mid-stride rather than standing) does not hold the
-    /// others up. The results are those of [`Instance::run_forward`] on each instance,
-    /// bit for bit, whichever thread runs which batch. `input` is called once per instance,
-    /// from the thread running its batch; the world is asked from every thread at once.
-    ///
-    /// Allocates nothing after warm-up when called from a thread of the pool (rayon queues
-    /// the call of a thread outside it, and its queue takes a block of memory every few
-    /// dozen calls) and once every thread has its scratch
-    /// ([`Instance::reserve_batch_scratch`] on each, for the calling thread's order lists
-    /// and the others' lanes).
-    ///
-    /// # Panics
-    /// As [`Instance::run_forward_batch`].
-    pub fn run_forward_batch_parallel<'i>(
-        crowd: &mut [Instance],
-        input: impl Fn(usize) -> FrameInput<'i> + Sync,
-        world: &(dyn WorldQuery + Sync),
-        debug: bool,
-    ) {
-        assert!(
-            u32::try_from(crowd.len()).is_ok(),
-            "a batched crowd has at most u32::MAX instances: split it"
-        );
-        let mut scratch = ORDER.with(std::cell::Cell::take);
-        batch_order(crowd, &mut scratch);
-        batch_bounds(crowd, &mut scratch);
-        let crowd = SharedCrowd::checked(crowd, &scratch.order, &mut scratch.seen);
-        let order = &scratch.order;
-        scratch.batches.par_iter().for_each(|&(start, end)| {
-            let batch = &order[start..end];
-            let mut members = smallvec::SmallVec::<[(usize, &mut Instance); exec::BATCH]>::new();
-            for &i in batch {
-                // SAFETY: `i` is in the order, which holds it once (checked): this batch's
-                // range is the only one that holds it, and it is asked for once here.
-                #[allow(unsafe_code)]
-                members.push((i, unsafe { crowd.member(i) }));
-            }
-            run_members(&mut members, &mut |k| input(k), world, debug);
-        });
         ORDER.with(|cell| cell.set(scratch));
     }
 
@@ -809,11 +806,6 @@ struct BatchOrder {
     rest: Vec<OrderKey>,
     /// One program's runs of one path in `rest`, as ranges of it.
     paths: Vec<(usize, usize)>,
-    /// The batches, as ranges of `order`.
-    batches: Vec<(usize, usize)>,
-    /// Which instances the order holds, while it is checked before batches run on
-    /// several threads ([`SharedCrowd::checked`]).
-    seen: Vec<bool>,
 }
 
 impl BatchOrder {
@@ -825,12 +817,8 @@ impl BatchOrder {
             keys,
             rest,
             paths,
-            batches,
-            seen,
         } = self;
         order.reserve(crowd.saturating_sub(order.len()));
-        batches.reserve(crowd.saturating_sub(batches.len()));
-        seen.reserve(crowd.saturating_sub(seen.len()));
         keys.reserve(crowd.saturating_sub(keys.len()));
         rest.reserve(crowd.saturating_sub(rest.len()));
         paths.reserve(crowd.saturating_sub(paths.len()));
@@ -857,7 +845,6 @@ fn batch_order(crowd: &[Instance], scratch: &mut BatchOrder) {
         keys,
         rest,
         paths,
-        ..
     } = scratch;
     keys.clear();
     keys.extend(
@@ -879,140 +866,6 @@ fn batch_order(crowd: &[Instance], scratch: &mut BatchOrder) {
     // `rest` is sorted as `keys`: program by program, path by path.
     for program in rest.chunk_by_mut(|&a, &b| key_program(a) == key_program(b)) {
         order_by_likeness(program, crowd, paths, order);
-    }
-}
-
-/// A crowd whose batches run on several threads at once, each reaching its own members
-/// only: [`Instance::run_forward_batch_parallel`]'s batches are disjoint ranges of an order
-/// checked, when this is made, to hold each of the crowd's indices once. Rust's borrows
-/// cannot hand out the members of scattered, disjoint index sets without copying the
-/// batches' references into a list per frame, which the frame must not allocate; hence
-/// the pointer.
-#[derive(Clone, Copy)]
-struct SharedCrowd<'a> {
-    first: *mut Instance,
-    _crowd: std::marker::PhantomData<&'a mut [Instance]>,
-}
-
-// SAFETY: an `Instance` may move between threads (it is `Send`), and the threads reach
-// disjoint instances (see `SharedCrowd::member`).
-#[allow(unsafe_code)]
-unsafe impl Send for SharedCrowd<'_> {}
-// SAFETY: as above: sharing the pointer shares no instance.
-#[allow(unsafe_code)]
-unsafe impl Sync for SharedCrowd<'_> {}
-
-impl<'a> SharedCrowd<'a> {
-    /// `crowd`, borrowed for as long as this lives, once `order` is known to hold every
-    /// index of it exactly once (`seen` is scratch).
-    ///
-    /// # Panics
-    /// If `order` does not: a defect of the batch order.
-    fn checked(crowd: &'a mut [Instance], order: &[usize], seen: &mut Vec<bool>) -> Self {
-        seen.clear();
-        seen.resize(crowd.len(), false);
-        assert_eq!(
-            order.len(),
-            crowd.len(),
-            "the batch order takes every instance"
-        );
-        for &i in order {
-            assert!(
-                !std::mem::replace(&mut seen[i], true),
-                "the batch order takes instance {i} twice"
-            );
-        }
-        Self {
-            first: crowd.as_mut_ptr(),
-            _crowd: std::marker::PhantomData,
-        }
-    }
-
-    /// The instance at `index` in the crowd.
-    ///
-    /// # Safety
-    /// `index` must be one of the order's (so in the crowd), and no other reference to that
-    /// instance may be live while the one returned is: each batch asks for the indices of
-    /// its own range of the order, once.
-    #[allow(unsafe_code)]
-    #[allow(clippy::mut_from_ref)]
-    unsafe fn member(&self, index: usize) -> &'a mut Instance {
-        // SAFETY: in the crowd, which is borrowed mutably for `'a`, and not referenced
-        // elsewhere (the caller's contract).
-        unsafe { &mut *self.first.add(index) }
-    }
-}
-
-/// Splits `scratch.order` (from [`batch_order`]) into its batches, as ranges of it in
-/// `scratch.batches`: runs of up to [`exec::BATCH`] consecutive instances of one program
-/// and profiling choice, each sorted into crowd order.
-fn batch_bounds(crowd: &[Instance], scratch: &mut BatchOrder) {
-    let BatchOrder { order, batches, .. } = scratch;
-    batches.clear();
-    let mut start = 0;
-    while start < order.len() {
-        let first = &crowd[order[start]];
-        let mut end = start + 1;
-        while end < order.len()
-            && end - start < exec::BATCH
-            && Arc::ptr_eq(&crowd[order[end]].program, &first.program)
-            && crowd[order[end]].is_profiling() == first.is_profiling()
-        {
-            end += 1;
-        }
-        order[start..end].sort_unstable();
-        batches.push((start, end));
-        start = end;
-    }
-}
-
-/// Runs one frame of the `forward` event on one batch's `members` (their crowd indices, in
-/// crowd order, and the instances: at most [`exec::BATCH`], of one program and profiling
-/// choice) as [`Instance::run_forward_batch`] does: a single member alone, more through
-/// the interpreter together.
-fn run_members<'i>(
-    members: &mut [(usize, &mut Instance)],
-    input: &mut impl FnMut(usize) -> FrameInput<'i>,
-    world: &dyn WorldQuery,
-    debug: bool,
-) {
-    if let [(i, single)] = members {
-        single.run_forward(&input(*i), world, debug);
-        return;
-    }
-    let mut program = None;
-    let mut cxs = smallvec::SmallVec::<[Ctx<'_>; exec::BATCH]>::new();
-    let mut unwritten_initial = true;
-    for (i, instance) in members.iter_mut() {
-        unwritten_initial &= instance.unwritten_changed == 0;
-        let dt = instance.begin_frame(&input(*i), debug);
-        let (p, cx) = instance.event_context(world, dt);
-        program = Some(p);
-        cxs.push(cx);
-    }
-    if let Some(p) = program {
-        // The dispatch count it returns is for the executor's tests.
-        exec::run_batch(
-            &p.code,
-            &p.operands,
-            p.forward,
-            crate::lanes::Copies {
-                lens: &p.scalar_lens,
-                // With debug every written slot goes back: pin values too.
-                kept: if debug { &p.written_lens } else { &p.kept_lens },
-                written: &p.written_lens,
-                program: if unwritten_initial { p.id } else { 0 },
-                initial: &p.initial,
-            },
-            &mut cxs,
-        );
-    }
-    let paths: smallvec::SmallVec<[(u64, u64); exec::BATCH]> =
-        cxs.iter().map(|cx| (cx.path, cx.taken)).collect();
-    drop(cxs);
-    for ((_, instance), (path, taken)) in members.iter_mut().zip(paths) {
-        instance.path = path;
-        instance.taken = taken;
     }
 }
 
@@ -1074,8 +927,6 @@ thread_local! {
             keys: Vec::new(),
             rest: Vec::new(),
             paths: Vec::new(),
-            batches: Vec::new(),
-            seen: Vec::new(),
         })
     };
 }
@@ -1200,8 +1051,6 @@ mod tests {
             keys: vec![97],
             rest: vec![98],
             paths: vec![(96, 95)],
-            batches: vec![(94, 93)],
-            seen: vec![true],
         };
         batch_order(&crowd, &mut scratch);
         assert_eq!(scratch.order, expected);
