@@ -1367,7 +1367,9 @@ fn run_group<const LANES: bool, const PROFILE: bool>(
     let mut pcs = [END; BATCH];
     // The members' path keys (`Ctx::path`) and jump sites (`Ctx::taken`) so far: all
     // `shared` and `shared_taken` until a member jumps on its own (`apart`), then each
-    // member's in `paths` and `takens`.
+    // member's in `paths` and `takens`. Two arrays rather than one of (key, sites) pairs:
+    // a batch-wide jump then updates each as one loop over 16 words; one array of pairs
+    // measured 2.8 % more instructions per walk_flat character-frame.
     let mut shared = 0u64;
     let mut apart = false;
     let mut paths = [0u64; BATCH];
