@@ -1297,7 +1297,7 @@ fn profile_dispatch(members: &mut [Ctx<'_>], group: u32, pc: usize, nanos: u64) 
 /// Grows the calling thread's scratch that [`run_batch`] keeps for a program of `code`
 /// over scalar slots `lens` to what its first batch on this thread would grow it to: the
 /// lanes, when the program runs on them, and the IKs' chain lanes when it also has a
-/// `TwoBoneIK`. Does nothing while a batch runs on this thread (it holds the lanes).
+/// `TwoBoneIK`. Leaves the lanes alone while a batch runs on this thread (it holds them).
 pub(crate) fn reserve_batch_scratch(code: &[Instr], lens: &ScalarLens) {
     if !lanes_pay_off(code.len(), lens) {
         return;

@@ -1072,6 +1072,38 @@ mod tests {
         }
     }
 
+    /// An order key holds the crowd index in its low 32 bits, and compares first by
+    /// program and profiling flag, then by the path key folded to 32 bits (its halves
+    /// exclusive-or'd), then by index.
+    #[test]
+    fn an_order_key_packs_program_profiling_folded_path_and_index() {
+        let mut pb = ProgramBuilder::new("keys");
+        pb.set_forward_entry(pb.here());
+        pb.emit(Op::End, &[]);
+        let program = Arc::new(pb.finish());
+        let with_path = |path: u64| {
+            let mut instance = Instance::new(Arc::clone(&program), one_bone()).expect("instance");
+            instance.path = path;
+            instance
+        };
+        let (a, b) = (
+            with_path(0x0000_0001_0000_0003),
+            with_path(0x0000_0002_0000_0003),
+        );
+        let (ka, kb) = (order_key(&a, 7), order_key(&b, 3));
+        assert_eq!((key_index(ka), key_index(kb)), (7, 3));
+        assert_eq!(key_program(ka), key_program(kb));
+        assert_eq!(key_program(ka), Arc::as_ptr(&program) as u128);
+        // 1 ^ 3 = 2 and 2 ^ 3 = 1: b's folded path sorts first, whatever the indices.
+        assert_eq!(key_path(ka) & 0xFFFF_FFFF, 2);
+        assert_eq!(key_path(kb) & 0xFFFF_FFFF, 1);
+        assert!(kb < ka);
+        // Keys that fold alike are one path; the index then orders them.
+        let c = with_path(0x0000_0003_0000_0001);
+        assert_eq!(key_path(order_key(&c, 9)), key_path(ka));
+        assert!(ka < order_key(&c, 9));
+    }
+
     /// The instances outside whole batches go path after path, each next path the one
     /// whose jump sites differ least from the last one's, from the path of the crowd's
     /// first of them; ties in crowd order. With more paths than `LIKENESS_PATHS`, crowd
