@@ -1072,15 +1072,20 @@ mod tests {
         }
     }
 
+    /// A program named `name` whose forward event only ends.
+    fn ending(name: &str) -> Arc<Program> {
+        let mut pb = ProgramBuilder::new(name);
+        pb.set_forward_entry(pb.here());
+        pb.emit(Op::End, &[]);
+        Arc::new(pb.finish())
+    }
+
     /// An order key holds the crowd index in its low 32 bits, and compares first by
     /// program and profiling flag, then by the path key folded to 32 bits (its halves
     /// exclusive-or'd), then by index.
     #[test]
     fn an_order_key_packs_program_profiling_folded_path_and_index() {
-        let mut pb = ProgramBuilder::new("keys");
-        pb.set_forward_entry(pb.here());
-        pb.emit(Op::End, &[]);
-        let program = Arc::new(pb.finish());
+        let program = ending("keys");
         let with_path = |path: u64| {
             let mut instance = Instance::new(Arc::clone(&program), one_bone()).expect("instance");
             instance.path = path;
@@ -1110,10 +1115,7 @@ mod tests {
     /// order.
     #[test]
     fn paths_too_rare_for_a_batch_follow_each_other_by_likeness() {
-        let mut pb = ProgramBuilder::new("likeness");
-        pb.set_forward_entry(pb.here());
-        pb.emit(Op::End, &[]);
-        let program = Arc::new(pb.finish());
+        let program = ending("likeness");
         // (path, jump sites) by crowd index: path 4 first in the crowd, then paths 2, 1, 3,
         // 5 interleaved. From path 4 (sites 0b0001), path 3 (0b0011) and path 5 (0b1001)
         // both differ in one bit: path 3 has the earlier first instance. From 3, path 1
