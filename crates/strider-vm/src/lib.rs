@@ -29,6 +29,7 @@ pub mod instance;
 mod lanes;
 pub mod native;
 mod per_member;
+mod prefetch;
 pub mod profile;
 pub mod program;
 mod sharing;
