@@ -179,6 +179,8 @@ struct Crowd {
     offsets: Vec<usize>,
     /// Characters the interpreter runs together (1: each alone).
     batch: usize,
+    /// The threads' shares of the crowd when it runs batched on several.
+    shares: Shares,
 }
 
 impl Crowd {
@@ -212,6 +214,7 @@ impl Crowd {
                 })
                 .collect(),
             batch: args.batch as usize,
+            shares: Shares::default(),
         })
     }
 
@@ -242,10 +245,18 @@ impl Crowd {
             };
             let (instances, offsets) = (&mut self.instances, &self.offsets);
             // A full batch: each thread's share of the crowd in one call, which picks the
-            // batches (characters whose last frames took one path together). A smaller
-            // one: the crowd in batches of that size, in order.
+            // batches (characters whose last frames took one path together), the shares
+            // balanced by the threads' times. A smaller one: the crowd in batches of that
+            // size, in order.
+            if self.batch == BATCH && threads > 1 {
+                self.shares.fit(threads as usize, instances.len());
+                let Shares { bounds, nanos, .. } = &mut self.shares;
+                run_shares(instances, offsets, bounds, nanos, &run);
+                self.shares.balance();
+                return;
+            }
             let chunk = if self.batch == BATCH {
-                instances.len().div_ceil(threads as usize).max(1)
+                instances.len().max(1)
             } else {
                 self.batch
             };
@@ -281,6 +292,90 @@ impl Crowd {
                 .for_each(run);
         }
     }
+}
+
+/// The threads' shares of a batched crowd: contiguous runs of characters (in offset order,
+/// so that a share's characters share their paths as the whole crowd's do), one per
+/// thread, moved after every frame so that each takes the same time. Characters differ in
+/// cost by where they are in the scenario (one standing costs less than one walking), so
+/// equal halves leave one thread waiting for the other. Which thread runs a character
+/// changes nothing it computes.
+#[derive(Default)]
+struct Shares {
+    /// Share `k` is characters `bounds[k]..bounds[k + 1]`; `bounds[0] = 0`, the last is the
+    /// crowd's size.
+    bounds: Vec<usize>,
+    /// How long each share took in the last frame, nanoseconds.
+    nanos: Vec<f64>,
+    /// The next frame's bounds while they are worked out.
+    next: Vec<usize>,
+}
+
+impl Shares {
+    /// Equal shares of a crowd of `n` for `threads` threads, unless the shares are for
+    /// those already. Allocates only then (the bench's untimed frame on a pool comes first).
+    fn fit(&mut self, threads: usize, n: usize) {
+        if self.nanos.len() == threads && self.bounds.last() == Some(&n) {
+            return;
+        }
+        self.bounds = (0..=threads).map(|k| k * n / threads).collect();
+        self.nanos = vec![0.0; threads];
+        self.next = self.bounds.clone();
+    }
+
+    /// Moves each bound halfway to where the last frame's times put an equal share of the
+    /// time: each share's characters taken to cost alike, its time spread evenly over them.
+    /// Every share keeps at least one character when the crowd has one for each.
+    fn balance(&mut self) {
+        let threads = self.nanos.len();
+        let n = self.bounds[threads];
+        let total: f64 = self.nanos.iter().sum();
+        if n < threads || !(total > 0.0 && total.is_finite()) {
+            return;
+        }
+        for j in 1..threads {
+            let goal = total * j as f64 / threads as f64;
+            let mut before = 0.0;
+            let mut at = self.bounds[j] as f64;
+            for (k, &took) in self.nanos.iter().enumerate() {
+                if before + took >= goal && took > 0.0 {
+                    let (from, to) = (self.bounds[k] as f64, self.bounds[k + 1] as f64);
+                    at = from + (goal - before) / took * (to - from);
+                    break;
+                }
+                before += took;
+            }
+            let halfway = ((self.bounds[j] as f64 + at) / 2.0).round() as usize;
+            self.next[j] = halfway.clamp(self.next[j - 1] + 1, n - (threads - j));
+        }
+        self.bounds.copy_from_slice(&self.next);
+    }
+}
+
+/// Runs `run` on each share of `instances` (and their `offsets`) that `bounds` marks, each
+/// on a thread of the current pool, and writes each share's time into `nanos`.
+fn run_shares(
+    instances: &mut [Instance],
+    offsets: &[usize],
+    bounds: &[usize],
+    nanos: &mut [f64],
+    run: &(impl Fn((&mut [Instance], &[usize])) + Sync),
+) {
+    if let [took] = nanos {
+        let start = Instant::now();
+        run((instances, offsets));
+        *took = start.elapsed().as_nanos() as f64;
+        return;
+    }
+    let half = nanos.len() / 2;
+    let at = bounds[half] - bounds[0];
+    let (first, second) = instances.split_at_mut(at);
+    let (first_offsets, second_offsets) = offsets.split_at(at);
+    let (first_nanos, second_nanos) = nanos.split_at_mut(half);
+    rayon::join(
+        || run_shares(first, first_offsets, &bounds[..=half], first_nanos, run),
+        || run_shares(second, second_offsets, &bounds[half..], second_nanos, run),
+    );
 }
 
 /// Runs `strider bench`.
@@ -733,7 +828,41 @@ fn profile_top(
 
 #[cfg(test)]
 mod tests {
-    use super::scrambled;
+    use super::{Shares, scrambled};
+
+    /// Shares after `fit` and one `balance` with the given times.
+    fn balanced(threads: usize, n: usize, nanos: &[f64]) -> Vec<usize> {
+        let mut shares = Shares::default();
+        shares.fit(threads, n);
+        shares.nanos.copy_from_slice(nanos);
+        shares.balance();
+        shares.bounds
+    }
+
+    /// A share that took longer gives characters to the next: each bound moves halfway to
+    /// where the times, spread evenly over each share's characters, split them equally.
+    #[test]
+    fn the_threads_shares_move_toward_equal_times() {
+        // Equal halves of 100, the first 3 times as slow: half the time, 2 of 4, lies 2/3
+        // of the way into the first share, at 33.3; halfway from 50 is 41.67.
+        assert_eq!(balanced(2, 100, &[3.0, 1.0]), [0, 42, 100]);
+        // The other way round: 50 + 16.67 / 2 = 58.33.
+        assert_eq!(balanced(2, 100, &[1.0, 3.0]), [0, 58, 100]);
+        // Balanced already: nothing moves.
+        assert_eq!(balanced(2, 100, &[2.0, 2.0]), [0, 50, 100]);
+        // Three shares of 30 (10 each), times 1, 1, 4 of 6: the first bound's goal (2) is
+        // the end of share 1 (20, halfway from 10: 15), the second's (4) half-way through
+        // share 2 (25, halfway from 20: 22.5, rounded to 23).
+        assert_eq!(balanced(3, 30, &[1.0, 1.0, 4.0]), [0, 15, 23, 30]);
+        // Every share keeps a character, however slow its neighbour.
+        assert_eq!(balanced(3, 3, &[100.0, 0.0, 0.0]), [0, 1, 2, 3]);
+        // No usable times (none yet, or not finite): the shares stay equal.
+        assert_eq!(balanced(2, 100, &[0.0, 0.0]), [0, 50, 100]);
+        assert_eq!(balanced(2, 100, &[f64::NAN, 1.0]), [0, 50, 100]);
+        assert_eq!(balanced(2, 100, &[f64::INFINITY, 1.0]), [0, 50, 100]);
+        // Fewer characters than threads: the empty shares stay as they are.
+        assert_eq!(balanced(3, 2, &[1.0, 1.0, 0.0]), [0, 0, 1, 2]);
+    }
 
     /// `--shuffle` takes every place once, for crowds whose size shares factors with the
     /// stride's first guess too, and puts neighbours apart.
