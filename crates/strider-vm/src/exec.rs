@@ -1342,7 +1342,7 @@ fn run_group<const LANES: bool, const PROFILE: bool>(
     // Without lanes, each member's own base pointers (stride 1).
     let mut own = [Bases::NONE; BATCH];
     if LANES {
-        crate::prefetch::batch(members, &copies);
+        crate::prefetch::batch(members);
         lanes.load(copies, members);
     } else {
         for (b, cx) in own.iter_mut().zip(members.iter_mut()) {
