@@ -179,7 +179,8 @@ struct Crowd {
     offsets: Vec<usize>,
     /// Characters the interpreter runs together (1: each alone).
     batch: usize,
-    /// The threads' shares of the crowd when it runs batched on several.
+    /// The threads' shares of the crowd when it runs in full batches (one share on one
+    /// thread).
     shares: Shares,
 }
 
@@ -244,31 +245,24 @@ impl Crowd {
                 Instance::run_forward_batch(instances, |k| input(offsets[k]), world, debug);
             };
             let (instances, offsets) = (&mut self.instances, &self.offsets);
-            // A full batch: each thread's share of the crowd in one call, which picks the
-            // batches (characters whose last frames took one path together), the shares
-            // balanced by the threads' times. A smaller one: the crowd in batches of that
-            // size, in order.
-            if self.batch == BATCH && threads > 1 {
+            // A full batch: each thread's share of the crowd in one call (the whole crowd on
+            // one thread), which picks the batches (characters whose last frames took one
+            // path together), the shares balanced by the threads' times. A smaller one: the
+            // crowd in batches of that size, in order.
+            if self.batch == BATCH {
                 self.shares.fit(threads as usize, instances.len());
                 let Shares { bounds, nanos, .. } = &mut self.shares;
                 run_shares(instances, offsets, bounds, nanos, &run);
                 self.shares.balance();
-                return;
-            }
-            let chunk = if self.batch == BATCH {
-                instances.len().max(1)
-            } else {
-                self.batch
-            };
-            if threads == 1 {
+            } else if threads == 1 {
                 instances
-                    .chunks_mut(chunk)
-                    .zip(offsets.chunks(chunk))
+                    .chunks_mut(self.batch)
+                    .zip(offsets.chunks(self.batch))
                     .for_each(run);
             } else {
                 instances
-                    .par_chunks_mut(chunk)
-                    .zip(offsets.par_chunks(chunk))
+                    .par_chunks_mut(self.batch)
+                    .zip(offsets.par_chunks(self.batch))
                     .for_each(run);
             }
             return;
@@ -313,7 +307,8 @@ struct Shares {
 
 impl Shares {
     /// Equal shares of a crowd of `n` for `threads` threads, unless the shares are for
-    /// those already. Allocates only then (the bench's untimed frame on a pool comes first).
+    /// those already. Allocates only then (the bench's warm-up, and each pool's untimed
+    /// frame, come before the frames it times).
     fn fit(&mut self, threads: usize, n: usize) {
         if self.nanos.len() == threads && self.bounds.last() == Some(&n) {
             return;
