@@ -146,6 +146,11 @@ unsafe impl GlobalAlloc for CountingAllocator {
 /// Runs `f` and returns its result with the number of heap allocations (and reallocations)
 /// made meanwhile on any thread, or `None` for the count when [`CountingAllocator`] is not
 /// the global allocator (a library user's binary).
+///
+/// Never inlined, in every build profile: the bench's timed frames run inside it, so a
+/// profiler can collect exactly them by its name (callgrind's
+/// `--toggle-collect='strider_cli::alloc_count::count*'`, docs/performance.md).
+#[inline(never)]
 pub(crate) fn count<T>(f: impl FnOnce() -> T) -> (T, Option<u64>) {
     WATCHERS.fetch_add(1, Ordering::SeqCst);
     COUNTING.fetch_add(1, Ordering::SeqCst);

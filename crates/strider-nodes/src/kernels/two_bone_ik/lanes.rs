@@ -276,6 +276,31 @@ fn put<const N: usize, const C: usize>(v: &mut [L<f32, N>; C], m: usize, x: [f32
     }
 }
 
+/// `f` of each chain's components of `a` and `b`, computed chain by chain in one loop
+/// whose body is all of `f`. The lanes' products of several components go through here
+/// rather than through whole-lane operations: with the crate graph optimised as one (fat
+/// LTO), the compiler turns those sixteen-lane operations partly into single floats and
+/// four-float vectors across the components, while a loop over the chains stays eight
+/// chains at a time.
+#[inline(always)]
+fn per_chain<const N: usize, const A: usize, const B: usize, const C: usize>(
+    a: &[L<f32, N>; A],
+    b: &[L<f32, N>; B],
+    f: impl Fn([f32; A], [f32; B]) -> [f32; C],
+) -> [L<f32, N>; C] {
+    let mut out = [L([0.0; N]); C];
+    for m in 0..N {
+        put(&mut out, m, f(get(a, m), get(b, m)));
+    }
+    out
+}
+
+/// The rotations `a · b`, as [`mul_parts`] of each chain's.
+#[inline(always)]
+fn quat_mul<const N: usize>(a: &Q<N>, b: &Q<N>) -> Q<N> {
+    per_chain(a, b, mul_parts::<f32>)
+}
+
 /// `a · b` summed as glam's three-component dot product: `(x + y) + z`.
 #[inline(always)]
 fn dot<const N: usize>(a: V<N>, b: V<N>) -> L<f32, N> {
@@ -285,11 +310,13 @@ fn dot<const N: usize>(a: V<N>, b: V<N>) -> L<f32, N> {
 /// `a × b`, each component one product minus another, as glam's.
 #[inline(always)]
 fn cross<const N: usize>(a: V<N>, b: V<N>) -> V<N> {
-    [
-        a[1] * b[2] - b[1] * a[2],
-        a[2] * b[0] - b[2] * a[0],
-        a[0] * b[1] - b[0] * a[1],
-    ]
+    per_chain(&a, &b, |a, b| {
+        [
+            a[1] * b[2] - b[1] * a[2],
+            a[2] * b[0] - b[2] * a[0],
+            a[0] * b[1] - b[0] * a[1],
+        ]
+    })
 }
 
 #[inline(always)]
@@ -403,12 +430,16 @@ fn from_axes<const N: usize>(x: V<N>, y: V<N>, z: V<N>) -> Q<N> {
 #[inline(always)]
 fn frame_times<const N: usize>(frame: &[V<N>; 3], [lx, ly, lz]: [f32; 3]) -> V<N> {
     let [x, y, z] = frame;
-    let (lx, ly, lz) = (L::splat(lx), L::splat(ly), L::splat(lz));
-    [
-        (x[0] * lx + y[0] * ly) + z[0] * lz,
-        (x[1] * lx + y[1] * ly) + z[1] * lz,
-        (x[2] * lx + y[2] * ly) + z[2] * lz,
-    ]
+    let xy = per_chain(x, y, |x, y| {
+        [
+            x[0] * lx + y[0] * ly,
+            x[1] * lx + y[1] * ly,
+            x[2] * lx + y[2] * ly,
+        ]
+    });
+    per_chain(&xy, z, |xy, z| {
+        [xy[0] + z[0] * lz, xy[1] + z[1] * lz, xy[2] + z[2] * lz]
+    })
 }
 
 /// `v` rotated by the unit rotation `q`, in the order of operations of
@@ -442,7 +473,7 @@ fn relative_to<const N: usize>(
     let inv_s = [inverse(ps[0]), inverse(ps[1]), inverse(ps[2])];
     let inv_r = [-pr[0], -pr[1], -pr[2], pr[3]];
     let moved = rotate(inv_r, sub(t, pt));
-    let q = mul_parts(inv_r, r);
+    let q = quat_mul(&inv_r, &r);
     let len = dot4(q, q).sqrt();
     (
         [
@@ -716,9 +747,9 @@ impl<const N: usize> ChainLanes<N> {
             normal,
         );
         let rb = self.rot_b;
-        let e_in_b = mul_parts([-rb[0], -rb[1], -rb[2], rb[3]], self.rot_e);
+        let e_in_b = quat_mul(&[-rb[0], -rb[1], -rb[2], rb[3]], &self.rot_e);
         let own = B::of(self.own_rotation);
-        self.qe = own.pick_all(unit(self.goal_rot), unit(mul_parts(qb, e_in_b)));
+        self.qe = own.pick_all(unit(self.goal_rot), unit(quat_mul(&qb, &e_in_b)));
         self.new_mid = new_mid;
         self.new_end = new_end;
         self.qa = qa;
