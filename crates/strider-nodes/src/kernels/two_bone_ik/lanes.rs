@@ -15,7 +15,10 @@
 //!
 //! Each step is one operation on all `N` chains ([`L`]: a loop over `N` numbers, which the
 //! compiler turns into vector instructions), rather than one loop running the whole solve
-//! chain by chain: a loop body that large is not vectorised.
+//! chain by chain: a loop body that large is not vectorised. The products of several
+//! components (rotations, cross products, a frame's columns) are the exception: each is one
+//! loop over the chains whose body is the whole product ([`per_chain`]), which stays
+//! vectorised across the chains however much code is optimised around it.
 
 use super::{
     BoneAxes, IkReport, LEN_EPS, PARALLEL_EPS, Pole, REACH_TOLERANCE, TwoBoneIk, stretch_scale,
