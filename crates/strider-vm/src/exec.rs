@@ -1407,16 +1407,35 @@ fn run_group<const LANES: bool, const PROFILE: bool>(
             }
             timed = Some((pc, group, now));
         }
-        // SAFETY: as in `run_loop`.
-        let Instr { op, args } = unsafe { *code.get_unchecked(pc) };
-        let args = args as usize;
-        debug_assert!(args + MAX_OPERANDS <= operands.len());
-        // SAFETY: in bounds by the operand list's padding (see `run_loop`).
-        let o = unsafe { operands.get_unchecked(args..args + MAX_OPERANDS) };
+        // Instruction `pc`'s op and operand window.
+        let fetch = |pc: usize| {
+            // SAFETY: as in `run_loop`.
+            let Instr { op, args } = unsafe { *code.get_unchecked(pc) };
+            let args = args as usize;
+            debug_assert!(args + MAX_OPERANDS <= operands.len());
+            // SAFETY: in bounds by the operand list's padding (see `run_loop`).
+            (op, unsafe {
+                operands.get_unchecked(args..args + MAX_OPERANDS)
+            })
+        };
+        let (mut op, mut o) = fetch(pc);
         moved = 0;
         if cfg!(test) {
             // Counted for the tests only (see above).
             dispatches += 1;
+        }
+        if LANES && !PROFILE && group == everyone {
+            // A run of plain scalar ops with the whole batch here: each runs on all lanes
+            // and the next follows at once, through a jump table of its own (the dispatch
+            // below tests for the jumps first).
+            // SAFETY: an instruction of the program whose slots the lanes hold.
+            while unsafe { crate::lanes::run_wide(op, o, lane0, n, &dts) } {
+                pc += 1;
+                (op, o) = fetch(pc);
+                if cfg!(test) {
+                    dispatches += 1;
+                }
+            }
         }
         // Runs `$body` for member `$k` (`< n`), with its context, slots and slot bases.
         macro_rules! visit {
@@ -1517,8 +1536,9 @@ fn run_group<const LANES: bool, const PROFILE: bool>(
                         None => {}
                     }
                 }
-                // SAFETY: an instruction of the program whose slots the lanes hold.
-                _ if unsafe { crate::lanes::run_wide(op, o, lane0, n, &dts) } => {
+                // SAFETY: an instruction of the program whose slots the lanes hold. (Run
+                // by the loop above when not profiling.)
+                _ if PROFILE && unsafe { crate::lanes::run_wide(op, o, lane0, n, &dts) } => {
                     pc += 1;
                     continue;
                 }
