@@ -268,6 +268,14 @@ macro_rules! once {
     };
 }
 
+/// Leaves alone what an array variable's write would change elsewhere (the `$forget` of
+/// [`execute!`] for a run on an instance's own slots, which has no copies of its arrays).
+macro_rules! keep {
+    ($elem:expr, $array:expr) => {{
+        let _ = ($elem, $array);
+    }};
+}
+
 /// A trace's hit as SIMD vectors (point, normal) and its distance, or `None` for a miss
 /// or a hit with a non-finite component. Read where the world returned it: its vectors
 /// with [`load_vec3`], as stored, not copied out first (a copy reads 16 bytes at a time
@@ -428,9 +436,12 @@ impl Bases {
 /// Expanded three times: in the interpreter loop ([`run_loop`]), in the batch loop
 /// ([`run_batch`]) and in [`step`], the entry point of code generated ahead of time. After
 /// a control op the expansion site decides what happens: `$jump!(target)` continues at
-/// instruction `target`, `$end!()` ends the event.
+/// instruction `target`, `$end!()` ends the event. Before an op writes an array variable
+/// (`ArraySetAt`, `ArrayAdd` and `ArrayReset` once for all the instances, a `Copy` or
+/// `Select` into it for each) `$forget!(elem, array)` is told: [`keep`] where nothing
+/// holds copies of arrays, the batch's copies in [`run_batch`] (`crate::array_lanes`).
 macro_rules! execute {
-    ($op:expr, $o:expr, $s:ident, $bases:ident, $stride:expr, $cx:ident, $jump:ident, $end:ident, $each:ident) => {{
+    ($op:expr, $o:expr, $s:ident, $bases:ident, $stride:expr, $cx:ident, $jump:ident, $end:ident, $each:ident, $forget:ident) => {{
         let (op, o): (Op, &[u32]) = ($op, $o);
         macro_rules! at {
             ($k:expr) => {
@@ -539,6 +550,7 @@ macro_rules! execute {
                     ValueType::Name => $s.names[at!(to_k)] = $s.names[at!(from_k)],
                     ValueType::Array(e) => {
                         let (from, to) = (at!(from_k), at!(to_k));
+                        $forget!(e, to as u32);
                         macro_rules! copy {
                             ($sc:ident, $ar:expr, $zero:expr) => {
                                 copy_vec(&mut $ar, from, to)
@@ -970,7 +982,9 @@ macro_rules! execute {
                 }
                 by_elem!(e, $s, count);
             }),
-            Op::ArraySetAt(e) => $each!({
+            Op::ArraySetAt(e) => {
+                $forget!(e, o[0]);
+                $each!({
                 let index = i!(1);
                 macro_rules! set {
                     ($sc:ident, $ar:expr, $zero:expr) => {{
@@ -979,8 +993,11 @@ macro_rules! execute {
                     }};
                 }
                 by_elem!(e, $s, set);
-            }),
-            Op::ArrayAdd(e) => $each!({
+            })
+            }
+            Op::ArrayAdd(e) => {
+                $forget!(e, o[0]);
+                $each!({
                 macro_rules! add {
                     ($sc:ident, $ar:expr, $zero:expr) => {{
                         let value = scalar!($sc, 1);
@@ -988,15 +1005,19 @@ macro_rules! execute {
                     }};
                 }
                 by_elem!(e, $s, add);
-            }),
-            Op::ArrayReset(e) => $each!({
+            })
+            }
+            Op::ArrayReset(e) => {
+                $forget!(e, o[0]);
+                $each!({
                 macro_rules! reset {
                     ($sc:ident, $ar:expr, $zero:expr) => {
                         $ar[at!(0)].clear()
                     };
                 }
                 by_elem!(e, $s, reset);
-            }),
+            })
+            }
 
             // Draw ops: DebugDraw::push records nothing when drawing is off.
             Op::DrawPoint => $each!({
@@ -1146,7 +1167,8 @@ fn run_loop<const PROFILE: bool>(
             cx,
             jump,
             end,
-            once
+            once,
+            keep
         );
         #[cfg(feature = "profile")]
         if PROFILE && let Some(started) = last {
@@ -1295,16 +1317,18 @@ fn profile_dispatch(members: &mut [Ctx<'_>], group: u32, pc: usize, nanos: u64) 
 }
 
 /// Grows the calling thread's scratch that [`run_batch`] keeps for a program of `code`
-/// over scalar slots `lens` to what its first batch on this thread would grow it to: the
-/// lanes, when the program runs on them, and the IKs' chain lanes when it also has a
+/// over scalar slots `lens`, with initial slots `initial`, to what its first batch on
+/// this thread would grow it to: the lanes and the room for copies of its arrays, when
+/// the program runs on them, and the IKs' chain lanes when it also has a
 /// `TwoBoneIK`. Leaves the lanes alone while a batch runs on this thread (it holds them).
-pub(crate) fn reserve_batch_scratch(code: &[Instr], lens: &ScalarLens) {
+pub(crate) fn reserve_batch_scratch(code: &[Instr], lens: &ScalarLens, initial: &Slots) {
     if !lanes_pay_off(code.len(), lens) {
         return;
     }
     LANES.with(|cell| {
         if let Ok(mut lanes) = cell.try_borrow_mut() {
             lanes.reserve(lens);
+            lanes.arrays.reserve(initial);
         }
     });
     if code.iter().any(|i| i.op == Op::TwoBoneIK) {
@@ -1581,12 +1605,24 @@ fn run_group<const LANES: bool, const PROFILE: bool>(
                     continue;
                 }
                 // SAFETY: as above.
-                _ if unsafe { crate::per_member::run_per_member(op, o, &lane0, members) } => {
+                _ if unsafe {
+                    crate::per_member::run_per_member(op, o, &lane0, &mut lanes.arrays, members)
+                } =>
+                {
                     pc += 1;
                     continue;
                 }
                 _ => {}
             }
+        }
+        // A handler's write of an array variable: the batch's copy of it, if any, no longer
+        // holds what the members' arrays will (`crate::array_lanes`).
+        macro_rules! forget {
+            ($elem:expr, $array:expr) => {
+                if LANES {
+                    lanes.arrays.forget($elem, $array)
+                }
+            };
         }
         execute!(
             op,
@@ -1597,7 +1633,8 @@ fn run_group<const LANES: bool, const PROFILE: bool>(
             cx,
             jump,
             end,
-            each
+            each,
+            forget
         );
         if moved == 0 {
             // The whole group goes on to the next instruction, where waiting members may
@@ -1685,7 +1722,7 @@ pub(crate) unsafe fn step(op: Op, o: &[u32], cx: &mut Ctx<'_>, next: usize) -> u
     }
     let bases = Bases::of(cx.slots);
     let s = &mut *cx.slots;
-    execute!(op, o, s, bases, 1, cx, jump, end, once);
+    execute!(op, o, s, bases, 1, cx, jump, end, once, keep);
     next
 }
 
@@ -1788,6 +1825,120 @@ mod tests {
                 alone.run_forward(&input(k), &EmptyWorld, false);
             }
             assert!(alone.slots().bit_eq(instance.slots()), "member {k}");
+        }
+    }
+
+    /// Reads of float arrays between writes of every kind: by the whole batch
+    /// (`ArraySetAt`), by some members only (an `ArraySetAt` behind a branch, a `Select`
+    /// into it, which leaves the members' lengths apart, an `ArrayAdd` behind a branch),
+    /// by all through the handlers (an `ArrayAdd`, an `ArrayReset`, a `Copy` into it), with
+    /// indices alike and apart.
+    /// Returns the program and the slots of the reads' results.
+    fn array_reads() -> (crate::Program, [usize; 10]) {
+        let mut pb = ProgramBuilder::new("array reads");
+        let float = |pb: &mut ProgramBuilder, v: f32| pb.constant(&Value::Float(v), "");
+        let int = |pb: &mut ProgramBuilder, v: i32| pb.constant(&Value::Int(v), "");
+        let array = |pb: &mut ProgramBuilder, items: &[f32]| {
+            let items = items.iter().map(|&x| Value::Float(x)).collect();
+            pb.constant(&Value::Array(Elem::Float, items), "")
+        };
+        let (a, b, c) = (
+            array(&mut pb, &[1.0, 2.0, 3.0]),
+            array(&mut pb, &[7.0, 8.0]),
+            array(&mut pb, &[5.0, 6.0, 7.0]),
+        );
+        let (half, ten) = (float(&mut pb, 0.5), float(&mut pb, 10.0));
+        let [i0, i1, i2, i3, before] = [0, 1, 2, 3, -1].map(|v| int(&mut pb, v));
+        let [d, sum, scaled] = [(); 3].map(|()| pb.alloc(ValueType::Float));
+        let x = [(); 10].map(|()| pb.alloc(ValueType::Float));
+        let [big, small] = [(); 2].map(|()| pb.alloc(ValueType::Bool));
+        let apart = pb.alloc(ValueType::Int);
+        pb.set_construction_entry(pb.here());
+        pb.emit(Op::End, &[]);
+        pb.set_forward_entry(pb.here());
+        let at = Op::ArrayAt(Elem::Float);
+        pb.emit(Op::DeltaTime, &[d]);
+        // Made at the first read, then written by the whole batch and read again.
+        pb.emit(at, &[a, i1, x[0]]);
+        pb.emit(Op::AddF, &[x[0], d, sum]);
+        pb.emit(Op::ArraySetAt(Elem::Float), &[a, i1, sum]);
+        // Read again and again (the batch runs on lanes with two instructions per slot).
+        for _ in 0..24 {
+            pb.emit(at, &[a, i1, x[1]]);
+        }
+        // Written by the members with a long time step only.
+        pb.emit(Op::GreaterF, &[d, half, big]);
+        let to_skip = pb.emit(Op::JumpIfFalse, &[big, 0]);
+        pb.emit(Op::ArraySetAt(Elem::Float), &[a, i2, d]);
+        let skip = pb.emit(at, &[a, i2, x[2]]);
+        pb.patch(to_skip, 1, skip);
+        // Grown by everyone, through the handlers, and read past the old end.
+        pb.emit(Op::ArrayAdd(Elem::Float), &[a, d]);
+        pb.emit(at, &[a, i3, x[3]]);
+        // Indices apart: each member's own, some out of range.
+        pb.emit(Op::MulF, &[d, ten, scaled]);
+        pb.emit(Op::ToInt, &[scaled, apart]);
+        pb.emit(at, &[a, apart, x[4]]);
+        pb.emit(at, &[a, before, x[5]]);
+        // Chosen by a select: b for the short steps, itself for the others (the lengths
+        // part), then grown by the short steps only.
+        pb.emit(Op::Not, &[big, small]);
+        pb.emit(Op::Select(ValueType::Array(Elem::Float)), &[small, b, a, a]);
+        pb.emit(at, &[a, i0, x[6]]);
+        let to_join = pb.emit(Op::JumpIfFalse, &[small, 0]);
+        pb.emit(Op::ArrayAdd(Elem::Float), &[a, d]);
+        let join = pb.emit(at, &[a, i2, x[7]]);
+        pb.patch(to_join, 1, join);
+        // A third array read, then an emptied one copied into it.
+        pb.emit(at, &[c, i0, x[8]]);
+        pb.emit(Op::ArrayReset(Elem::Float), &[b]);
+        pb.emit(Op::Copy(ValueType::Array(Elem::Float)), &[b, c]);
+        pb.emit(at, &[c, i0, x[9]]);
+        pb.emit(Op::End, &[]);
+        (pb.finish(), x.map(|s| s as usize))
+    }
+
+    #[test]
+    fn a_batch_reads_its_copies_of_arrays_as_each_member_reads_its_own() {
+        let (program, x) = array_reads();
+        assert!(lanes_pay_off(program.code.len(), &program.scalar_lens));
+        let program = Arc::new(program);
+        let dts = [0.25, 0.75, 0.125, 1.0, 0.5, 0.625, 0.375];
+        let input = |k: usize| FrameInput {
+            dt: dts[k],
+            ..FrameInput::default()
+        };
+        let make = |n: usize| -> Vec<Instance> {
+            (0..n)
+                .map(|_| Instance::new(Arc::clone(&program), one_bone()).expect("instantiates"))
+                .collect()
+        };
+        // A full batch and a short one.
+        for n in [BATCH, dts.len()] {
+            let input = |k: usize| input(k % dts.len());
+            let (mut batched, mut alone) = (make(n), make(n));
+            // Frame 1 by hand for dt 0.25 (member 0): 2 + 0.25 at index 1, then the
+            // appended 0.25 at index 3 and index 2 (int(10 dt)) of [1, 2.25, 3, 0.25],
+            // nothing at -1; b's 7 selected in, the short step's append to [7, 8, 0.25];
+            // c's 5, then nothing in the emptied b copied into c.
+            Instance::run_forward_batch(&mut batched, input, &EmptyWorld, false);
+            let f = &batched[0].slots().floats;
+            let got = x.map(|k| f[k]);
+            let want = [2.0, 2.25, 3.0, 0.25, 3.0, 0.0, 7.0, 0.25, 5.0, 0.0];
+            assert_eq!(got, want, "n {n}");
+            for (k, a) in alone.iter_mut().enumerate() {
+                a.run_forward(&input(k), &EmptyWorld, false);
+            }
+            // Forty frames more: the arrays outgrow the copies' room.
+            for _ in 0..40 {
+                Instance::run_forward_batch(&mut batched, input, &EmptyWorld, false);
+                for (k, a) in alone.iter_mut().enumerate() {
+                    a.run_forward(&input(k), &EmptyWorld, false);
+                }
+                for (k, (b, a)) in batched.iter().zip(&alone).enumerate() {
+                    assert!(a.slots().bit_eq(b.slots()), "n {n}, member {k}");
+                }
+            }
         }
     }
 

@@ -512,7 +512,7 @@ impl Instance {
     /// the scratch is large enough already; does nothing to the lanes of a batch running
     /// on this thread (called from inside a world query).
     pub fn reserve_batch_scratch(program: &Program, crowd: usize) {
-        exec::reserve_batch_scratch(&program.code, &program.scalar_lens);
+        exec::reserve_batch_scratch(&program.code, &program.scalar_lens, &program.initial);
         let mut scratch = ORDER.with(std::cell::Cell::take);
         scratch.reserve(crowd);
         ORDER.with(|cell| cell.set(scratch));

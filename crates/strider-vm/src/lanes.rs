@@ -13,6 +13,7 @@
 // unchecked slot access (see `exec`): this module's only unsafe code.
 #![allow(unsafe_code)]
 
+use crate::array_lanes::ArrayLanes;
 use crate::exec::{BATCH, Bases, Ctx};
 use crate::slots::{ScalarLens, Slots};
 use crate::transpose::{
@@ -38,6 +39,8 @@ pub(crate) struct Lanes {
     vec3s: Vec<Vec3>,
     quats: Vec<Quat>,
     transforms: Vec<Transform>,
+    /// Copies of the batch's array variables, side by side as the scalar slots are.
+    pub(crate) arrays: ArrayLanes,
     /// The program (`Program::id`; 0: none) whose initial values every lane holds in the
     /// slots no instruction of it writes (each type's `written..lens`): the last batch
     /// loaded was of that program and took them from it. 0 after a batch that copied its
@@ -133,7 +136,8 @@ impl Lanes {
     /// Member by member: each member's array is read in order into its lane (every
     /// [`BATCH`]th item). With `copies.program`, whose initial values every member holds
     /// in `copies.written..copies.lens`, those come from `copies.initial` into every lane
-    /// instead, unless the lanes hold them already.
+    /// instead, unless the lanes hold them already. Starts the batch's run of array copies
+    /// ([`ArrayLanes::begin`]) with none.
     #[inline(always)]
     pub(crate) fn load(&mut self, copies: Copies<'_>, members: &[Ctx<'_>]) {
         assert!(members.len() <= BATCH, "a batch has at most BATCH members");
@@ -141,6 +145,7 @@ impl Lanes {
         // Until the lanes are loaded, they hold no program's values.
         self.unwritten_of = 0;
         self.reserve(copies.lens);
+        self.arrays.begin(copies.initial);
         macro_rules! load {
             ($a:ident, $t:expr) => {{
                 let len = copies.lens.0[$t];
@@ -1426,33 +1431,6 @@ mod tests {
         }
     }
 
-    /// Every op a program can hold: the node table's, the fused pairs, and the control,
-    /// copy and conversion ops the compiler emits, of every type.
-    fn every_op() -> Vec<Op> {
-        let mut ops: Vec<Op> = strider_nodes::registry()
-            .nodes()
-            .iter()
-            .flat_map(|n| n.overloads.iter().map(|o| o.op))
-            .chain(Op::FUSED.map(|(fused, _)| fused))
-            .chain([
-                Op::End,
-                Op::Jump,
-                Op::JumpIfFalse,
-                Op::ForNext,
-                Op::IntToFloat,
-            ])
-            .chain(Elem::ALL.map(Op::ForEachNext))
-            .chain(
-                ValueType::ALL
-                    .iter()
-                    .flat_map(|&t| [Op::Copy(t), Op::Select(t)]),
-            )
-            .collect();
-        ops.sort_by_key(|op| format!("{op:?}"));
-        ops.dedup();
-        ops
-    }
-
     /// A float for item `i` of member `m`: ordinary values mixed with the hazards a
     /// handler must treat the same lane by lane (signed zeros, NaN, infinities, huge and
     /// tiny values, negatives under a square root, zero divisors).
@@ -1628,7 +1606,7 @@ mod tests {
     #[test]
     fn every_wide_op_gives_each_lane_what_its_handler_gives_one_member() {
         let mut count = 0;
-        for op in every_op() {
+        for op in crate::tests::every_op() {
             for in_place in [false, true] {
                 // Ops without a layout are ones no program holds.
                 let Some(o) = operands(op, in_place) else {

@@ -22,6 +22,7 @@
 //! Programs are built by the compiler (`strider-compiler`), which guarantees what the
 //! executor trusts: operand counts and slot types match the op.
 
+mod array_lanes;
 mod batch_code;
 mod exec;
 mod fusion;
@@ -82,6 +83,34 @@ mod tests {
         instance.run_forward(&FrameInput::default(), &EmptyWorld, false);
         assert_eq!(instance.slots().floats[40], 5.0);
         assert_eq!(instance.slots().vec3s[9], glam::Vec3::new(2.0, 3.0, 5.0));
+    }
+
+    /// Every op a program can hold: the node table's, the fused pairs, and the control,
+    /// copy and conversion ops the compiler emits, of every type.
+    pub(crate) fn every_op() -> Vec<strider_nodes::Op> {
+        use strider_nodes::{Elem, Op, ValueType};
+        let mut ops: Vec<Op> = strider_nodes::registry()
+            .nodes()
+            .iter()
+            .flat_map(|n| n.overloads.iter().map(|o| o.op))
+            .chain(Op::FUSED.map(|(fused, _)| fused))
+            .chain([
+                Op::End,
+                Op::Jump,
+                Op::JumpIfFalse,
+                Op::ForNext,
+                Op::IntToFloat,
+            ])
+            .chain(Elem::ALL.map(Op::ForEachNext))
+            .chain(
+                ValueType::ALL
+                    .iter()
+                    .flat_map(|&t| [Op::Copy(t), Op::Select(t)]),
+            )
+            .collect();
+        ops.sort_by_key(|op| format!("{op:?}"));
+        ops.dedup();
+        ops
     }
 
     /// A skeleton of one bone at the origin (the executor's tests use it too).

@@ -27,6 +27,7 @@
 // Slots are read and written through the lanes' base pointers, as in `lanes`.
 #![allow(unsafe_code)]
 
+use crate::array_lanes::ArrayLanes;
 use crate::exec::{
     BATCH, Bases, Ctx, array_get, array_set, axes_key, bone, bone_transform, parent_of, read_hit,
     trace_ends, trace_miss, trace_outputs, trace_query,
@@ -59,13 +60,15 @@ fn item0<T>(base: *mut T, slot: u32) -> *mut T {
 /// `op` and `o` must be an instruction of a program built by
 /// [`ProgramBuilder::finish`](crate::ProgramBuilder::finish) (with its operand window);
 /// `lane0` the bases of [`crate::lanes::Lanes`] (stride [`BATCH`]) loaded from `members`
-/// for that program's slots; `members` the batch (at most [`BATCH`]), each with that
-/// program's slots.
+/// for that program's slots, and `arrays` their copies of array variables (each copy
+/// holds what the members' arrays hold); `members` the batch (at most [`BATCH`]), each
+/// with that program's slots.
 #[inline(never)]
 pub(crate) unsafe fn run_per_member(
     op: Op,
     o: &[u32],
     lane0: &Bases,
+    arrays: &mut ArrayLanes,
     members: &mut [Ctx<'_>],
 ) -> bool {
     // Taken by reference: a copy of the six pointers, made for every call, cost more than
@@ -95,23 +98,59 @@ pub(crate) unsafe fn run_per_member(
         };
     }
     // `ArrayAt` (operands: array, index, element) of element type `$sc` (arrays `$ar`,
-    // default `$zero`).
+    // default `$zero`): from the batch's copy of the array, made at its first read
+    // ([`crate::array_lanes`]), or member by member when it has none.
     macro_rules! array_at {
         ($sc:ident, $ar:ident, $zero:expr) => {{
             let (array, index, out) = (o[0] as usize, lane!(ints, 1), lane!($sc, 2));
-            for (m, cx) in members.iter().enumerate() {
-                // SAFETY: as above; every member has the program's array variables (its
-                // slots are the program's initial ones), and operand 0 names one of them
-                // (`ProgramBuilder::finish` checks every array operand). The index is read
-                // before the element is written (they may share a slot).
-                unsafe {
-                    let array = cx.slots.$ar.get_unchecked(array);
-                    *out.add(m) = array_get(array, *index.add(m), &$zero);
+            let run = arrays.run;
+            match arrays.$sc.copy(run, array, members, |s| s.$ar.as_slice()) {
+                Some((items, len)) => {
+                    // SAFETY: as above; a block is `BATCH` items.
+                    let indices = unsafe { &*index.cast::<[i32; BATCH]>() };
+                    let first = indices[0] as u32 as usize;
+                    if members.len() == BATCH && first < len && Uniform::uniform(indices) {
+                        // One element for the whole batch (a loop's counter): its block
+                        // of the copy is laid out as a slot's block.
+                        // SAFETY: the copy holds `len` elements of `BATCH` items each;
+                        // the block is of another type than the index's, or is the
+                        // index's own, read above: `copy` allows the overlap.
+                        unsafe { std::ptr::copy(items.add(first * BATCH), out, BATCH) };
+                    } else {
+                        let zero = $zero;
+                        for m in 0..members.len() {
+                            // SAFETY: as above; `i < len` is checked (a negative index is
+                            // a large unsigned one). The index is read before the
+                            // element is written (they may share a slot).
+                            unsafe {
+                                let i = *index.add(m) as u32 as usize;
+                                let from = if i < len {
+                                    items.add(i * BATCH + m)
+                                } else {
+                                    &zero
+                                };
+                                *out.add(m) = *from;
+                            }
+                        }
+                    }
+                }
+                None => {
+                    for (m, cx) in members.iter().enumerate() {
+                        // SAFETY: as above; every member has the program's array
+                        // variables (its slots are the program's initial ones), and operand
+                        // 0 names one of them (`ProgramBuilder::finish` checks every array
+                        // operand). The index is read before the element is written.
+                        unsafe {
+                            let array = cx.slots.$ar.get_unchecked(array);
+                            *out.add(m) = array_get(array, *index.add(m), &$zero);
+                        }
+                    }
                 }
             }
         }};
     }
-    // `ArraySetAt` (operands: array, index, element); the default is not needed.
+    // `ArraySetAt` (operands: array, index, element); the default is not needed. The
+    // batch's copy of the array, if it has one, is written too.
     macro_rules! array_set_at {
         ($sc:ident, $ar:ident, $zero:expr) => {{
             let (array, index, value) = (o[0] as usize, lane!(ints, 1), lane!($sc, 2));
@@ -120,6 +159,18 @@ pub(crate) unsafe fn run_per_member(
                 unsafe {
                     let (i, value) = (*index.add(m), *value.add(m));
                     array_set(cx.slots.$ar.get_unchecked_mut(array), i, value);
+                }
+            }
+            if let Some((items, len)) = arrays.$sc.copied(arrays.run, array) {
+                for m in 0..members.len() {
+                    // SAFETY: as in `array_at!`; each member's array has `len` elements, so
+                    // the copy changes where the member's array did.
+                    unsafe {
+                        let i = *index.add(m) as u32 as usize;
+                        if i < len {
+                            *items.add(i * BATCH + m) = *value.add(m);
+                        }
+                    }
                 }
             }
         }};
@@ -863,10 +914,19 @@ mod tests {
     fn run(op: Op, o: &[u32], n: usize, batch: bool) -> Option<(Vec<Slots>, Vec<Pose>)> {
         // SAFETY: the operands are slots below `SLOTS` of the lanes, and arrays and bone
         // slots below `SLOTS` of every member.
-        let batched =
-            |lane0: Bases, cxs: &mut [Ctx<'_>]| unsafe { run_per_member(op, o, &lane0, cxs) };
+        let batched = |lane0: Bases, cxs: &mut [Ctx<'_>]| unsafe {
+            run_per_member(op, o, &lane0, &mut no_copies(cxs), cxs)
+        };
         let slots = (0..n).map(member_slots).collect();
         run_members(op, o, slots, batch.then_some(&batched))
+    }
+
+    /// A run's copies of the arrays of batch `cxs`, none made yet (the first read of an
+    /// array makes its copy).
+    fn no_copies(cxs: &[Ctx<'_>]) -> ArrayLanes {
+        let mut arrays = ArrayLanes::default();
+        arrays.begin(&*cxs[0].slots);
+        arrays
     }
 
     /// A batch path under test: given the lanes loaded from the members, and the members,
@@ -1021,7 +1081,7 @@ mod tests {
                 let o = window(&operands);
                 // SAFETY: as in `run`.
                 let batched = |lane0: Bases, cxs: &mut [Ctx<'_>]| unsafe {
-                    run_per_member(op, &o, &lane0, cxs)
+                    run_per_member(op, &o, &lane0, &mut no_copies(cxs), cxs)
                 };
                 let mut batch = run_members(op, &o, slots(), Some(&batched)).expect("batched");
                 let mut alone = run_members(op, &o, slots(), None).expect("the handler");

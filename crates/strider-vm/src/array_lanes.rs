@@ -1,0 +1,428 @@
+//! A batch's array variables side by side ([`ArrayLanes`]): a copy of each member's array,
+//! element `i` of member `m` at item `i * BATCH + m`, made the first time the whole batch
+//! reads the array, so that later reads of the batch find every member's element in one
+//! block.
+//!
+//! Each member keeps its arrays in allocations of its own, reached through a chain of
+//! pointers (context, slots, the element type's list of arrays, the array); an `ArrayAt`
+//! of the whole batch follows that chain once per member ([`crate::per_member`]). The
+//! per-foot arrays of `graphs/locomotion.ron` hold two elements and are read several
+//! times a frame each, so one copy of the batch's elements, made at the first read, takes
+//! the chains out of the reads that follow.
+//!
+//! The members' own arrays stay the truth: the copy is only ever read. A write by the whole
+//! batch (`ArraySetAt` on [`crate::per_member`]'s path) writes both; any other write of an
+//! array variable (an append, a reset, a copy or a select into it, a member's own write
+//! while the batch is split) drops its copy ([`ArrayLanes::forget`]), before the write, and the next read
+//! of the whole batch copies it again. Only arrays whose members all have one length are
+//! copied (reading an element is then one bounds check for every lane). Copies live for one
+//! run of a batch: [`ArrayLanes::begin`] drops them all.
+//!
+//! Written here rather than taken from a crate: it is a cache over the executor's own
+//! slots, whose invalidation follows this instruction set's writes.
+
+// The copies are written through a pointer to their room, as the lanes are (see `lanes`).
+#![allow(unsafe_code)]
+
+use crate::exec::{BATCH, Ctx};
+use crate::slots::Slots;
+use glam::{Quat, Vec3};
+use strider_core::Transform;
+use strider_nodes::Elem;
+
+/// Elements of each element type one run of a batch may copy (each `BATCH` items):
+/// `graphs/locomotion.ron` copies 18 transforms (nine per-foot arrays of two), fewer of
+/// the other types. A read that would need more is done member by member.
+pub(crate) const ELEMENTS: usize = 32;
+
+/// What a run knows of one array variable's copy.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+enum State {
+    /// No copy (none made yet in this run, or dropped by a write).
+    #[default]
+    None,
+    /// The copy holds every member's elements, `len` of them.
+    Copied,
+    /// The members' arrays differ in length: read member by member until a write changes
+    /// that.
+    Apart,
+}
+
+/// One array variable's copy: its place in its type's items and its state, for run `run`
+/// (a copy of an earlier run is no copy).
+#[derive(Clone, Copy, Debug, Default)]
+struct Entry {
+    /// The run ([`ArrayLanes::begin`]) the other fields are of.
+    run: u32,
+    state: State,
+    /// The first element's place (item `at * BATCH`) of the room this array holds in the
+    /// run, and how many elements it has room for (a copy made again after a write reuses
+    /// it when the array still fits).
+    at: u32,
+    room: u32,
+    /// Elements in the copy (every member's array length).
+    len: u32,
+}
+
+/// The copies of one element type's array variables.
+pub(crate) struct Column<T> {
+    /// `ELEMENTS * BATCH` items once the program has arrays of this type; empty before.
+    items: Vec<T>,
+    /// Per array variable of this type (the slot index of its arrays).
+    entries: Vec<Entry>,
+    /// Elements of `items` given to arrays in this run.
+    used: u32,
+}
+
+impl<T> Default for Column<T> {
+    fn default() -> Self {
+        Self {
+            items: Vec::new(),
+            entries: Vec::new(),
+            used: 0,
+        }
+    }
+}
+
+impl<T: Copy + Default> Column<T> {
+    /// Room for `arrays` array variables: their entries, and the items when there are any.
+    fn reserve(&mut self, arrays: usize) {
+        if self.entries.len() < arrays {
+            self.entries.resize(arrays, Entry::default());
+        }
+        if arrays > 0 && self.items.len() < ELEMENTS * BATCH {
+            self.items.resize(ELEMENTS * BATCH, T::default());
+        }
+    }
+
+    /// The batch's copy of array variable `array` in run `run`, as member 0's element 0 and
+    /// the length of every member's array: made now from the `members`' arrays (`list`
+    /// gives a member's arrays of this type) when the run has none yet. `None` when the
+    /// members' arrays differ in length or the run's room is used up: the caller reads
+    /// member by member. `array` must be an array variable of the program the column was
+    /// reserved for.
+    #[inline(always)]
+    pub(crate) fn copy(
+        &mut self,
+        run: u32,
+        array: usize,
+        members: &[Ctx<'_>],
+        list: impl Fn(&Slots) -> &[Vec<T>],
+    ) -> Option<(*const T, usize)> {
+        let entry = self.entries.get_mut(array)?;
+        if entry.run != run {
+            *entry = Entry {
+                run,
+                ..Entry::default()
+            };
+        }
+        match entry.state {
+            State::Copied => {
+                let at = entry.at as usize * BATCH;
+                return Some((self.items[at..].as_ptr(), entry.len as usize));
+            }
+            State::Apart => return None,
+            State::None => {}
+        }
+        // Member 0's length, which every member's must have; each member's array is
+        // reached once, its length checked and its elements copied.
+        let len = list(&*members.first()?.slots)[array].len();
+        if entry.room < len as u32 {
+            // New room, at the end of what the run has given out.
+            let at = self.used as usize;
+            if at + len > self.items.len() / BATCH {
+                return None;
+            }
+            (entry.at, entry.room) = (at as u32, len as u32);
+            self.used += len as u32;
+        }
+        let at = entry.at as usize * BATCH;
+        let items = self.items[at..at + len * BATCH].as_mut_ptr();
+        for (m, cx) in members.iter().enumerate() {
+            let from = &list(&*cx.slots)[array];
+            if from.len() != len {
+                // What was copied so far is never read: the state says so.
+                entry.state = State::Apart;
+                return None;
+            }
+            for (i, &x) in from.iter().enumerate() {
+                // SAFETY: `i < len` and `m < members.len() <= BATCH`: within the
+                // `len * BATCH` items sliced above.
+                unsafe { *items.add(i * BATCH + m) = x };
+            }
+        }
+        (entry.state, entry.len) = (State::Copied, len as u32);
+        Some((items, len))
+    }
+
+    /// The copy of array variable `array` in run `run` if there is one (as
+    /// [`Column::copy`], without making one), to write into.
+    #[inline(always)]
+    pub(crate) fn copied(&mut self, run: u32, array: usize) -> Option<(*mut T, usize)> {
+        let entry = self.entries.get(array)?;
+        if entry.run != run || entry.state != State::Copied {
+            return None;
+        }
+        let at = entry.at as usize * BATCH;
+        Some((self.items[at..].as_mut_ptr(), entry.len as usize))
+    }
+
+    /// Drops the copy of array variable `array` (a write is about to change the members'
+    /// arrays).
+    #[inline(always)]
+    fn forget(&mut self, array: usize) {
+        if let Some(entry) = self.entries.get_mut(array) {
+            entry.state = State::None;
+        }
+    }
+}
+
+/// The copies of a batch's array variables, one [`Column`] per element type but bones
+/// (whose elements go to bone slots, which are not in the lanes).
+#[derive(Default)]
+pub(crate) struct ArrayLanes {
+    /// The current run: copies of other runs are none. Starts at 1 with the first run.
+    pub(crate) run: u32,
+    pub(crate) bools: Column<bool>,
+    pub(crate) ints: Column<i32>,
+    pub(crate) floats: Column<f32>,
+    pub(crate) vec3s: Column<Vec3>,
+    pub(crate) quats: Column<Quat>,
+    pub(crate) transforms: Column<Transform>,
+}
+
+impl ArrayLanes {
+    /// Room for the array variables of a program whose initial slots are `initial`.
+    pub(crate) fn reserve(&mut self, initial: &Slots) {
+        self.bools.reserve(initial.bool_arrays.len());
+        self.ints.reserve(initial.int_arrays.len());
+        self.floats.reserve(initial.float_arrays.len());
+        self.vec3s.reserve(initial.vec3_arrays.len());
+        self.quats.reserve(initial.quat_arrays.len());
+        self.transforms.reserve(initial.transform_arrays.len());
+    }
+
+    /// Starts a run of a batch of the program whose initial slots are `initial`, with no
+    /// copies.
+    #[inline(always)]
+    pub(crate) fn begin(&mut self, initial: &Slots) {
+        self.reserve(initial);
+        self.run = self.run.wrapping_add(1);
+        if self.run == 0 {
+            // The count came round: entries of run 1, 2, ... four billion runs ago would
+            // pass for the coming runs'.
+            for entries in [
+                &mut self.bools.entries,
+                &mut self.ints.entries,
+                &mut self.floats.entries,
+                &mut self.vec3s.entries,
+                &mut self.quats.entries,
+                &mut self.transforms.entries,
+            ] {
+                entries.fill(Entry::default());
+            }
+            self.run = 1;
+        }
+        self.bools.used = 0;
+        self.ints.used = 0;
+        self.floats.used = 0;
+        self.vec3s.used = 0;
+        self.quats.used = 0;
+        self.transforms.used = 0;
+    }
+
+    /// Drops the copy of array variable `array` of element type `elem`, if it has one.
+    #[inline(always)]
+    pub(crate) fn forget(&mut self, elem: Elem, array: u32) {
+        let array = array as usize;
+        match elem {
+            Elem::Bool => self.bools.forget(array),
+            Elem::Int => self.ints.forget(array),
+            Elem::Float => self.floats.forget(array),
+            Elem::Vec3 => self.vec3s.forget(array),
+            Elem::Quat => self.quats.forget(array),
+            Elem::Transform => self.transforms.forget(array),
+            Elem::Bone => {}
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::tests::one_bone;
+    use strider_core::{DebugDraw, Pose};
+    use strider_nodes::{Access, Op, Operand, ValueType};
+
+    /// Runs `f` on a batch of `n` members whose float array 0 is `lens(m)` long (element
+    /// `i` of member `m`: `10 m + i`), with a run of copies begun.
+    fn with_batch(
+        n: usize,
+        lens: impl Fn(usize) -> usize,
+        f: impl FnOnce(&mut ArrayLanes, &[Ctx<'_>]),
+    ) {
+        let mut slots: Vec<Slots> = (0..n)
+            .map(|m| Slots {
+                float_arrays: vec![(0..lens(m)).map(|i| (10 * m + i) as f32).collect()],
+                ..Slots::default()
+            })
+            .collect();
+        let mut poses: Vec<Pose> = (0..n).map(|_| Pose::new(one_bone())).collect();
+        let mut draws: Vec<DebugDraw> = (0..n).map(|_| DebugDraw::new(false)).collect();
+        let cxs: Vec<Ctx<'_>> = slots
+            .iter_mut()
+            .zip(&mut poses)
+            .zip(&mut draws)
+            .map(|((s, p), d)| Ctx::for_test(s, &[], p, d, 1.0 / 60.0))
+            .collect();
+        let mut arrays = ArrayLanes::default();
+        arrays.begin(cxs[0].slots);
+        f(&mut arrays, &cxs);
+    }
+
+    /// Element `i` of member `m` of a copy at `items`.
+    fn item(items: *const f32, i: usize, m: usize) -> f32 {
+        // SAFETY: the callers' `i` and `m` are within the copy.
+        unsafe { *items.add(i * BATCH + m) }
+    }
+
+    #[test]
+    fn a_copy_holds_every_member_s_elements_side_by_side_until_forgotten() {
+        with_batch(
+            5,
+            |_| 3,
+            |arrays, cxs| {
+                let run = arrays.run;
+                let (items, len) = arrays
+                    .floats
+                    .copy(run, 0, cxs, |s| &s.float_arrays)
+                    .expect("a copy");
+                assert_eq!(len, 3);
+                for (m, i) in [(0, 0), (4, 2), (2, 1)] {
+                    assert_eq!(item(items, i, m), (10 * m + i) as f32);
+                }
+                // Read again: the same copy, written through.
+                let (written, _) = arrays.floats.copied(run, 0).expect("copied");
+                assert_eq!(written.cast_const(), items);
+                arrays.forget(Elem::Float, 0);
+                assert!(arrays.floats.copied(run, 0).is_none(), "forgotten");
+                // Made again in the room it had.
+                let (again, _) = arrays
+                    .floats
+                    .copy(run, 0, cxs, |s| &s.float_arrays)
+                    .expect("a copy");
+                assert_eq!(again, items);
+                // A new run has none.
+                arrays.begin(cxs[0].slots);
+                assert!(arrays.floats.copied(arrays.run, 0).is_none(), "a new run");
+            },
+        );
+    }
+
+    #[test]
+    fn arrays_of_lengths_apart_or_past_the_room_are_not_copied() {
+        with_batch(
+            4,
+            |m| 2 + m % 2,
+            |arrays, cxs| {
+                let run = arrays.run;
+                assert!(
+                    arrays
+                        .floats
+                        .copy(run, 0, cxs, |s| &s.float_arrays)
+                        .is_none()
+                );
+                assert!(arrays.floats.copied(run, 0).is_none(), "apart");
+            },
+        );
+        with_batch(
+            3,
+            |_| ELEMENTS + 1,
+            |arrays, cxs| {
+                let run = arrays.run;
+                assert!(
+                    arrays
+                        .floats
+                        .copy(run, 0, cxs, |s| &s.float_arrays)
+                        .is_none()
+                );
+            },
+        );
+        with_batch(
+            3,
+            |_| ELEMENTS,
+            |arrays, cxs| {
+                let run = arrays.run;
+                assert!(
+                    arrays
+                        .floats
+                        .copy(run, 0, cxs, |s| &s.float_arrays)
+                        .is_some()
+                );
+            },
+        );
+        // Empty arrays: a copy of no elements.
+        with_batch(
+            2,
+            |_| 0,
+            |arrays, cxs| {
+                let run = arrays.run;
+                let copy = arrays.floats.copy(run, 0, cxs, |s| &s.float_arrays);
+                assert_eq!(copy.map(|(_, len)| len), Some(0));
+            },
+        );
+    }
+
+    #[test]
+    fn the_run_count_coming_round_leaves_no_copy_behind() {
+        with_batch(
+            2,
+            |_| 1,
+            |arrays, cxs| {
+                arrays.run = u32::MAX - 1;
+                arrays.begin(cxs[0].slots);
+                let run = arrays.run;
+                assert_eq!(run, u32::MAX);
+                assert!(
+                    arrays
+                        .floats
+                        .copy(run, 0, cxs, |s| &s.float_arrays)
+                        .is_some()
+                );
+                arrays.begin(cxs[0].slots);
+                assert_eq!(arrays.run, 1, "0 is skipped");
+                // An entry of run 1 from before would pass; the count cleared them all.
+                assert!(arrays.floats.copied(1, 0).is_none());
+                assert!(arrays.floats.copied(u32::MAX, 0).is_none());
+            },
+        );
+    }
+
+    /// The executor tells the copies of every write of an array variable by a handler
+    /// (`execute!`'s `$forget`): at operand 0 for `ArraySetAt`, `ArrayAdd` and
+    /// `ArrayReset`, at operand 1 for a `Copy`, at operand 3 for a `Select`. Any other op that writes an array of an
+    /// element type that is copied would leave a stale copy.
+    #[test]
+    fn the_ops_that_write_arrays_are_the_ones_the_executor_tells() {
+        for op in crate::tests::every_op() {
+            // An op with no layout is never emitted.
+            let Some(layout) = op.operands() else {
+                continue;
+            };
+            let written: Vec<usize> = (0..layout.len())
+                .filter(|&k| {
+                    matches!(layout[k], Operand::Slot(ValueType::Array(e), Access::Write | Access::ReadWrite) if e != Elem::Bone)
+                })
+                .collect();
+            let told = match op {
+                Op::ArraySetAt(e) | Op::ArrayAdd(e) | Op::ArrayReset(e) if e != Elem::Bone => {
+                    vec![0]
+                }
+                Op::Copy(ValueType::Array(e)) if e != Elem::Bone => vec![1],
+                Op::Select(ValueType::Array(e)) if e != Elem::Bone => vec![3],
+                _ => vec![],
+            };
+            assert_eq!(written, told, "{op:?}");
+        }
+    }
+}
