@@ -12,8 +12,8 @@
 //!
 //! The members' own arrays stay the truth: the copy is only ever read. A write by the whole
 //! batch (`ArraySetAt` on [`crate::per_member`]'s path) writes both; any other write of an
-//! array variable (an append, a reset, a copy or a select into it, a member's own write
-//! while the batch is split) drops its copy ([`ArrayLanes::forget`]), before the write, and the next read
+//! array variable (an append, a reset, a copy or a select into it, the bones found by
+//! `FindBones`, a member's own write while the batch is split) drops its copy ([`ArrayLanes::forget`]), before the write, and the next read
 //! of the whole batch copies it again. Only arrays whose members all have one length are
 //! copied (reading an element is then one bounds check for every lane). Copies live for one
 //! run of a batch: [`ArrayLanes::begin`] drops them all.
@@ -177,8 +177,7 @@ impl<T: Copy + Default> Column<T> {
     }
 }
 
-/// The copies of a batch's array variables, one [`Column`] per element type but bones
-/// (whose elements go to bone slots, which are not in the lanes).
+/// The copies of a batch's array variables, one [`Column`] per element type.
 #[derive(Default)]
 pub(crate) struct ArrayLanes {
     /// The current run: copies of other runs are none. Starts at 1 with the first run.
@@ -189,6 +188,8 @@ pub(crate) struct ArrayLanes {
     pub(crate) vec3s: Column<Vec3>,
     pub(crate) quats: Column<Quat>,
     pub(crate) transforms: Column<Transform>,
+    /// Bone arrays' elements (bone indices, or -1): read by loops over them.
+    pub(crate) bones: Column<i32>,
 }
 
 impl ArrayLanes {
@@ -200,6 +201,7 @@ impl ArrayLanes {
         self.vec3s.reserve(initial.vec3_arrays.len());
         self.quats.reserve(initial.quat_arrays.len());
         self.transforms.reserve(initial.transform_arrays.len());
+        self.bones.reserve(initial.bone_arrays.len());
     }
 
     /// Starts a run of a batch of the program whose initial slots are `initial`, with no
@@ -218,6 +220,7 @@ impl ArrayLanes {
                 &mut self.vec3s.entries,
                 &mut self.quats.entries,
                 &mut self.transforms.entries,
+                &mut self.bones.entries,
             ] {
                 entries.fill(Entry::default());
             }
@@ -229,6 +232,7 @@ impl ArrayLanes {
         self.vec3s.used = 0;
         self.quats.used = 0;
         self.transforms.used = 0;
+        self.bones.used = 0;
     }
 
     /// Drops the copy of array variable `array` of element type `elem`, if it has one.
@@ -242,7 +246,7 @@ impl ArrayLanes {
             Elem::Vec3 => self.vec3s.forget(array),
             Elem::Quat => self.quats.forget(array),
             Elem::Transform => self.transforms.forget(array),
-            Elem::Bone => {}
+            Elem::Bone => self.bones.forget(array),
         }
     }
 }
@@ -400,7 +404,8 @@ mod tests {
 
     /// The executor tells the copies of every write of an array variable by a handler
     /// (`execute!`'s `$forget`): at operand 0 for `ArraySetAt`, `ArrayAdd` and
-    /// `ArrayReset`, at operand 1 for a `Copy`, at operand 3 for a `Select`. Any other op that writes an array of an
+    /// `ArrayReset`, at operand 1 for a `Copy`, at operand 3 for a `Select` and
+    /// `FindBones`. Any other op that writes an array of an
     /// element type that is copied would leave a stale copy.
     #[test]
     fn the_ops_that_write_arrays_are_the_ones_the_executor_tells() {
@@ -411,15 +416,16 @@ mod tests {
             };
             let written: Vec<usize> = (0..layout.len())
                 .filter(|&k| {
-                    matches!(layout[k], Operand::Slot(ValueType::Array(e), Access::Write | Access::ReadWrite) if e != Elem::Bone)
+                    matches!(
+                        layout[k],
+                        Operand::Slot(ValueType::Array(_), Access::Write | Access::ReadWrite)
+                    )
                 })
                 .collect();
             let told = match op {
-                Op::ArraySetAt(e) | Op::ArrayAdd(e) | Op::ArrayReset(e) if e != Elem::Bone => {
-                    vec![0]
-                }
-                Op::Copy(ValueType::Array(e)) if e != Elem::Bone => vec![1],
-                Op::Select(ValueType::Array(e)) if e != Elem::Bone => vec![3],
+                Op::ArraySetAt(_) | Op::ArrayAdd(_) | Op::ArrayReset(_) => vec![0],
+                Op::Copy(ValueType::Array(_)) => vec![1],
+                Op::Select(ValueType::Array(_)) | Op::FindBones => vec![3],
                 _ => vec![],
             };
             assert_eq!(written, told, "{op:?}");

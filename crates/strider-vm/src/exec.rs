@@ -437,8 +437,8 @@ impl Bases {
 /// ([`run_batch`]) and in [`step`], the entry point of code generated ahead of time. After
 /// a control op the expansion site decides what happens: `$jump!(target)` continues at
 /// instruction `target`, `$end!()` ends the event. Before an op writes an array variable
-/// (`ArraySetAt`, `ArrayAdd` and `ArrayReset` once for all the instances, a `Copy` or
-/// `Select` into it for each) `$forget!(elem, array)` is told: [`keep`] where nothing
+/// (`ArraySetAt`, `ArrayAdd`, `ArrayReset` and `FindBones` once for all the instances, a
+/// `Copy` or `Select` into it for each) `$forget!(elem, array)` is told: [`keep`] where nothing
 /// holds copies of arrays, the batch's copies in [`run_batch`] (`crate::array_lanes`).
 macro_rules! execute {
     ($op:expr, $o:expr, $s:ident, $bases:ident, $stride:expr, $cx:ident, $jump:ident, $end:ident, $each:ident, $forget:ident) => {{
@@ -747,7 +747,9 @@ macro_rules! execute {
                 }
             }),
             Op::GetParent => $each!($s.bones[at!(1)] = parent_of($cx.pose, $s.bones[at!(0)])),
-            Op::FindBones => $each!({
+            Op::FindBones => {
+                $forget!(Elem::Bone, o[3]);
+                $each!({
                 let out = &mut $s.bone_arrays[at!(3)];
                 match bone($cx.pose, $s.bones[at!(0)]) {
                     Some(root) => {
@@ -757,7 +759,8 @@ macro_rules! execute {
                     }
                     None => out.clear(),
                 }
-            }),
+            })
+            }
             Op::TwoBoneIK => {
                 let mut prepared = PreparedAxes::default();
                 $each!({
@@ -1572,7 +1575,9 @@ fn run_group<const LANES: bool, const PROFILE: bool>(
                 }
                 // SAFETY: as above; `members` is the batch the lanes were loaded from.
                 Op::ForEachNext(e) => {
-                    match unsafe { crate::per_member::for_each_next(e, o, &lane0, members) } {
+                    match unsafe {
+                        crate::per_member::for_each_next(e, o, &lane0, &mut lanes.arrays, members)
+                    } {
                         Some(true) => {
                             pc += 1;
                             continue;
@@ -1832,9 +1837,9 @@ mod tests {
     /// (`ArraySetAt`), by some members only (an `ArraySetAt` behind a branch, a `Select`
     /// into it, which leaves the members' lengths apart, an `ArrayAdd` behind a branch),
     /// by all through the handlers (an `ArrayAdd`, an `ArrayReset`, a `Copy` into it), with
-    /// indices alike and apart.
+    /// indices alike and apart, and a loop over one.
     /// Returns the program and the slots of the reads' results.
-    fn array_reads() -> (crate::Program, [usize; 10]) {
+    fn array_reads() -> (crate::Program, [usize; 11]) {
         let mut pb = ProgramBuilder::new("array reads");
         let float = |pb: &mut ProgramBuilder, v: f32| pb.constant(&Value::Float(v), "");
         let int = |pb: &mut ProgramBuilder, v: i32| pb.constant(&Value::Int(v), "");
@@ -1850,7 +1855,9 @@ mod tests {
         let (half, ten) = (float(&mut pb, 0.5), float(&mut pb, 10.0));
         let [i0, i1, i2, i3, before] = [0, 1, 2, 3, -1].map(|v| int(&mut pb, v));
         let [d, sum, scaled] = [(); 3].map(|()| pb.alloc(ValueType::Float));
-        let x = [(); 10].map(|()| pb.alloc(ValueType::Float));
+        let x = [(); 11].map(|()| pb.alloc(ValueType::Float));
+        let [counter, index, count] = [(); 3].map(|()| pb.alloc(ValueType::Int));
+        let (zero, element) = (float(&mut pb, 0.0), pb.alloc(ValueType::Float));
         let [big, small] = [(); 2].map(|()| pb.alloc(ValueType::Bool));
         let apart = pb.alloc(ValueType::Int);
         pb.set_construction_entry(pb.here());
@@ -1863,7 +1870,7 @@ mod tests {
         pb.emit(Op::AddF, &[x[0], d, sum]);
         pb.emit(Op::ArraySetAt(Elem::Float), &[a, i1, sum]);
         // Read again and again (the batch runs on lanes with two instructions per slot).
-        for _ in 0..24 {
+        for _ in 0..32 {
             pb.emit(at, &[a, i1, x[1]]);
         }
         // Written by the members with a long time step only.
@@ -1880,6 +1887,17 @@ mod tests {
         pb.emit(Op::ToInt, &[scaled, apart]);
         pb.emit(at, &[a, apart, x[4]]);
         pb.emit(at, &[a, before, x[5]]);
+        // Summed by a loop over it.
+        pb.emit(Op::Copy(ValueType::Int), &[i0, counter]);
+        pb.emit(Op::Copy(ValueType::Float), &[zero, x[10]]);
+        let head = pb.emit(
+            Op::ForEachNext(Elem::Float),
+            &[a, counter, element, index, count, 0],
+        );
+        pb.emit(Op::AddF, &[x[10], element, x[10]]);
+        pb.emit(Op::Jump, &[head]);
+        let after = pb.here();
+        pb.patch(head, 5, after);
         // Chosen by a select: b for the short steps, itself for the others (the lengths
         // part), then grown by the short steps only.
         pb.emit(Op::Not, &[big, small]);
@@ -1920,11 +1938,12 @@ mod tests {
             // Frame 1 by hand for dt 0.25 (member 0): 2 + 0.25 at index 1, then the
             // appended 0.25 at index 3 and index 2 (int(10 dt)) of [1, 2.25, 3, 0.25],
             // nothing at -1; b's 7 selected in, the short step's append to [7, 8, 0.25];
-            // c's 5, then nothing in the emptied b copied into c.
+            // c's 5, then nothing in the emptied b copied into c; the loop's sum of
+            // [1, 2.25, 3, 0.25].
             Instance::run_forward_batch(&mut batched, input, &EmptyWorld, false);
             let f = &batched[0].slots().floats;
             let got = x.map(|k| f[k]);
-            let want = [2.0, 2.25, 3.0, 0.25, 3.0, 0.0, 7.0, 0.25, 5.0, 0.0];
+            let want = [2.0, 2.25, 3.0, 0.25, 3.0, 0.0, 7.0, 0.25, 5.0, 0.0, 6.5];
             assert_eq!(got, want, "n {n}");
             for (k, a) in alone.iter_mut().enumerate() {
                 a.run_forward(&input(k), &EmptyWorld, false);

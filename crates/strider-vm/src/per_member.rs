@@ -259,7 +259,9 @@ pub(crate) unsafe fn run_per_member(
 /// index, count and counter are written as the handler writes them), `Some(false)` when
 /// every member's is outside it (nothing is written: the batch jumps to the loop's end),
 /// and `None`, with nothing written, when the members part ways (the handler runs each).
-/// A bone array's element goes to the member's own bone slot, as in the handler.
+/// A bone array's element goes to the member's own bone slot, as in the handler. The
+/// lengths and elements come from the batch's copy of the array (`arrays`, made at its
+/// first read, [`crate::array_lanes`]) when it has one, else from each member's array.
 ///
 /// # Safety
 /// As [`run_per_member`], with `o` a `ForEachNext(elem)`'s operands.
@@ -268,6 +270,7 @@ pub(crate) unsafe fn for_each_next(
     elem: Elem,
     o: &[u32],
     lane0: &Bases,
+    arrays: &mut ArrayLanes,
     members: &mut [Ctx<'_>],
 ) -> Option<bool> {
     let lane0 = *lane0;
@@ -297,9 +300,34 @@ pub(crate) unsafe fn for_each_next(
         }};
     }
     // Every member steps on: its counter read, then its element, index, count and counter
-    // written, in the handler's order.
+    // written, in the handler's order; from the batch's copy of the array (column `$col`)
+    // when it has one.
     macro_rules! step {
-        ($ar:ident, |$m:ident, $cx:ident, $x:ident| $write:expr) => {{
+        ($col:ident, $ar:ident, |$m:ident, $cx:ident, $x:ident| $write:expr) => {{
+            let run = arrays.run;
+            if let Some((items, len)) = arrays.$col.copy(run, array, members, |s| s.$ar.as_slice())
+            {
+                // SAFETY: as below; `m < BATCH`.
+                let within = |m: usize| unsafe { (*counter.add(m) as u32 as usize) < len };
+                match (0..members.len()).filter(|&m| within(m)).count() {
+                    0 => return Some(false),
+                    n if n == members.len() => {}
+                    _ => return None,
+                }
+                for ($m, $cx) in members.iter_mut().enumerate() {
+                    // SAFETY: as below; the counter is within the copy's `len` elements
+                    // (checked above).
+                    unsafe {
+                        let at = *counter.add($m);
+                        let $x = *items.add(at as usize * BATCH + $m);
+                        $write;
+                        *index.add($m) = at;
+                        *count.add($m) = len as i32;
+                        *counter.add($m) = at + 1;
+                    }
+                }
+                return Some(true);
+            }
             agree!($ar);
             for ($m, $cx) in members.iter_mut().enumerate() {
                 // SAFETY: as above; the counter is within the array (checked above), and
@@ -320,7 +348,7 @@ pub(crate) unsafe fn for_each_next(
     macro_rules! into_lane {
         ($sc:ident, $ar:ident) => {{
             let element = item0(lane0.$sc, o[2]);
-            step!($ar, |m, cx, x| *element.add(m) = x)
+            step!($sc, $ar, |m, _cx, x| *element.add(m) = x)
         }};
     }
     match elem {
@@ -333,7 +361,7 @@ pub(crate) unsafe fn for_each_next(
         Elem::Bone => {
             // Bone slots are indexed with a check, as in the handler.
             let element = o[2] as usize;
-            step!(bone_arrays, |m, cx, x| cx.slots.bones[element] = x)
+            step!(bones, bone_arrays, |m, cx, x| cx.slots.bones[element] = x)
         }
     }
     Some(true)
@@ -1486,7 +1514,7 @@ mod tests {
                 let taken = std::cell::Cell::new(None);
                 let batched = |lane0: Bases, cxs: &mut [Ctx<'_>]| {
                     // SAFETY: as in `run`.
-                    taken.set(unsafe { for_each_next(e, &o, &lane0, cxs) });
+                    taken.set(unsafe { for_each_next(e, &o, &lane0, &mut no_copies(cxs), cxs) });
                     true
                 };
                 let before = members(n, len, at);
