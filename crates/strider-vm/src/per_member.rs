@@ -112,10 +112,11 @@ pub(crate) unsafe fn run_per_member(
                     if members.len() == BATCH && first < len && Uniform::uniform(indices) {
                         // One element for the whole batch (a loop's counter): its block
                         // of the copy is laid out as a slot's block.
-                        // SAFETY: the copy holds `len` elements of `BATCH` items each;
-                        // the block is of another type than the index's, or is the
-                        // index's own, read above: `copy` allows the overlap.
-                        unsafe { std::ptr::copy(items.add(first * BATCH), out, BATCH) };
+                        // SAFETY: the copy holds `len` elements of `BATCH` items each,
+                        // in memory of its own (not the lanes'): the two blocks are apart.
+                        unsafe {
+                            std::ptr::copy_nonoverlapping(items.add(first * BATCH), out, BATCH);
+                        }
                     } else {
                         let zero = $zero;
                         for m in 0..members.len() {
