@@ -323,58 +323,25 @@ mod tests {
         );
     }
 
+    /// The length of the copy a run makes of float array 0 of `n` members whose arrays are
+    /// `lens(m)` long, if it makes one (and when it does not, it has none to write into).
+    fn copy_len(n: usize, lens: impl Fn(usize) -> usize) -> Option<usize> {
+        let mut len = None;
+        with_batch(n, lens, |arrays, cxs| {
+            let run = arrays.run;
+            len = arrays.floats.copy(run, 0, cxs, |s| &s.float_arrays);
+            let len = len.map(|(_, len)| len);
+            assert_eq!(arrays.floats.copied(run, 0).map(|(_, len)| len), len);
+        });
+        len.map(|(_, len)| len)
+    }
+
     #[test]
     fn arrays_of_lengths_apart_or_past_the_room_are_not_copied() {
-        with_batch(
-            4,
-            |m| 2 + m % 2,
-            |arrays, cxs| {
-                let run = arrays.run;
-                assert!(
-                    arrays
-                        .floats
-                        .copy(run, 0, cxs, |s| &s.float_arrays)
-                        .is_none()
-                );
-                assert!(arrays.floats.copied(run, 0).is_none(), "apart");
-            },
-        );
-        with_batch(
-            3,
-            |_| ELEMENTS + 1,
-            |arrays, cxs| {
-                let run = arrays.run;
-                assert!(
-                    arrays
-                        .floats
-                        .copy(run, 0, cxs, |s| &s.float_arrays)
-                        .is_none()
-                );
-            },
-        );
-        with_batch(
-            3,
-            |_| ELEMENTS,
-            |arrays, cxs| {
-                let run = arrays.run;
-                assert!(
-                    arrays
-                        .floats
-                        .copy(run, 0, cxs, |s| &s.float_arrays)
-                        .is_some()
-                );
-            },
-        );
-        // Empty arrays: a copy of no elements.
-        with_batch(
-            2,
-            |_| 0,
-            |arrays, cxs| {
-                let run = arrays.run;
-                let copy = arrays.floats.copy(run, 0, cxs, |s| &s.float_arrays);
-                assert_eq!(copy.map(|(_, len)| len), Some(0));
-            },
-        );
+        assert_eq!(copy_len(4, |m| 2 + m % 2), None, "lengths apart");
+        assert_eq!(copy_len(3, |_| ELEMENTS + 1), None, "past the room");
+        assert_eq!(copy_len(3, |_| ELEMENTS), Some(ELEMENTS), "the whole room");
+        assert_eq!(copy_len(2, |_| 0), Some(0), "empty arrays");
     }
 
     #[test]
