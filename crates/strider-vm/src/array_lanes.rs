@@ -8,15 +8,16 @@
 //! of the whole batch follows that chain once per member ([`crate::per_member`]). The
 //! per-foot arrays of `graphs/locomotion.ron` hold two elements and are read several
 //! times a frame each, so one copy of the batch's elements, made at the first read, takes
-//! the chains out of the reads that follow.
+//! the chains out of the reads that follow (and out of the steps of loops over the array).
 //!
-//! The members' own arrays stay the truth: the copy is only ever read. A write by the whole
-//! batch (`ArraySetAt` on [`crate::per_member`]'s path) writes both; any other write of an
-//! array variable (an append, a reset, a copy or a select into it, the bones found by
-//! `FindBones`, a member's own write while the batch is split) drops its copy ([`ArrayLanes::forget`]), before the write, and the next read
-//! of the whole batch copies it again. Only arrays whose members all have one length are
-//! copied (reading an element is then one bounds check for every lane). Copies live for one
-//! run of a batch: [`ArrayLanes::begin`] drops them all.
+//! The members' own arrays stay the truth, and the copy follows them: a write by the
+//! whole batch (`ArraySetAt` on [`crate::per_member`]'s path) writes both; any other write
+//! of an array variable (an append, a reset, a copy or a select into it, the bones found
+//! by `FindBones`, a member's own write while the batch is split) drops its copy
+//! ([`ArrayLanes::forget`]) before the write, and the next read of the whole batch copies
+//! it again. Only arrays whose members all have one length are copied (reading an element
+//! is then one bounds check for every lane). Copies live for one run of a batch:
+//! [`ArrayLanes::begin`] drops them all.
 //!
 //! Written here rather than taken from a crate: it is a cache over the executor's own
 //! slots, whose invalidation follows this instruction set's writes.
@@ -31,8 +32,9 @@ use strider_core::Transform;
 use strider_nodes::Elem;
 
 /// Elements of each element type one run of a batch may copy (each `BATCH` items):
-/// `graphs/locomotion.ron` copies 18 transforms (nine per-foot arrays of two), fewer of
-/// the other types. A read that would need more is done member by member.
+/// `graphs/locomotion.ron` has nine per-foot arrays of transforms, two elements each (18
+/// at most to copy), and fewer elements of the other types. A read that would need more
+/// room is done member by member.
 pub(crate) const ELEMENTS: usize = 32;
 
 /// What a run knows of one array variable's copy.
