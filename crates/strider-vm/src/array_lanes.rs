@@ -194,16 +194,29 @@ pub(crate) struct ArrayLanes {
     pub(crate) bones: Column<i32>,
 }
 
+/// Runs `$m!(column, arrays)` for each column of [`ArrayLanes`] and the field of
+/// [`Slots`] with its element type's array variables.
+macro_rules! each_column {
+    ($m:ident) => {
+        $m!(bools, bool_arrays);
+        $m!(ints, int_arrays);
+        $m!(floats, float_arrays);
+        $m!(vec3s, vec3_arrays);
+        $m!(quats, quat_arrays);
+        $m!(transforms, transform_arrays);
+        $m!(bones, bone_arrays);
+    };
+}
+
 impl ArrayLanes {
     /// Room for the array variables of a program whose initial slots are `initial`.
     pub(crate) fn reserve(&mut self, initial: &Slots) {
-        self.bools.reserve(initial.bool_arrays.len());
-        self.ints.reserve(initial.int_arrays.len());
-        self.floats.reserve(initial.float_arrays.len());
-        self.vec3s.reserve(initial.vec3_arrays.len());
-        self.quats.reserve(initial.quat_arrays.len());
-        self.transforms.reserve(initial.transform_arrays.len());
-        self.bones.reserve(initial.bone_arrays.len());
+        macro_rules! reserve {
+            ($col:ident, $ar:ident) => {
+                self.$col.reserve(initial.$ar.len())
+            };
+        }
+        each_column!(reserve);
     }
 
     /// Starts a run of a batch of the program whose initial slots are `initial`, with no
@@ -212,29 +225,21 @@ impl ArrayLanes {
     pub(crate) fn begin(&mut self, initial: &Slots) {
         self.reserve(initial);
         self.run = self.run.wrapping_add(1);
-        if self.run == 0 {
-            // The count came round: entries of run 1, 2, ... four billion runs ago would
-            // pass for the coming runs'.
-            for entries in [
-                &mut self.bools.entries,
-                &mut self.ints.entries,
-                &mut self.floats.entries,
-                &mut self.vec3s.entries,
-                &mut self.quats.entries,
-                &mut self.transforms.entries,
-                &mut self.bones.entries,
-            ] {
-                entries.fill(Entry::default());
-            }
+        // When the count comes round, entries of run 1, 2, ... four billion runs ago would
+        // pass for the coming runs': they are cleared, and the count starts at 1 again.
+        let wrapped = self.run == 0;
+        macro_rules! begin {
+            ($col:ident, $ar:ident) => {{
+                if wrapped {
+                    self.$col.entries.fill(Entry::default());
+                }
+                self.$col.used = 0;
+            }};
+        }
+        each_column!(begin);
+        if wrapped {
             self.run = 1;
         }
-        self.bools.used = 0;
-        self.ints.used = 0;
-        self.floats.used = 0;
-        self.vec3s.used = 0;
-        self.quats.used = 0;
-        self.transforms.used = 0;
-        self.bones.used = 0;
     }
 
     /// Drops the copy of array variable `array` of element type `elem`, if it has one.

@@ -750,16 +750,16 @@ macro_rules! execute {
             Op::FindBones => {
                 $forget!(Elem::Bone, o[3]);
                 $each!({
-                let out = &mut $s.bone_arrays[at!(3)];
-                match bone($cx.pose, $s.bones[at!(0)]) {
-                    Some(root) => {
-                        let contains = &$cx.texts[$s.names[at!(1)] as usize];
-                        let excludes = &$cx.texts[$s.names[at!(2)] as usize];
-                        k::find_bones($cx.pose.skeleton(), root, contains, excludes, out);
+                    let out = &mut $s.bone_arrays[at!(3)];
+                    match bone($cx.pose, $s.bones[at!(0)]) {
+                        Some(root) => {
+                            let contains = &$cx.texts[$s.names[at!(1)] as usize];
+                            let excludes = &$cx.texts[$s.names[at!(2)] as usize];
+                            k::find_bones($cx.pose.skeleton(), root, contains, excludes, out);
+                        }
+                        None => out.clear(),
                     }
-                    None => out.clear(),
-                }
-            })
+                })
             }
             Op::TwoBoneIK => {
                 let mut prepared = PreparedAxes::default();
@@ -988,38 +988,38 @@ macro_rules! execute {
             Op::ArraySetAt(e) => {
                 $forget!(e, o[0]);
                 $each!({
-                let index = i!(1);
-                macro_rules! set {
-                    ($sc:ident, $ar:expr, $zero:expr) => {{
-                        let value = scalar!($sc, 2);
-                        array_set(&mut $ar[at!(0)], index, value);
-                    }};
-                }
-                by_elem!(e, $s, set);
-            })
+                    let index = i!(1);
+                    macro_rules! set {
+                        ($sc:ident, $ar:expr, $zero:expr) => {{
+                            let value = scalar!($sc, 2);
+                            array_set(&mut $ar[at!(0)], index, value);
+                        }};
+                    }
+                    by_elem!(e, $s, set);
+                })
             }
             Op::ArrayAdd(e) => {
                 $forget!(e, o[0]);
                 $each!({
-                macro_rules! add {
-                    ($sc:ident, $ar:expr, $zero:expr) => {{
-                        let value = scalar!($sc, 1);
-                        $ar[at!(0)].push(value);
-                    }};
-                }
-                by_elem!(e, $s, add);
-            })
+                    macro_rules! add {
+                        ($sc:ident, $ar:expr, $zero:expr) => {{
+                            let value = scalar!($sc, 1);
+                            $ar[at!(0)].push(value);
+                        }};
+                    }
+                    by_elem!(e, $s, add);
+                })
             }
             Op::ArrayReset(e) => {
                 $forget!(e, o[0]);
                 $each!({
-                macro_rules! reset {
-                    ($sc:ident, $ar:expr, $zero:expr) => {
-                        $ar[at!(0)].clear()
-                    };
-                }
-                by_elem!(e, $s, reset);
-            })
+                    macro_rules! reset {
+                        ($sc:ident, $ar:expr, $zero:expr) => {
+                            $ar[at!(0)].clear()
+                        };
+                    }
+                    by_elem!(e, $s, reset);
+                })
             }
 
             // Draw ops: DebugDraw::push records nothing when drawing is off.
