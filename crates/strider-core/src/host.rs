@@ -40,6 +40,90 @@ pub struct SphereQuery {
     pub radius: f32,
 }
 
+/// How many traces [`TraceColumns`] and [`HitColumns`] hold: as many as a batch of
+/// characters the VM runs together.
+pub const TRACE_COLUMNS: usize = 16;
+
+/// Up to [`TRACE_COLUMNS`] traces of a batch, one array per coordinate (the layout the
+/// VM keeps a batch's values in, and the one a world computes several traces per
+/// instruction in): trace `k` runs from `(start[0][k], start[1][k], start[2][k])` to
+/// `(end[0][k], end[1][k], end[2][k])`, world space, centimetres. For
+/// [`WorldQuery::line_traces_in_columns`] and [`WorldQuery::sphere_traces_in_columns`].
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct TraceColumns {
+    /// x, y and z of each trace's start.
+    pub start: [[f32; TRACE_COLUMNS]; 3],
+    /// x, y and z of each trace's end.
+    pub end: [[f32; TRACE_COLUMNS]; 3],
+    /// Each sphere's radius, centimetres (read by sphere traces only).
+    pub radius: [f32; TRACE_COLUMNS],
+}
+
+impl TraceColumns {
+    /// Trace `k` (`< TRACE_COLUMNS`) as a line trace.
+    #[must_use]
+    #[inline]
+    pub fn line(&self, k: usize) -> LineQuery {
+        LineQuery {
+            start: Vec3::new(self.start[0][k], self.start[1][k], self.start[2][k]),
+            end: Vec3::new(self.end[0][k], self.end[1][k], self.end[2][k]),
+        }
+    }
+
+    /// Trace `k` (`< TRACE_COLUMNS`) as a sphere trace.
+    #[must_use]
+    #[inline]
+    pub fn sphere(&self, k: usize) -> SphereQuery {
+        let LineQuery { start, end } = self.line(k);
+        SphereQuery {
+            start,
+            end,
+            radius: self.radius[k],
+        }
+    }
+}
+
+/// The answers to [`TraceColumns`], one array per component: where `hit[k]` is true,
+/// trace `k` hit at `point` (centimetres, world space) with the unit `normal`, having
+/// travelled `distance` centimetres, as [`TraceHit`]'s fields; where it is false, the trace
+/// missed and the other entries of `k` mean nothing.
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct HitColumns {
+    /// Whether each trace hit.
+    pub hit: [bool; TRACE_COLUMNS],
+    /// x, y and z of each hit's point.
+    pub point: [[f32; TRACE_COLUMNS]; 3],
+    /// x, y and z of each hit's normal.
+    pub normal: [[f32; TRACE_COLUMNS]; 3],
+    /// How far each trace travelled to its hit.
+    pub distance: [f32; TRACE_COLUMNS],
+}
+
+impl HitColumns {
+    /// Writes `answer` as trace `k`'s (`< TRACE_COLUMNS`); a miss leaves the other entries
+    /// of `k` as they are.
+    #[inline]
+    pub fn set(&mut self, k: usize, answer: Option<TraceHit>) {
+        self.hit[k] = answer.is_some();
+        if let Some(h) = answer {
+            [self.point[0][k], self.point[1][k], self.point[2][k]] = h.point.to_array();
+            [self.normal[0][k], self.normal[1][k], self.normal[2][k]] = h.normal.to_array();
+            self.distance[k] = h.distance;
+        }
+    }
+
+    /// Trace `k`'s answer (`k < TRACE_COLUMNS`).
+    #[must_use]
+    #[inline]
+    pub fn get(&self, k: usize) -> Option<TraceHit> {
+        self.hit[k].then(|| TraceHit {
+            point: Vec3::new(self.point[0][k], self.point[1][k], self.point[2][k]),
+            normal: Vec3::new(self.normal[0][k], self.normal[1][k], self.normal[2][k]),
+            distance: self.distance[k],
+        })
+    }
+}
+
 /// Geometry queries a host answers for the rig. Implementations must be deterministic
 /// (same query, same answer) for replays to be bit-identical.
 pub trait WorldQuery {
@@ -69,6 +153,36 @@ pub trait WorldQuery {
     fn sphere_traces(&self, queries: &[SphereQuery], hits: &mut [Option<TraceHit>]) {
         for (query, hit) in queries.iter().zip(hits) {
             *hit = self.sphere_trace(query.start, query.end, query.radius);
+        }
+    }
+
+    /// The first `n` (at most [`TRACE_COLUMNS`]) line traces of `traces` at once, laid out
+    /// in columns (a batch of characters tracing together, as the VM asks): trace `k`'s
+    /// answer goes to entry `k` of `hits`, and must be [`WorldQuery::line_trace`]'s answer
+    /// to it, bit for bit. Entries from `n` on may be written (a world may compute every
+    /// column at once) and mean nothing afterwards. The default asks
+    /// [`WorldQuery::line_traces`]; a world that computes in columns can answer without
+    /// taking the traces apart.
+    fn line_traces_in_columns(&self, traces: &TraceColumns, n: usize, hits: &mut HitColumns) {
+        let n = n.min(TRACE_COLUMNS);
+        let queries: [LineQuery; TRACE_COLUMNS] = std::array::from_fn(|k| traces.line(k));
+        let mut answers = [None; TRACE_COLUMNS];
+        self.line_traces(&queries[..n], &mut answers[..n]);
+        for (k, answer) in answers.into_iter().enumerate().take(n) {
+            hits.set(k, answer);
+        }
+    }
+
+    /// The first `n` (at most [`TRACE_COLUMNS`]) sphere traces of `traces` at once, as
+    /// [`WorldQuery::line_traces_in_columns`]: each answer [`WorldQuery::sphere_trace`]'s,
+    /// bit for bit. The default asks [`WorldQuery::sphere_traces`].
+    fn sphere_traces_in_columns(&self, traces: &TraceColumns, n: usize, hits: &mut HitColumns) {
+        let n = n.min(TRACE_COLUMNS);
+        let queries: [SphereQuery; TRACE_COLUMNS] = std::array::from_fn(|k| traces.sphere(k));
+        let mut answers = [None; TRACE_COLUMNS];
+        self.sphere_traces(&queries[..n], &mut answers[..n]);
+        for (k, answer) in answers.into_iter().enumerate().take(n) {
+            hits.set(k, answer);
         }
     }
 }
@@ -220,5 +334,100 @@ impl DebugDraw {
     #[must_use]
     pub fn primitives(&self) -> &[DebugPrimitive] {
         &self.primitives
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// A world that only answers one trace at a time: the plane z = 0, hit where a trace
+    /// crosses it downwards (a sphere's lowest point), at the crossing.
+    struct Floor;
+
+    impl WorldQuery for Floor {
+        fn line_trace(&self, start: Vec3, end: Vec3) -> Option<TraceHit> {
+            self.sphere_trace(start, end, 0.0)
+        }
+
+        fn sphere_trace(&self, start: Vec3, end: Vec3, radius: f32) -> Option<TraceHit> {
+            let (from, to) = (start.z - radius, end.z - radius);
+            (from >= 0.0 && to < 0.0).then(|| {
+                let t = from / (from - to);
+                TraceHit {
+                    point: start.lerp(end, t) - Vec3::Z * radius,
+                    normal: Vec3::Z,
+                    distance: start.distance(end) * t,
+                }
+            })
+        }
+    }
+
+    #[test]
+    fn columns_are_answered_by_default_as_each_trace_alone() {
+        // Traces 0..16 fall from 10 cm to 10 − 1.5·k cm with radii 0.75·(k % 4): those
+        // that reach the floor with their lowest point hit. The first 11 are asked.
+        let mut traces = TraceColumns::default();
+        for k in 0..TRACE_COLUMNS {
+            let x = k as f32;
+            [traces.start[0][k], traces.start[1][k], traces.start[2][k]] = [x, -x, 10.0];
+            [traces.end[0][k], traces.end[1][k], traces.end[2][k]] = [x, 2.0, 10.0 - 1.5 * x];
+            traces.radius[k] = 0.75 * (k % 4) as f32;
+        }
+        let n = 11;
+        for sphere in [false, true] {
+            let mut hits = HitColumns::default();
+            if sphere {
+                Floor.sphere_traces_in_columns(&traces, n, &mut hits);
+            } else {
+                Floor.line_traces_in_columns(&traces, n, &mut hits);
+            }
+            let mut hit = 0;
+            for k in 0..n {
+                let q = traces.sphere(k);
+                let alone = if sphere {
+                    Floor.sphere_trace(q.start, q.end, q.radius)
+                } else {
+                    Floor.line_trace(q.start, q.end)
+                };
+                assert_eq!(hits.get(k), alone, "trace {k}, sphere {sphere}");
+                hit += usize::from(alone.is_some());
+            }
+            // Line traces: 10 − 1.5·k < 0 for k ≥ 7 (7..=10). Spheres: 10 − 1.5·k − r < 0
+            // for 6 (r = 1.5) and 7..=10 too.
+            let expected = if sphere { 5 } else { 4 };
+            assert_eq!(hit, expected, "sphere {sphere}");
+        }
+    }
+
+    #[test]
+    fn a_column_holds_a_trace_and_its_answer() {
+        let mut traces = TraceColumns::default();
+        traces.start[1][3] = 2.0;
+        traces.end[2][3] = -4.0;
+        traces.radius[3] = 1.5;
+        assert_eq!(
+            traces.sphere(3),
+            SphereQuery {
+                start: Vec3::new(0.0, 2.0, 0.0),
+                end: Vec3::new(0.0, 0.0, -4.0),
+                radius: 1.5,
+            }
+        );
+        let answer = TraceHit {
+            point: Vec3::new(1.0, 2.0, 3.0),
+            normal: Vec3::Y,
+            distance: 4.0,
+        };
+        let mut hits = HitColumns::default();
+        hits.set(5, Some(answer));
+        assert_eq!(
+            (hits.point[2][5], hits.normal[1][5], hits.distance[5]),
+            (3.0, 1.0, 4.0)
+        );
+        assert_eq!(hits.get(5), Some(answer));
+        hits.set(5, None);
+        assert_eq!(hits.get(5), None);
+        assert_eq!(hits.get(4), None);
     }
 }

@@ -31,7 +31,8 @@ pub mod transform;
 pub use euler::EulerOrder;
 pub use glam::{Quat, Vec3};
 pub use host::{
-    DebugColor, DebugDraw, DebugPrimitive, EmptyWorld, LineQuery, SphereQuery, TraceHit, WorldQuery,
+    DebugColor, DebugDraw, DebugPrimitive, EmptyWorld, HitColumns, LineQuery, SphereQuery,
+    TRACE_COLUMNS, TraceColumns, TraceHit, WorldQuery,
 };
 pub use pose::Pose;
 pub use skeleton::{Bone, BoneIndex, Skeleton, SkeletonError};

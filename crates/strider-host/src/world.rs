@@ -49,7 +49,10 @@ use parry3d::query::{Ray, ShapeCastOptions, cast_shapes};
 use parry3d::shape::{Ball, Shape, SharedShape, TriMesh};
 use serde::Deserialize;
 use serde::de::{self, Deserializer, SeqAccess, Visitor};
-use strider_core::{LineQuery, SphereQuery, TraceHit, WorldQuery, all_finite, load_vec3};
+use strider_core::{
+    HitColumns, LineQuery, SphereQuery, TRACE_COLUMNS, TraceColumns, TraceHit, WorldQuery,
+    all_finite, load_vec3,
+};
 
 use crate::sweep::{
     BallSweep, Facet, HullTriangle, Plane, ball_box_sweep, ball_half_space_sweep, ball_hull_sweep,
@@ -1604,51 +1607,103 @@ impl WorldQuery for World {
     }
 
     /// Each query as [`World::line_trace`] answers it, bit for bit. In a world of one
-    /// half-space and nothing else (flat ground), eight queries at a time, one array per
-    /// coordinate, as [`WorldQuery::sphere_traces`]; otherwise one at a time.
+    /// half-space and nothing else (flat ground), [`TRACE_COLUMNS`] queries at a time, one
+    /// array per coordinate, as [`WorldQuery::line_traces_in_columns`]; otherwise one at
+    /// a time.
     fn line_traces(&self, queries: &[LineQuery], hits: &mut [Option<TraceHit>]) {
         self.answer_batch(
             queries,
             hits,
-            |plane, queries, hits| self.plane_line_traces(plane, queries, hits),
+            |traces, k, q| {
+                [traces.start[0][k], traces.start[1][k], traces.start[2][k]] = q.start.to_array();
+                [traces.end[0][k], traces.end[1][k], traces.end[2][k]] = q.end.to_array();
+            },
+            |plane, traces, n, answers| self.plane_line_traces(plane, traces, n, answers),
             |q| self.line_trace_inlined(q.start, q.end),
         );
     }
 
     /// Each query as [`World::sphere_trace`] answers it, bit for bit. In a world of one
-    /// half-space and nothing else (flat ground), eight queries at a time, one array per
-    /// coordinate, so that the compiler can compute several queries per instruction;
-    /// otherwise one at a time.
+    /// half-space and nothing else (flat ground), [`TRACE_COLUMNS`] queries at a time, one
+    /// array per coordinate, so that the compiler can compute several queries per
+    /// instruction; otherwise one at a time.
     fn sphere_traces(&self, queries: &[SphereQuery], hits: &mut [Option<TraceHit>]) {
         self.answer_batch(
             queries,
             hits,
-            |plane, queries, hits| self.plane_sphere_traces(plane, queries, hits),
+            |traces, k, q| {
+                [traces.start[0][k], traces.start[1][k], traces.start[2][k]] = q.start.to_array();
+                [traces.end[0][k], traces.end[1][k], traces.end[2][k]] = q.end.to_array();
+                traces.radius[k] = q.radius;
+            },
+            |plane, traces, n, answers| self.plane_sphere_traces(plane, traces, n, answers),
             |q| self.sphere_trace_inlined(q.start, q.end, q.radius),
         );
     }
-}
 
-/// How many traces a flat world answers side by side ([`World::line_traces`],
-/// [`World::sphere_traces`]).
-const COLUMN: usize = 8;
+    /// Each trace as [`World::line_trace`] answers it, bit for bit: in a world of one
+    /// half-space and nothing else (flat ground) all at once, in their columns; otherwise
+    /// one at a time.
+    fn line_traces_in_columns(&self, traces: &TraceColumns, n: usize, hits: &mut HitColumns) {
+        let n = n.min(TRACE_COLUMNS);
+        match (self.bounded, &self.half_spaces[..]) {
+            (false, [plane]) => self.plane_line_traces(plane, traces, n, hits),
+            _ => {
+                for k in 0..n {
+                    let q = traces.line(k);
+                    hits.set(k, self.line_trace_inlined(q.start, q.end));
+                }
+            }
+        }
+    }
+
+    /// Each trace as [`World::sphere_trace`] answers it, bit for bit, as
+    /// [`World::line_traces_in_columns`].
+    fn sphere_traces_in_columns(&self, traces: &TraceColumns, n: usize, hits: &mut HitColumns) {
+        let n = n.min(TRACE_COLUMNS);
+        match (self.bounded, &self.half_spaces[..]) {
+            (false, [plane]) => self.plane_sphere_traces(plane, traces, n, hits),
+            _ => {
+                for k in 0..n {
+                    let q = traces.sphere(k);
+                    hits.set(k, self.sphere_trace_inlined(q.start, q.end, q.radius));
+                }
+            }
+        }
+    }
+}
 
 impl World {
     /// A batch's answers, `hits[k]` to `queries[k]`: in a world of one half-space and
-    /// nothing else (flat ground), [`COLUMN`] queries at a time by `columns`; otherwise
-    /// one at a time by `alone`.
+    /// nothing else (flat ground), [`TRACE_COLUMNS`] queries at a time, each `put` into
+    /// its column and the columns answered by `columns`; otherwise one at a time by
+    /// `alone`.
     #[inline(always)]
     fn answer_batch<Q>(
         &self,
         queries: &[Q],
         hits: &mut [Option<TraceHit>],
-        columns: impl Fn(&HalfSpace, &[Q], &mut [Option<TraceHit>]),
+        put: impl Fn(&mut TraceColumns, usize, &Q),
+        columns: impl Fn(&HalfSpace, &TraceColumns, usize, &mut HitColumns),
         alone: impl Fn(&Q) -> Option<TraceHit>,
     ) {
         match (self.bounded, &self.half_spaces[..]) {
             (false, [plane]) => {
-                for (queries, hits) in queries.chunks(COLUMN).zip(hits.chunks_mut(COLUMN)) {
-                    columns(plane, queries, hits);
+                for (queries, hits) in queries
+                    .chunks(TRACE_COLUMNS)
+                    .zip(hits.chunks_mut(TRACE_COLUMNS))
+                {
+                    // Lanes past the queries stay zero.
+                    let mut traces = TraceColumns::default();
+                    for (k, q) in queries.iter().enumerate() {
+                        put(&mut traces, k, q);
+                    }
+                    let mut answers = HitColumns::default();
+                    let n = queries.len().min(hits.len());
+                    columns(plane, &traces, n, &mut answers);
+                    for (k, hit) in hits.iter_mut().enumerate().take(n) {
+                        *hit = answers.get(k);
+                    }
                 }
             }
             _ => {
@@ -1735,151 +1790,128 @@ impl World {
         })
     }
 
-    /// Up to [`COLUMN`] line traces against the world's only collider, the half-space
-    /// `plane`: what [`WorldQuery::line_trace`] computes for each, with the same operations
-    /// in the same order (so bit for bit the same answers), laid out one array per
-    /// coordinate so that the compiler computes several queries per instruction. A query
+    /// The first `n` line traces of `traces` against the world's only collider, the
+    /// half-space `plane`, answered into `hits`: what [`WorldQuery::line_trace`] computes
+    /// for each, with the same operations in the same order (so bit for bit the same
+    /// answers), in the columns the traces come in, every column at once and without
+    /// branches, so that the compiler computes several traces per instruction. A trace
     /// off the common path (not finite, a length of 1e-7 or less or not finite) is
-    /// answered by `line_trace` itself. Kept in step with [`World::line_trace_inlined`]
-    /// and [`ray_half_space`]: a change to either must be made here too
+    /// answered by `line_trace` itself. Kept in step with [`World::line_trace_inlined`],
+    /// [`ray_half_space`] and [`facing_hit`]: a change to any of them must be made here too
     /// (`line_traces_in_a_batch_answer_as_each_alone` compares them).
     fn plane_line_traces(
         &self,
         plane: &HalfSpace,
-        queries: &[LineQuery],
-        hits: &mut [Option<TraceHit>],
+        traces: &TraceColumns,
+        n: usize,
+        hits: &mut HitColumns,
     ) {
-        let n = queries.len().min(hits.len()).min(COLUMN);
-        // Start and delta (end − start), by coordinate; unused lanes stay zero.
-        let (mut start, mut delta) = ([[0.0; COLUMN]; 3], [[0.0; COLUMN]; 3]);
-        for k in 0..n {
-            let LineQuery { start: s, end: e } = queries[k];
-            (start[0][k], start[1][k], start[2][k]) = (s.x, s.y, s.z);
-            (delta[0][k], delta[1][k], delta[2][k]) = (e.x - s.x, e.y - s.y, e.z - s.z);
-        }
         let (p, nrm) = (plane.point.to_array(), plane.normal.to_array());
-        let [sx, sy, sz] = start;
-        let [dx, dy, dz] = delta;
-        let mut dir = [[0.0; COLUMN]; 3];
-        let mut distance = [0.0; COLUMN];
-        let (mut hit, mut inside, mut common) = ([false; COLUMN], [false; COLUMN], [false; COLUMN]);
-        for k in 0..COLUMN {
+        // `line_hit`'s unit normal, the same for every hit but those starting inside (whose
+        // normal is zero).
+        let unit = unit_normal(plane.normal).to_array();
+        let no_unit = unit == [0.0; 3];
+        let [sx, sy, sz] = &traces.start;
+        let [ex, ey, ez] = &traces.end;
+        let mut common = [false; TRACE_COLUMNS];
+        for k in 0..TRACE_COLUMNS {
+            let (dx, dy, dz) = (ex[k] - sx[k], ey[k] - sy[k], ez[k] - sz[k]);
             // `Vec3::length`: (x² + y²) + z², then the square root.
-            let length = ((dx[k] * dx[k] + dy[k] * dy[k]) + dz[k] * dz[k]).sqrt();
-            let (ux, uy, uz) = (dx[k] / length, dy[k] / length, dz[k] / length);
-            (dir[0][k], dir[1][k], dir[2][k]) = (ux, uy, uz);
+            let length = ((dx * dx + dy * dy) + dz * dz).sqrt();
+            let dir = [dx / length, dy / length, dz / length];
             // `ray_half_space`: the start's height above the plane, below which the ray
             // starts inside; else where it crosses.
             let height =
                 (nrm[0] * (sx[k] - p[0]) + nrm[1] * (sy[k] - p[1])) + nrm[2] * (sz[k] - p[2]);
-            let t = height / -((nrm[0] * ux + nrm[1] * uy) + nrm[2] * uz);
-            inside[k] = height < 0.0;
+            let t = height / -((nrm[0] * dir[0] + nrm[1] * dir[1]) + nrm[2] * dir[2]);
+            let inside = height < 0.0;
             // Without short-circuits, so that the loop has no branches to keep it from
             // computing several lanes at once (a NaN `t` misses, as there).
-            hit[k] = inside[k] | ((t >= 0.0) & (t <= length));
-            distance[k] = if inside[k] { 0.0 } else { t };
+            hits.hit[k] = inside | ((t >= 0.0) & (t <= length));
+            // `facing_hit`, lane by lane: the distance at least 0; the normal the unit one
+            // for a hit on the way, turned over where it is hit from behind, and for a hit
+            // at the start (or where the plane gave no normal) one facing back along the
+            // ray.
+            let distance = (if inside { 0.0 } else { t }).max(0.0);
+            let facing = !inside & (distance > 0.0) & !no_unit;
+            let behind = ((unit[0] * dir[0] + unit[1] * dir[1]) + unit[2] * dir[2]) > 0.0;
+            // Chosen bit by bit (a negation is the sign bit's flip), which the compiler
+            // computes for several lanes at once where it would not pick among floats.
+            let (turn, pick) = (u32::from(behind) << 31, 0u32.wrapping_sub(u32::from(facing)));
+            let start = [sx[k], sy[k], sz[k]];
+            for c in 0..3 {
+                let towards = unit[c].to_bits() ^ turn;
+                let back = (-dir[c]).to_bits();
+                hits.normal[c][k] = f32::from_bits((towards & pick) | (back & !pick));
+                hits.point[c][k] = start[c] + dir[c] * distance;
+            }
+            hits.distance[k] = distance;
             // `line_trace`'s own tests: a finite start and a finite length above 1e-7 (so
             // a finite end).
             common[k] = all_finite([sx[k], sy[k], sz[k], length]) & (length > 1e-7);
         }
-        // `line_hit`'s unit normal, the same for every hit but those starting inside (whose
-        // normal is zero).
-        let unit = unit_normal(plane.normal);
-        for k in 0..n {
-            hits[k] = if !common[k] {
-                let q = &queries[k];
-                self.line_trace(q.start, q.end)
-            } else if hit[k] {
-                let normal = if inside[k] { Vec3::ZERO } else { unit };
-                let start = Vec3::new(sx[k], sy[k], sz[k]);
-                let dir = Vec3::new(dir[0][k], dir[1][k], dir[2][k]);
-                Some(facing_hit(start, dir, distance[k], normal))
-            } else {
-                None
-            };
+        for (k, _) in common.iter().enumerate().take(n).filter(|(_, c)| !**c) {
+            let q = traces.line(k);
+            hits.set(k, self.line_trace(q.start, q.end));
         }
     }
 
-    /// Up to [`COLUMN`] sphere traces against the world's only collider, the half-space
-    /// `plane`: what [`WorldQuery::sphere_trace`] computes for each, with the same
-    /// operations in the same order (so bit for bit the same answers), laid out one array
-    /// per coordinate so that the compiler computes several queries per instruction. A
-    /// query off the common path (not finite, a radius of 0 or less, a length of 1e-7 or
-    /// less or not finite) is answered by `sphere_trace` itself. Kept in step with
+    /// The first `n` sphere traces of `traces` against the world's only collider, the
+    /// half-space `plane`, answered into `hits`: what [`WorldQuery::sphere_trace`]
+    /// computes for each, with the same operations in the same order (so bit for bit the
+    /// same answers), in the columns the traces come in, every column at once and without
+    /// branches, so that the compiler computes several traces per instruction. A trace
+    /// off the common path (not finite, a radius of 0 or less, a length of 1e-7 or less
+    /// or not finite) is answered by `sphere_trace` itself. Kept in step with
     /// [`World::sphere_trace_inlined`] and [`ball_half_space_sweep`]: a change to either
     /// must be made here too (`sphere_traces_in_a_batch_answer_as_each_alone` compares
     /// them).
     fn plane_sphere_traces(
         &self,
         plane: &HalfSpace,
-        queries: &[SphereQuery],
-        hits: &mut [Option<TraceHit>],
+        traces: &TraceColumns,
+        n: usize,
+        hits: &mut HitColumns,
     ) {
-        let n = queries.len().min(hits.len()).min(COLUMN);
-        // Start, delta (end − start) and radius, by coordinate; unused lanes stay zero.
-        // (The line traces' columns start the same way, without the radius: one loop
-        // each measured cheaper than a shared one and a loop for the radii.)
-        let (mut start, mut delta, mut radius) =
-            ([[0.0; COLUMN]; 3], [[0.0; COLUMN]; 3], [0.0; COLUMN]);
-        for k in 0..n {
-            let SphereQuery {
-                start: s,
-                end: e,
-                radius: r,
-            } = queries[k];
-            (start[0][k], start[1][k], start[2][k]) = (s.x, s.y, s.z);
-            (delta[0][k], delta[1][k], delta[2][k]) = (e.x - s.x, e.y - s.y, e.z - s.z);
-            radius[k] = r;
-        }
         let (p, nrm) = (plane.point.to_array(), plane.normal.to_array());
-        let [sx, sy, sz] = start;
-        let [dx, dy, dz] = delta;
-        let mut dir = [[0.0; COLUMN]; 3];
-        let (mut distance, mut hit, mut common) = ([0.0; COLUMN], [false; COLUMN], [false; COLUMN]);
-        for k in 0..COLUMN {
+        let [sx, sy, sz] = &traces.start;
+        let [ex, ey, ez] = &traces.end;
+        let radius = &traces.radius;
+        let mut common = [false; TRACE_COLUMNS];
+        for k in 0..TRACE_COLUMNS {
+            let (dx, dy, dz) = (ex[k] - sx[k], ey[k] - sy[k], ez[k] - sz[k]);
             // `Vec3A::length`: (x² + y²) + z², then the square root.
-            let length = ((dx[k] * dx[k] + dy[k] * dy[k]) + dz[k] * dz[k]).sqrt();
-            let (ux, uy, uz) = (dx[k] / length, dy[k] / length, dz[k] / length);
-            (dir[0][k], dir[1][k], dir[2][k]) = (ux, uy, uz);
+            let length = ((dx * dx + dy * dy) + dz * dz).sqrt();
+            let dir = [dx / length, dy / length, dz / length];
             // `ball_half_space_sweep`, stopping at penetration.
             let gap = ((nrm[0] * (sx[k] - p[0]) + nrm[1] * (sy[k] - p[1]))
                 + nrm[2] * (sz[k] - p[2]))
                 - radius[k];
-            let approach = -((nrm[0] * ux + nrm[1] * uy) + nrm[2] * uz);
+            let approach = -((nrm[0] * dir[0] + nrm[1] * dir[1]) + nrm[2] * dir[2]);
             let along = gap / approach;
             let touching = gap <= 0.0;
             // Without short-circuits, so that the loop has no branches to keep it from
             // computing several lanes at once. (`ball_half_space_sweep` returns a miss for
             // `approach <= 0`; a NaN approach misses here too, its `along` being NaN.)
-            hit[k] = touching | ((approach > 0.0) & (along <= length));
-            distance[k] = if touching { 0.0 } else { along };
+            hits.hit[k] = touching | ((approach > 0.0) & (along <= length));
+            let distance = if touching { 0.0 } else { along };
+            // The touched point of a sphere is one radius from its centre, against the
+            // normal: `(start + dir · distance) − normal · radius`, as `sphere_trace`.
+            let start = [sx[k], sy[k], sz[k]];
+            for c in 0..3 {
+                hits.point[c][k] = (start[c] + dir[c] * distance) - nrm[c] * radius[k];
+                hits.normal[c][k] = nrm[c];
+            }
+            hits.distance[k] = distance;
             // `sphere_trace`'s own tests: a finite start and radius, a radius above 0, and a
             // finite length above 1e-7 (so a finite end).
             common[k] = all_finite([sx[k], sy[k], sz[k], radius[k], length])
                 & (radius[k] > 0.0)
                 & (length > 1e-7);
         }
-        for k in 0..n {
-            hits[k] = if !common[k] {
-                let q = &queries[k];
-                self.sphere_trace(q.start, q.end, q.radius)
-            } else if hit[k] {
-                // The touched point of a sphere is one radius from its centre, against the
-                // normal: `(start + dir · distance) − normal · radius`, as `sphere_trace`.
-                let (d, r) = (distance[k], radius[k]);
-                let point = Vec3::new(
-                    (sx[k] + dir[0][k] * d) - nrm[0] * r,
-                    (sy[k] + dir[1][k] * d) - nrm[1] * r,
-                    (sz[k] + dir[2][k] * d) - nrm[2] * r,
-                );
-                Some(TraceHit {
-                    point,
-                    normal: plane.normal,
-                    distance: d,
-                })
-            } else {
-                None
-            };
+        for (k, _) in common.iter().enumerate().take(n).filter(|(_, c)| !**c) {
+            let q = traces.sphere(k);
+            hits.set(k, self.sphere_trace(q.start, q.end, q.radius));
         }
     }
 }

@@ -1,7 +1,9 @@
 //! Traces against hand-computed values.
 
 use glam::Vec3;
-use strider_core::{LineQuery, SphereQuery, TraceHit, WorldQuery};
+use strider_core::{
+    HitColumns, LineQuery, SphereQuery, TRACE_COLUMNS, TraceColumns, TraceHit, WorldQuery,
+};
 use strider_host::world::{ShapeDesc, Wave, World, WorldDesc, WorldError, wave_height};
 
 fn near(a: f32, b: f32, tol: f32) -> bool {
@@ -977,6 +979,22 @@ fn sphere_traces_in_a_batch_answer_as_each_alone() {
         |w, batch, hits| w.sphere_traces(batch, hits),
         |w, q| w.sphere_trace(q.start, q.end, q.radius),
     );
+    // The same batches laid out in columns, as the VM asks.
+    in_batches(
+        &queries,
+        |w, batch, hits| {
+            in_columns(
+                batch,
+                hits,
+                |traces, k, q| {
+                    put_ends(traces, k, q.start, q.end);
+                    traces.radius[k] = q.radius;
+                },
+                |traces, n, answers| w.sphere_traces_in_columns(traces, n, answers),
+            );
+        },
+        |w, q| w.sphere_trace(q.start, q.end, q.radius),
+    );
 }
 
 #[test]
@@ -1020,6 +1038,61 @@ fn line_traces_in_a_batch_answer_as_each_alone() {
         |w, batch, hits| w.line_traces(batch, hits),
         |w, q| w.line_trace(q.start, q.end),
     );
+    in_batches(
+        &queries,
+        |w, batch, hits| {
+            in_columns(
+                batch,
+                hits,
+                |traces, k, q| put_ends(traces, k, q.start, q.end),
+                |traces, n, answers| {
+                    w.line_traces_in_columns(traces, n, answers);
+                },
+            );
+        },
+        |w, q| w.line_trace(q.start, q.end),
+    );
+}
+
+/// `queries` answered [`TRACE_COLUMNS`] at a time through a world's columns (`ask`), each
+/// `put` into its column, into `hits`. The columns past the queries hold traces too, which
+/// are not asked.
+fn in_columns<Q>(
+    queries: &[Q],
+    hits: &mut [Option<TraceHit>],
+    put: impl Fn(&mut TraceColumns, usize, &Q),
+    ask: impl Fn(&TraceColumns, usize, &mut HitColumns),
+) {
+    for (queries, hits) in queries
+        .chunks(TRACE_COLUMNS)
+        .zip(hits.chunks_mut(TRACE_COLUMNS))
+    {
+        let mut traces = TraceColumns::default();
+        for k in 0..TRACE_COLUMNS {
+            put_ends(
+                &mut traces,
+                k,
+                Vec3::new(0.0, 0.0, 50.0),
+                Vec3::new(0.0, 0.0, -50.0),
+            );
+            traces.radius[k] = 2.0;
+        }
+        for (k, q) in queries.iter().enumerate() {
+            put(&mut traces, k, q);
+        }
+        let mut answers = HitColumns::default();
+        ask(&traces, queries.len(), &mut answers);
+        for (k, hit) in hits.iter_mut().enumerate() {
+            *hit = answers.get(k);
+        }
+    }
+}
+
+/// Trace `k`'s ends in `traces`.
+fn put_ends(traces: &mut TraceColumns, k: usize, start: Vec3, end: Vec3) {
+    for c in 0..3 {
+        (traces.start[c][k], traces.end[c][k]) = (start[c], end[c]);
+    }
 }
 
 /// The queries of the batch trace tests: starts above and below a ground at 0 or −12.5,

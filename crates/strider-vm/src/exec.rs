@@ -1385,8 +1385,9 @@ fn run_group<const LANES: bool, const PROFILE: bool>(
     } else {
         None
     };
-    // The members' matrices from world space, by entry, read at the batch's first trace.
-    let mut from_world = crate::per_member::FromWorldColumns::new();
+    // The members' matrices to and from world space, by entry, read at the batch's first
+    // trace.
+    let mut frames = crate::per_member::FrameColumns::new();
     // Whether any member records debug drawing: when none does, the batch passes the draw
     // ops by (their handlers record only, and only when enabled).
     let drawing = members.iter().any(|cx| cx.debug.is_enabled());
@@ -1589,7 +1590,7 @@ fn run_group<const LANES: bool, const PROFILE: bool>(
                 // SAFETY: as above; `members` is the batch the lanes were loaded from.
                 Op::SphereTrace
                     if unsafe {
-                        crate::per_member::sphere_traces(o, lane0, world, &mut from_world, members)
+                        crate::per_member::sphere_traces(o, lane0, world, &mut frames, members)
                     } =>
                 {
                     pc += 1;
@@ -1598,7 +1599,7 @@ fn run_group<const LANES: bool, const PROFILE: bool>(
                 // SAFETY: as above.
                 Op::LineTrace
                     if unsafe {
-                        crate::per_member::line_traces(o, lane0, world, &mut from_world, members)
+                        crate::per_member::line_traces(o, lane0, world, &mut frames, members)
                     } =>
                 {
                     pc += 1;

@@ -30,11 +30,11 @@
 use crate::array_lanes::ArrayLanes;
 use crate::exec::{
     BATCH, Bases, Ctx, array_get, array_set, axes_key, bone, bone_transform, parent_of, read_hit,
-    trace_ends, trace_miss, trace_outputs, trace_query,
+    trace_ends, trace_miss, trace_outputs,
 };
 use crate::lanes::{Uniform, block, break_transforms};
 use glam::{Quat, Vec3};
-use strider_core::{LineQuery, SphereQuery, TraceHit, Transform, WorldQuery};
+use strider_core::{HitColumns, LineQuery, TRACE_COLUMNS, TraceColumns, Transform, WorldQuery};
 use strider_nodes::kernels::two_bone_ik::{
     BoneAxes, ChainInput, ChainLanes, LANES_MATCH_GLAM, Pole, TwoBoneIk,
 };
@@ -370,8 +370,8 @@ pub(crate) unsafe fn for_each_next(
 
 /// `LineTrace` (operands: start, end; hit, point, normal, distance) for a whole batch
 /// with one question to the world
-/// ([`WorldQuery::line_traces`](strider_core::WorldQuery::line_traces)), as
-/// [`sphere_traces`] for sphere traces.
+/// ([`WorldQuery::line_traces_in_columns`](strider_core::WorldQuery::line_traces_in_columns)),
+/// as [`sphere_traces`] for sphere traces.
 ///
 /// # Safety
 /// As [`run_per_member`], with `o` a `LineTrace`'s operands.
@@ -380,25 +380,34 @@ pub(crate) unsafe fn line_traces(
     o: &[u32],
     lane0: Bases,
     world: Option<&dyn WorldQuery>,
-    frames: &mut FromWorldColumns,
+    frames: &mut FrameColumns,
     members: &[Ctx<'_>],
 ) -> bool {
     // SAFETY: the caller's contract; a line trace's outputs start at operand 2.
     unsafe {
-        batch_traces(o, 2, lane0, world, frames, members, |cx, _, s, e| {
-            trace_ends(&cx.to_world_matrix, s, e)
-        })
+        batch_traces(
+            o,
+            2,
+            None,
+            lane0,
+            world,
+            frames,
+            members,
+            |w, traces, n, hits| {
+                w.line_traces_in_columns(traces, n, hits);
+            },
+        )
     }
 }
 
 /// `SphereTrace` (operands: start, end, radius; hit, point, normal, distance) for a whole
 /// batch with one question to the world
-/// ([`WorldQuery::sphere_traces`](strider_core::WorldQuery::sphere_traces)), which answers each
-/// member's trace as its own `sphere_trace` would: every member's slots end as the
-/// handler leaves them. `world` is the world every member traces ([`shared_world`]);
-/// `None`, when they do not all trace the same one, returns false and does nothing (each
-/// then asks its own, through the handler). Inlined into the batch loop, so that it runs
-/// on the loop's machine code (`crate::batch_code`).
+/// ([`WorldQuery::sphere_traces_in_columns`](strider_core::WorldQuery::sphere_traces_in_columns)),
+/// which answers each member's trace as its own `sphere_trace` would: every member's slots
+/// end as the handler leaves them. `world` is the world every member traces
+/// ([`shared_world`]); `None`, when they do not all trace the same one, returns false and
+/// does nothing (each then asks its own, through the handler). Inlined into the batch
+/// loop, so that it runs on the loop's machine code (`crate::batch_code`).
 ///
 /// # Safety
 /// As [`run_per_member`], with `o` a `SphereTrace`'s operands.
@@ -407,16 +416,24 @@ pub(crate) unsafe fn sphere_traces(
     o: &[u32],
     lane0: Bases,
     world: Option<&dyn WorldQuery>,
-    frames: &mut FromWorldColumns,
+    frames: &mut FrameColumns,
     members: &[Ctx<'_>],
 ) -> bool {
-    let radius = item0(lane0.floats, o[2]);
+    let radius = item0(lane0.floats, o[2]).cast_const();
     // SAFETY: the caller's contract; a sphere trace's outputs start at operand 3.
     unsafe {
-        batch_traces(o, 3, lane0, world, frames, members, |cx, m, s, e| {
-            // SAFETY: a slot of the program's lanes, `m < BATCH`.
-            trace_query(&cx.to_world_matrix, s, e, *radius.add(m))
-        })
+        batch_traces(
+            o,
+            3,
+            Some(radius),
+            lane0,
+            world,
+            frames,
+            members,
+            |w, traces, n, hits| {
+                w.sphere_traces_in_columns(traces, n, hits);
+            },
+        )
     }
 }
 
@@ -635,45 +652,29 @@ pub(crate) fn shared_world<'w>(members: &[Ctx<'w>]) -> Option<&'w dyn WorldQuery
         .then_some(world)
 }
 
-/// A question the world answers for a batch at once: [`LineQuery`] or [`SphereQuery`].
-trait BatchQuery: Copy + Default {
-    /// The world's answers to `queries`, into `hits`.
-    fn ask(world: &dyn WorldQuery, queries: &[Self], hits: &mut [Option<TraceHit>]);
-}
-
-impl BatchQuery for LineQuery {
-    #[inline(always)]
-    fn ask(world: &dyn WorldQuery, queries: &[Self], hits: &mut [Option<TraceHit>]) {
-        world.line_traces(queries, hits);
-    }
-}
-
-impl BatchQuery for SphereQuery {
-    #[inline(always)]
-    fn ask(world: &dyn WorldQuery, queries: &[Self], hits: &mut [Option<TraceHit>]) {
-        world.sphere_traces(queries, hits);
-    }
-}
-
 /// A trace instruction (operands: start, end, then from `outs` on: hit, point, normal,
-/// distance) for the whole batch: each member's question (`query` of its context, its
-/// index, and its ends in rig space) asked of the world at once, and each answer mapped
-/// back to the member's slots as the handler maps it. Returns false, doing nothing, when
-/// there is no `world` the members share ([`shared_world`]). `world` must be
-/// `shared_world(members)`, and `frames` new or filled from these `members`, for the
-/// answers to be the handler's.
+/// distance) for the whole batch: every member's ends taken to world space (and, for a
+/// sphere trace, its radius from `radius`, member 0's item, made 0 where it is below 0 or
+/// NaN, as [`trace_query`](crate::exec::trace_query) makes it), laid out in columns and asked of the world at once
+/// (`ask`), and each answer mapped back to the member's slots as the handler maps it.
+/// Returns false, doing nothing, when there is no `world` the members share
+/// ([`shared_world`]). `world` must be `shared_world(members)`, and `frames` new or filled
+/// from these `members`, for the answers to be the handler's.
 ///
 /// # Safety
-/// As [`run_per_member`], with `o` a trace's operands, its outputs from `outs` on.
+/// As [`run_per_member`], with `o` a trace's operands, its outputs from `outs` on, and
+/// `radius` (when given) the item of member 0 of a slot of the program's float lanes.
 #[inline(always)]
-unsafe fn batch_traces<Q: BatchQuery>(
+#[allow(clippy::too_many_arguments)]
+unsafe fn batch_traces(
     o: &[u32],
     outs: usize,
+    radius: Option<*const f32>,
     lane0: Bases,
     world: Option<&dyn WorldQuery>,
-    frames: &mut FromWorldColumns,
+    frames: &mut FrameColumns,
     members: &[Ctx<'_>],
-    query: impl Fn(&Ctx<'_>, usize, Vec3, Vec3) -> Q,
+    ask: impl Fn(&dyn WorldQuery, &TraceColumns, usize, &mut HitColumns),
 ) -> bool {
     // One question to the world for the batch (its members share it in a crowd's
     // batch; else each asks its own, as the handler does).
@@ -681,15 +682,41 @@ unsafe fn batch_traces<Q: BatchQuery>(
         return false;
     };
     let (start, end) = (item0(lane0.vec3s, o[0]), item0(lane0.vec3s, o[1]));
-    let mut queries = [Q::default(); BATCH];
-    for (m, (cx, q)) in members.iter().zip(&mut queries).enumerate() {
-        // SAFETY: slots of the program's lanes (the caller's contract), `m < BATCH`.
-        let (s, e) = unsafe { (*start.add(m), *end.add(m)) };
-        *q = query(cx, m, s, e);
-    }
     let n = members.len();
-    let mut answers = [None; BATCH];
-    Q::ask(world, &queries[..n], &mut answers[..n]);
+    let frames = frames.of(members);
+    let mut traces = TraceColumns::default();
+    if COLUMNS_MATCH_GLAM {
+        // Every lane, those past the members too (whose traces the world does not
+        // answer): a loop of fixed length computes several lanes per instruction.
+        for m in 0..BATCH {
+            // SAFETY: slots of the program's lanes (the caller's contract), `m < BATCH`.
+            let (s, e) = unsafe { (*start.add(m), *end.add(m)) };
+            let (s, e) = (
+                point_to_world(&frames.to_world, m, s),
+                point_to_world(&frames.to_world, m, e),
+            );
+            for c in 0..3 {
+                (traces.start[c][m], traces.end[c][m]) = (s[c], e[c]);
+            }
+        }
+    } else {
+        for (m, cx) in members.iter().enumerate() {
+            // SAFETY: as above.
+            let (s, e) = unsafe { (*start.add(m), *end.add(m)) };
+            let LineQuery { start, end } = trace_ends(&cx.to_world_matrix, s, e);
+            for c in 0..3 {
+                (traces.start[c][m], traces.end[c][m]) = (start[c], end[c]);
+            }
+        }
+    }
+    if let Some(radius) = radius {
+        for m in 0..BATCH {
+            // SAFETY: the caller's contract, `m < BATCH`.
+            traces.radius[m] = unsafe { *radius.add(m) }.max(0.0);
+        }
+    }
+    let mut answers = HitColumns::default();
+    ask(world, &traces, n, &mut answers);
     let (hit, point, normal, distance) = (
         item0(lane0.bools, o[outs]),
         item0(lane0.vec3s, o[outs + 1]),
@@ -697,17 +724,17 @@ unsafe fn batch_traces<Q: BatchQuery>(
         item0(lane0.floats, o[outs + 3]),
     );
     if !COLUMNS_MATCH_GLAM {
-        for (m, (cx, answer)) in members.iter().zip(&answers).enumerate() {
+        for (m, cx) in members.iter().enumerate() {
             // SAFETY: as above. A member's outputs, which may share its inputs' slots, are
             // written after its ends are read, and other members' items lie apart.
             let (s, e) = unsafe { (*start.add(m), *end.add(m)) };
-            let outs = trace_outputs(read_hit(answer), s, e, &cx.from_world_matrix);
+            let outs = trace_outputs(read_hit(&answers.get(m)), s, e, &cx.from_world_matrix);
             // SAFETY: as above.
             unsafe { (*hit.add(m), *point.add(m), *normal.add(m), *distance.add(m)) = outs };
         }
         return true;
     }
-    let found = hits_in_rig_space(&answers, frames.of(members));
+    let found = hits_in_rig_space(&answers, &frames.from_world);
     for m in 0..n {
         // SAFETY: as above; the ends are read (for a miss) before the member's outputs,
         // which may share their slots, are written.
@@ -727,55 +754,75 @@ unsafe fn batch_traces<Q: BatchQuery>(
     true
 }
 
-/// Whether [`hits_in_rig_space`] computes with glam's operations in glam's order, so that
-/// its answers are the handler's ([`trace_outputs`]) bit for bit: glam's SSE2 code, whose
-/// products and sums are rounded one at a time, as the columns' are. Elsewhere each member
-/// maps its own answer.
+/// Whether the columns compute with glam's operations in glam's order, so that their
+/// results are the handler's bit for bit: the ends taken to world space in
+/// [`batch_traces`] ([`trace_ends`]) and the hits mapped back in [`hits_in_rig_space`]
+/// ([`trace_outputs`]). It holds for glam's SSE2 code, whose products and sums are rounded
+/// one at a time, as the columns' are. Elsewhere each member takes its own ends and maps
+/// its own answer.
 const COLUMNS_MATCH_GLAM: bool = cfg!(target_arch = "x86_64");
 
-/// Each member's `from_world_matrix`, one array per entry (the x, y and z axes and the
-/// translation, x, y and z of each): read off a batch's members at its first trace, for
-/// all of its traces ([`hits_in_rig_space`]).
-pub(crate) struct FromWorldColumns {
-    /// Whether `entries` holds the batch's matrices.
+// A batch's traces go to the world as one set of columns, lane for lane.
+const _: () = assert!(TRACE_COLUMNS == BATCH);
+
+/// Each member's `to_world_matrix` and `from_world_matrix`, one array per entry (the x, y
+/// and z axes and the translation, x, y and z of each): read off a batch's members at its
+/// first trace, for all of its traces ([`batch_traces`], [`hits_in_rig_space`]).
+pub(crate) struct FrameColumns {
+    /// Whether the entries hold the batch's matrices.
     filled: bool,
-    entries: [[f32; BATCH]; 12],
+    /// The matrices from rig space to world space.
+    to_world: [[f32; BATCH]; 12],
+    /// The matrices from world space to rig space.
+    from_world: [[f32; BATCH]; 12],
 }
 
-impl FromWorldColumns {
+impl FrameColumns {
     /// None read yet.
     pub(crate) const fn new() -> Self {
         Self {
             filled: false,
-            entries: [[0.0; BATCH]; 12],
+            to_world: [[0.0; BATCH]; 12],
+            from_world: [[0.0; BATCH]; 12],
         }
     }
 
     /// The matrices of `members` (the batch these columns are for), read on the first call.
     #[inline(always)]
-    fn of(&mut self, members: &[Ctx<'_>]) -> &[[f32; BATCH]; 12] {
+    fn of(&mut self, members: &[Ctx<'_>]) -> &Self {
         if !self.filled {
             for (m, cx) in members.iter().enumerate() {
-                self.put(m, &cx.from_world_matrix);
+                put_matrix(&mut self.to_world, m, &cx.to_world_matrix);
+                put_matrix(&mut self.from_world, m, &cx.from_world_matrix);
             }
             self.filled = true;
         }
-        &self.entries
+        self
     }
+}
 
-    /// Writes matrix `a` into member `m`'s lane.
-    #[inline(always)]
-    fn put(&mut self, m: usize, a: &glam::Affine3A) {
-        let columns = [
-            a.matrix3.x_axis,
-            a.matrix3.y_axis,
-            a.matrix3.z_axis,
-            a.translation,
-        ];
-        for (c, v) in columns.into_iter().enumerate() {
-            for (k, x) in v.to_array().into_iter().enumerate() {
-                self.entries[3 * c + k][m] = x;
-            }
+/// Point `p` through lane `m`'s matrix of `entries` ([`put_matrix`]) as
+/// `Affine3A::transform_point3` takes it, bit for bit where [`COLUMNS_MATCH_GLAM`]: x axis
+/// times x, plus y axis times y, plus z axis times z, plus the translation, each product
+/// and sum rounded in turn.
+#[inline(always)]
+fn point_to_world(entries: &[[f32; BATCH]; 12], m: usize, p: Vec3) -> [f32; 3] {
+    let t = entries;
+    std::array::from_fn(|c| ((t[c][m] * p.x + t[3 + c][m] * p.y) + t[6 + c][m] * p.z) + t[9 + c][m])
+}
+
+/// Writes matrix `a` into lane `m` of `entries` (x, y and z axes, then the translation).
+#[inline(always)]
+fn put_matrix(entries: &mut [[f32; BATCH]; 12], m: usize, a: &glam::Affine3A) {
+    let columns = [
+        a.matrix3.x_axis,
+        a.matrix3.y_axis,
+        a.matrix3.z_axis,
+        a.translation,
+    ];
+    for (c, v) in columns.into_iter().enumerate() {
+        for (k, x) in v.to_array().into_iter().enumerate() {
+            entries[3 * c + k][m] = x;
         }
     }
 }
@@ -792,33 +839,21 @@ struct FoundColumns {
 }
 
 /// The `answers` (world space) mapped to rig space by the members' matrices `from_world`
-/// ([`FromWorldColumns`]) as [`trace_outputs`] maps a hit, every member at once: the point
+/// ([`FrameColumns`]) as [`trace_outputs`] maps a hit, every member at once: the point
 /// through the matrix, the normal through its 3×3 part and normalised (zero when it has
 /// no length), each product and sum in glam's order (`Mat3A * Vec3A`: x axis times x, plus
 /// y axis times y, plus z axis times z; a length the square root of `(x² + y²) + z²`,
 /// normalised by its reciprocal). A hit with a component that is not finite is a miss, as
 /// [`read_hit`] reads it; lanes past the answers are misses.
 #[inline(always)]
-fn hits_in_rig_space(
-    answers: &[Option<TraceHit>; BATCH],
-    from_world: &[[f32; BATCH]; 12],
-) -> FoundColumns {
-    let mut given = [false; BATCH];
-    let (mut p, mut v, mut d) = ([[0.0f32; BATCH]; 3], [[0.0f32; BATCH]; 3], [0.0f32; BATCH]);
-    for (m, answer) in answers.iter().enumerate() {
-        if let Some(h) = answer {
-            given[m] = true;
-            [p[0][m], p[1][m], p[2][m]] = h.point.to_array();
-            [v[0][m], v[1][m], v[2][m]] = h.normal.to_array();
-            d[m] = h.distance;
-        }
-    }
+fn hits_in_rig_space(answers: &HitColumns, from_world: &[[f32; BATCH]; 12]) -> FoundColumns {
+    let (p, v, d) = (&answers.point, &answers.normal, &answers.distance);
     let f = from_world;
     let mut found = FoundColumns {
         hit: [false; BATCH],
         point: [[0.0; BATCH]; 3],
         normal: [[0.0; BATCH]; 3],
-        distance: d,
+        distance: *d,
     };
     for k in 0..BATCH {
         let (x, y, z) = (p[0][k], p[1][k], p[2][k]);
@@ -826,7 +861,7 @@ fn hits_in_rig_space(
         let finite = [x, y, z, nx, ny, nz, d[k]]
             .iter()
             .fold(true, |ok, c| ok & c.is_finite());
-        found.hit[k] = given[k] & finite;
+        found.hit[k] = answers.hit[k] & finite;
         for c in 0..3 {
             found.point[c][k] = ((f[c][k] * x + f[3 + c][k] * y) + f[6 + c][k] * z) + f[9 + c][k];
         }
@@ -848,7 +883,7 @@ mod tests {
     use crate::lanes::{Copies, Lanes};
     use crate::slots::{ScalarLens, Slots};
     use std::sync::Arc;
-    use strider_core::{Bone, BoneIndex, DebugDraw, Pose, Skeleton};
+    use strider_core::{Bone, BoneIndex, DebugDraw, Pose, Skeleton, SphereQuery, TraceHit};
     use strider_nodes::{MAX_OPERANDS, ValueType};
 
     /// How many scalar slots of each type, and arrays of each element type, a member has.
@@ -1233,14 +1268,14 @@ mod tests {
                         o,
                         lanes.bases(),
                         shared_world(&cxs),
-                        &mut FromWorldColumns::new(),
+                        &mut FrameColumns::new(),
                         &cxs,
                     ),
                     _ => sphere_traces(
                         o,
                         lanes.bases(),
                         shared_world(&cxs),
-                        &mut FromWorldColumns::new(),
+                        &mut FrameColumns::new(),
                         &cxs,
                     ),
                 }
@@ -1276,7 +1311,7 @@ mod tests {
             }
         };
         for round in 0..400 {
-            let mut columns = FromWorldColumns::new();
+            let mut columns = [[0.0; BATCH]; 12];
             let mut matrices = [glam::Affine3A::IDENTITY; BATCH];
             let mut answers = [None; BATCH];
             for m in 0..BATCH {
@@ -1286,7 +1321,7 @@ mod tests {
                     Vec3::new(next(), next(), next()).clamp(Vec3::splat(-5.0), Vec3::splat(5.0));
                 let at = Vec3::new(next(), next(), next());
                 matrices[m] = glam::Affine3A::from_scale_rotation_translation(scale, rotation, at);
-                columns.put(m, &matrices[m]);
+                put_matrix(&mut columns, m, &matrices[m]);
                 if (round + m) % 5 != 0 {
                     // A normal without direction now and then.
                     let normal = if (round + m) % 7 == 0 {
@@ -1301,7 +1336,11 @@ mod tests {
                     });
                 }
             }
-            let found = hits_in_rig_space(&answers, &columns.entries);
+            let mut given = HitColumns::default();
+            for (m, answer) in answers.iter().enumerate() {
+                given.set(m, *answer);
+            }
+            let found = hits_in_rig_space(&given, &columns);
             for m in 0..BATCH {
                 let (start, end) = (Vec3::ONE, Vec3::ZERO);
                 let alone = trace_outputs(read_hit(&answers[m]), start, end, &matrices[m]);
@@ -1324,6 +1363,53 @@ mod tests {
                 }
             }
         }
+    }
+
+    #[test]
+    fn ends_are_taken_to_world_space_by_columns_as_each_alone() {
+        // Thousands of ends and matrices, spread over magnitudes, with zero, tiny, huge,
+        // infinite and NaN components: each end through the columns is glam's
+        // `transform_point3` of it, bit for bit (NaN for NaN).
+        let mut seed = 0x9e37_79b9_u32;
+        let mut next = move || {
+            seed ^= seed << 13;
+            seed ^= seed >> 17;
+            seed ^= seed << 5;
+            let special = [0.0, -0.0, 1e-30, -1e30, f32::INFINITY, f32::NAN, 1.0];
+            match seed % 16 {
+                0 => special[(seed >> 4) as usize % special.len()],
+                k => ((seed >> 8) as f32 / 65536.0 - 128.0) * 10f32.powi(k as i32 % 7 - 3),
+            }
+        };
+        let bits = |v: [f32; 3]| v.map(|x| if x.is_nan() { u32::MAX } else { x.to_bits() });
+        let mut differing_lanes = 0;
+        for round in 0..400 {
+            let mut columns = [[0.0; BATCH]; 12];
+            let mut matrices = [glam::Affine3A::IDENTITY; BATCH];
+            for (m, matrix) in matrices.iter_mut().enumerate() {
+                let axis = Vec3::new(next(), next(), next()).normalize_or(Vec3::Z);
+                let rotation = Quat::from_axis_angle(axis, next().rem_euclid(6.0));
+                let scale =
+                    Vec3::new(next(), next(), next()).clamp(Vec3::splat(-5.0), Vec3::splat(5.0));
+                *matrix = glam::Affine3A::from_scale_rotation_translation(
+                    scale,
+                    rotation,
+                    Vec3::new(next(), next(), next()),
+                );
+                put_matrix(&mut columns, m, matrix);
+            }
+            for (m, matrix) in matrices.iter().enumerate() {
+                let p = Vec3::new(next(), next(), next());
+                let columns = point_to_world(&columns, m, p);
+                let alone = matrix.transform_point3(p).to_array();
+                assert_eq!(bits(columns), bits(alone), "round {round}, member {m}: {p}");
+                differing_lanes += usize::from(m > 0 && matrices[m] != matrices[m - 1]);
+            }
+        }
+        assert!(
+            differing_lanes > 5000,
+            "{differing_lanes}: each lane its own matrix"
+        );
     }
 
     #[test]
