@@ -1837,7 +1837,10 @@ impl World {
             let behind = ((unit[0] * dir[0] + unit[1] * dir[1]) + unit[2] * dir[2]) > 0.0;
             // Chosen bit by bit (a negation is the sign bit's flip), which the compiler
             // computes for several lanes at once where it would not pick among floats.
-            let (turn, pick) = (u32::from(behind) << 31, 0u32.wrapping_sub(u32::from(facing)));
+            let (turn, pick) = (
+                u32::from(behind) << 31,
+                0u32.wrapping_sub(u32::from(facing)),
+            );
             let start = [sx[k], sy[k], sz[k]];
             for c in 0..3 {
                 let towards = unit[c].to_bits() ^ turn;

@@ -34,6 +34,7 @@ use crate::exec::{
 };
 use crate::lanes::{Uniform, block, break_transforms};
 use glam::{Quat, Vec3};
+use std::sync::Arc;
 use strider_core::{HitColumns, LineQuery, TRACE_COLUMNS, TraceColumns, Transform, WorldQuery};
 use strider_nodes::kernels::two_bone_ik::{
     BoneAxes, ChainInput, ChainLanes, LANES_MATCH_GLAM, Pole, TwoBoneIk,
@@ -215,8 +216,17 @@ pub(crate) unsafe fn run_per_member(
                 match (space == 0, initial) {
                     (true, false) => read_each!(0, false),
                     (false, false) => read_each!(space, false),
-                    (true, true) => read_each!(0, true),
-                    (false, true) => read_each!(space, true),
+                    (true, true) => match shared_rest(members, bone, 0) {
+                        // Every member reads the same transform of the rest pose: read once.
+                        // SAFETY: as above; a block is `BATCH` items.
+                        Some(x) => unsafe { *out.cast::<[Transform; BATCH]>() = [x; BATCH] },
+                        None => read_each!(0, true),
+                    },
+                    (false, true) => match shared_rest(members, bone, space) {
+                        // SAFETY: as above.
+                        Some(x) => unsafe { *out.cast::<[Transform; BATCH]>() = [x; BATCH] },
+                        None => read_each!(space, true),
+                    },
                 }
             } else {
                 for (m, cx) in members.iter_mut().enumerate() {
@@ -252,6 +262,22 @@ pub(crate) unsafe fn run_per_member(
         _ => return false,
     }
     true
+}
+
+/// The transform every one of `members` reads of the bone in bone slot `bone`, in the
+/// rest pose, in `space` (0 global, else local), as [`bone_transform`] reads it: `None`
+/// unless they all hold the same bone (or all none) of one skeleton (the same `Arc`), each
+/// then reading the same transform.
+#[inline(always)]
+fn shared_rest(members: &mut [Ctx<'_>], bone: usize, space: i32) -> Option<Transform> {
+    let (first, others) = members.split_first_mut()?;
+    let (b, skeleton) = (first.slots.bones[bone], first.pose.skeleton());
+    let shared = others
+        .iter()
+        .all(|cx| cx.slots.bones[bone] == b && Arc::ptr_eq(cx.pose.skeleton(), skeleton));
+    #[cfg(test)]
+    tests::RESTS_SHARED.with(|n| n.set(n.get() + usize::from(shared)));
+    shared.then(|| bone_transform(first.pose, b, space, true))
 }
 
 /// `ForEachNext(elem)` (operands: array, counter; element, index, count; the loop's end)
@@ -894,6 +920,9 @@ mod tests {
         /// that the lanes solved some.
         pub(super) static SOLVED_ON_LANES: std::cell::Cell<usize> =
             const { std::cell::Cell::new(0) };
+        /// How many reads of the rest pose `shared_rest` found alike for the whole batch.
+        pub(super) static RESTS_SHARED: std::cell::Cell<usize> =
+            const { std::cell::Cell::new(0) };
     }
 
     /// A three-bone chain whose rest pose is turned, moved and scaled at every bone.
@@ -1154,6 +1183,107 @@ mod tests {
                 // The members read apart: bones and poses of their own.
                 let read: Vec<_> = batch.0.iter().map(|s| s.transforms[4].to_bits()).collect();
                 assert!(read.iter().any(|r| *r != read[0]), "{what}: all alike");
+            }
+        }
+    }
+
+    #[test]
+    fn a_batch_reading_one_bone_of_its_skeleton_s_rest_pose_reads_it_once() {
+        // Members of one skeleton (one `Arc`) that read the same bone slot value of the rest
+        // pose, in one space, all read one transform, read once. Where one member reads
+        // another bone, or has a skeleton of its own (with another rest pose), each reads
+        // its own. Either way every member's slots end as its handler leaves them; the
+        // poses are moved away from the rest pose, so that a read of the pose would differ.
+        let shared = chain();
+        let own = {
+            let bone = |name: &str, parent: Option<&str>, x: f32| Bone {
+                name: name.to_string(),
+                parent: parent.map(str::to_string),
+                rest_local: Transform::new(Vec3::new(x, 0.0, 0.0), Quat::IDENTITY, Vec3::ONE),
+            };
+            Arc::new(
+                Skeleton::new(vec![
+                    bone("root", None, 5.0),
+                    bone("mid", Some("root"), 6.0),
+                    bone("tip", Some("mid"), 7.0),
+                ])
+                .expect("valid skeleton"),
+            )
+        };
+        // `chain`'s root at rest, by hand: at (1, 2, −1), turned 0.3 rad about z, scaled 1.1.
+        let root = Transform::new(
+            Vec3::new(1.0, 2.0, -1.0),
+            Quat::from_rotation_z(0.3),
+            Vec3::splat(1.1),
+        );
+        let operands = window(&[1, 2, 3, 4]);
+        for apart in [None, Some("another bone"), Some("another skeleton")] {
+            for (space, bone) in [0, 7]
+                .into_iter()
+                .flat_map(|s| [0, 1, 2, -1, 3].map(|b| (s, b)))
+            {
+                let member = |m: usize| {
+                    let mut slots = member_slots(m);
+                    (slots.ints[2], slots.bools[3], slots.bones[1]) = (space, true, bone);
+                    let skeleton = match (apart, m) {
+                        (Some("another bone"), 7) => {
+                            slots.bones[1] = (bone + 2) % 3;
+                            &shared
+                        }
+                        (Some("another skeleton"), 7) => &own,
+                        _ => &shared,
+                    };
+                    let mut pose = Pose::new(skeleton.clone());
+                    let moved =
+                        Transform::new(Vec3::splat(m as f32 + 1.0), Quat::IDENTITY, Vec3::ONE);
+                    pose.set_local(BoneIndex(0), moved);
+                    (slots, pose)
+                };
+                let mut results = Vec::new();
+                for batched in [true, false] {
+                    let (mut slots, mut poses): (Vec<Slots>, Vec<Pose>) =
+                        (0..BATCH).map(member).unzip();
+                    RESTS_SHARED.with(|n| n.set(0));
+                    with_contexts(&mut slots, &mut poses, |cxs| {
+                        if batched {
+                            let lens = ScalarLens([SLOTS; 6]);
+                            let mut lanes = Lanes::default();
+                            lanes.load(Copies::all(&lens), cxs);
+                            // SAFETY: the operands are slots below `SLOTS` of the lanes.
+                            let ran = unsafe {
+                                run_per_member(
+                                    Op::GetTransform,
+                                    &operands,
+                                    &lanes.bases(),
+                                    &mut no_copies(cxs),
+                                    cxs,
+                                )
+                            };
+                            assert!(ran);
+                            lanes.store(Copies::all(&lens), cxs);
+                        } else {
+                            for cx in cxs.iter_mut() {
+                                // SAFETY: as above.
+                                unsafe { step(Op::GetTransform, &operands, cx, 1) };
+                            }
+                        }
+                    });
+                    let once = RESTS_SHARED.with(std::cell::Cell::get);
+                    assert_eq!(once, usize::from(batched && apart.is_none()), "{apart:?}");
+                    results.push(slots);
+                }
+                let what = format!("{apart:?}, space {space}, bone {bone}");
+                for m in 0..BATCH {
+                    assert!(results[0][m].bit_eq(&results[1][m]), "{what}: member {m}");
+                }
+                let read = |m: usize| results[0][m].transforms[4].to_bits();
+                if apart.is_none() && bone == 0 {
+                    // The root, in either space, is its rest local.
+                    assert!((0..BATCH).all(|m| read(m) == root.to_bits()), "{what}");
+                }
+                if apart.is_some() && (0..3).contains(&bone) {
+                    assert_ne!(read(7), read(0), "{what}: member 7 reads its own");
+                }
             }
         }
     }
