@@ -966,7 +966,7 @@ fn field_wave() -> Wave {
 #[test]
 fn sphere_traces_in_a_batch_answer_as_each_alone() {
     // `sphere_traces` must give each query `sphere_trace`'s answer, bit for bit: a flat
-    // world answers a batch eight queries at a time, in columns, every other world one
+    // world answers a batch 16 queries at a time, in columns, every other world one
     // query at a time. Queries from above and below the ground, moving up, down and
     // sideways, starting inside, touching it exactly at their end, missing short of it,
     // and off the common path (radius 0, −0, negative or NaN; spheres that do not move or

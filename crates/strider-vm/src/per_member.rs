@@ -17,9 +17,12 @@
 //! Two kinds of op go further, with one piece of work for the whole batch: the traces ask
 //! the world once for every member ([`sphere_traces`], [`line_traces`]), and the two-bone
 //! IK solves the members' chains together on lanes of its own ([`two_bone_iks`]). The
-//! traces map the world's hits back to rig space for every lane at once
-//! ([`hits_in_rig_space`], on x86-64: [`COLUMNS_MATCH_GLAM`]), with glam's operations in
-//! glam's order. Their answers too are the handlers', bit for bit.
+//! traces take the members' ends to world space and the world's hits back to rig space
+//! for every lane at once, one array per coordinate, and ask the world in that layout
+//! ([`batch_traces`], [`hits_in_rig_space`], on x86-64: [`COLUMNS_MATCH_GLAM`]), with
+//! glam's operations in glam's order. Their answers too are the handlers', bit for bit. A
+//! read of the rest pose that every member makes of the same bone of one skeleton is made
+//! once ([`shared_rest`]).
 //!
 //! They run only on lanes (slot `k` of member `m` at item `k * BATCH + m`), with the whole
 //! batch at the instruction; anywhere else the handlers do the work.
@@ -1273,8 +1276,8 @@ mod tests {
                     results.push(slots);
                 }
                 let what = format!("{apart:?}, space {space}, bone {bone}");
-                for m in 0..BATCH {
-                    assert!(results[0][m].bit_eq(&results[1][m]), "{what}: member {m}");
+                for (m, (batch, alone)) in results[0].iter().zip(&results[1]).enumerate() {
+                    assert!(batch.bit_eq(alone), "{what}: member {m}");
                 }
                 let read = |m: usize| results[0][m].transforms[4].to_bits();
                 if apart.is_none() && bone == 0 {
