@@ -930,14 +930,22 @@ mod tests {
 
     /// A three-bone chain whose rest pose is turned, moved and scaled at every bone.
     fn chain() -> Arc<Skeleton> {
-        let bone = |name: &str, parent: Option<&str>, k: f32| Bone {
-            name: name.to_string(),
-            parent: parent.map(str::to_string),
-            rest_local: Transform::new(
+        chain_at_rest(|k| {
+            Transform::new(
                 Vec3::new(k, 2.0 * k, -k),
                 Quat::from_rotation_z(0.3 * k),
                 Vec3::splat(1.0 + 0.1 * k),
-            ),
+            )
+        })
+    }
+
+    /// A three-bone chain, root, mid and tip, whose bone `k` (from 1) rests at `rest(k)`
+    /// relative to its parent.
+    fn chain_at_rest(rest: impl Fn(f32) -> Transform) -> Arc<Skeleton> {
+        let bone = |name: &str, parent: Option<&str>, k: f32| Bone {
+            name: name.to_string(),
+            parent: parent.map(str::to_string),
+            rest_local: rest(k),
         };
         Arc::new(
             Skeleton::new(vec![
@@ -1198,21 +1206,9 @@ mod tests {
         // its own. Either way every member's slots end as its handler leaves them; the
         // poses are moved away from the rest pose, so that a read of the pose would differ.
         let shared = chain();
-        let own = {
-            let bone = |name: &str, parent: Option<&str>, x: f32| Bone {
-                name: name.to_string(),
-                parent: parent.map(str::to_string),
-                rest_local: Transform::new(Vec3::new(x, 0.0, 0.0), Quat::IDENTITY, Vec3::ONE),
-            };
-            Arc::new(
-                Skeleton::new(vec![
-                    bone("root", None, 5.0),
-                    bone("mid", Some("root"), 6.0),
-                    bone("tip", Some("mid"), 7.0),
-                ])
-                .expect("valid skeleton"),
-            )
-        };
+        let own = chain_at_rest(|k| {
+            Transform::new(Vec3::new(k + 4.0, 0.0, 0.0), Quat::IDENTITY, Vec3::ONE)
+        });
         // `chain`'s root at rest, by hand: at (1, 2, −1), turned 0.3 rad about z, scaled 1.1.
         let root = Transform::new(
             Vec3::new(1.0, 2.0, -1.0),
@@ -1427,13 +1423,10 @@ mod tests {
         Some(slots)
     }
 
-    #[test]
-    fn hits_are_mapped_to_rig_space_by_columns_as_each_alone() {
-        // Thousands of answers and matrices, spread over magnitudes, with zero, tiny, huge,
-        // infinite and NaN components: the columns' hits are the handler's, bit for bit.
-        let mut seed = 0x2545_f491_u32;
-        let mut next = move || {
-            // xorshift32, then a value spread over many magnitudes and signs.
+    /// Numbers spread over many magnitudes and signs, with zero, tiny, huge, infinite and
+    /// NaN among them: xorshift32 from `seed`, each draw a special value one time in 16.
+    fn spread(mut seed: u32) -> impl FnMut() -> f32 {
+        move || {
             seed ^= seed << 13;
             seed ^= seed >> 17;
             seed ^= seed << 5;
@@ -1442,18 +1435,30 @@ mod tests {
                 0 => special[(seed >> 4) as usize % special.len()],
                 k => ((seed >> 8) as f32 / 65536.0 - 128.0) * 10f32.powi(k as i32 % 7 - 3),
             }
-        };
+        }
+    }
+
+    /// A matrix drawn from `next` ([`spread`]): a turn about an axis, a scale within ±5 on
+    /// each axis and a translation.
+    fn spread_matrix(next: &mut impl FnMut() -> f32) -> glam::Affine3A {
+        let axis = Vec3::new(next(), next(), next()).normalize_or(Vec3::Z);
+        let rotation = Quat::from_axis_angle(axis, next().rem_euclid(6.0));
+        let scale = Vec3::new(next(), next(), next()).clamp(Vec3::splat(-5.0), Vec3::splat(5.0));
+        let at = Vec3::new(next(), next(), next());
+        glam::Affine3A::from_scale_rotation_translation(scale, rotation, at)
+    }
+
+    #[test]
+    fn hits_are_mapped_to_rig_space_by_columns_as_each_alone() {
+        // Thousands of answers and matrices, spread over magnitudes, with zero, tiny, huge,
+        // infinite and NaN components: the columns' hits are the handler's, bit for bit.
+        let mut next = spread(0x2545_f491);
         for round in 0..400 {
             let mut columns = [[0.0; BATCH]; 12];
             let mut matrices = [glam::Affine3A::IDENTITY; BATCH];
             let mut answers = [None; BATCH];
             for m in 0..BATCH {
-                let axis = Vec3::new(next(), next(), next()).normalize_or(Vec3::Z);
-                let rotation = Quat::from_axis_angle(axis, next().rem_euclid(6.0));
-                let scale =
-                    Vec3::new(next(), next(), next()).clamp(Vec3::splat(-5.0), Vec3::splat(5.0));
-                let at = Vec3::new(next(), next(), next());
-                matrices[m] = glam::Affine3A::from_scale_rotation_translation(scale, rotation, at);
+                matrices[m] = spread_matrix(&mut next);
                 put_matrix(&mut columns, m, &matrices[m]);
                 if (round + m) % 5 != 0 {
                     // A normal without direction now and then.
@@ -1503,32 +1508,14 @@ mod tests {
         // Thousands of ends and matrices, spread over magnitudes, with zero, tiny, huge,
         // infinite and NaN components: each end through the columns is glam's
         // `transform_point3` of it, bit for bit (NaN for NaN).
-        let mut seed = 0x9e37_79b9_u32;
-        let mut next = move || {
-            seed ^= seed << 13;
-            seed ^= seed >> 17;
-            seed ^= seed << 5;
-            let special = [0.0, -0.0, 1e-30, -1e30, f32::INFINITY, f32::NAN, 1.0];
-            match seed % 16 {
-                0 => special[(seed >> 4) as usize % special.len()],
-                k => ((seed >> 8) as f32 / 65536.0 - 128.0) * 10f32.powi(k as i32 % 7 - 3),
-            }
-        };
+        let mut next = spread(0x9e37_79b9);
         let bits = |v: [f32; 3]| v.map(|x| if x.is_nan() { u32::MAX } else { x.to_bits() });
         let mut differing_lanes = 0;
         for round in 0..400 {
             let mut columns = [[0.0; BATCH]; 12];
             let mut matrices = [glam::Affine3A::IDENTITY; BATCH];
             for (m, matrix) in matrices.iter_mut().enumerate() {
-                let axis = Vec3::new(next(), next(), next()).normalize_or(Vec3::Z);
-                let rotation = Quat::from_axis_angle(axis, next().rem_euclid(6.0));
-                let scale =
-                    Vec3::new(next(), next(), next()).clamp(Vec3::splat(-5.0), Vec3::splat(5.0));
-                *matrix = glam::Affine3A::from_scale_rotation_translation(
-                    scale,
-                    rotation,
-                    Vec3::new(next(), next(), next()),
-                );
+                *matrix = spread_matrix(&mut next);
                 put_matrix(&mut columns, m, matrix);
             }
             for (m, matrix) in matrices.iter().enumerate() {
