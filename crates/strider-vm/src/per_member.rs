@@ -684,8 +684,9 @@ pub(crate) fn shared_world<'w>(members: &[Ctx<'w>]) -> Option<&'w dyn WorldQuery
 /// A trace instruction (operands: start, end, then from `outs` on: hit, point, normal,
 /// distance) for the whole batch: every member's ends taken to world space (and, for a
 /// sphere trace, its radius from `radius`, member 0's item, made 0 where it is below 0 or
-/// NaN, as [`trace_query`](crate::exec::trace_query) makes it), laid out in columns and asked of the world at once
-/// (`ask`), and each answer mapped back to the member's slots as the handler maps it.
+/// NaN, as [`trace_query`](crate::exec::trace_query) makes it), laid out in columns and
+/// asked of the world at once (`ask`), and each answer mapped back to the member's slots
+/// as the handler maps it.
 /// Returns false, doing nothing, when there is no `world` the members share
 /// ([`shared_world`]). `world` must be `shared_world(members)`, and `frames` new or filled
 /// from these `members`, for the answers to be the handler's.
@@ -873,7 +874,7 @@ struct FoundColumns {
 /// no length), each product and sum in glam's order (`Mat3A * Vec3A`: x axis times x, plus
 /// y axis times y, plus z axis times z; a length the square root of `(x² + y²) + z²`,
 /// normalised by its reciprocal). A hit with a component that is not finite is a miss, as
-/// [`read_hit`] reads it; lanes past the answers are misses.
+/// [`read_hit`] reads it. Lanes past the batch's members mean nothing.
 #[inline(always)]
 fn hits_in_rig_space(answers: &HitColumns, from_world: &[[f32; BATCH]; 12]) -> FoundColumns {
     let (p, v, d) = (&answers.point, &answers.normal, &answers.distance);
