@@ -81,6 +81,27 @@ impl TraceColumns {
             radius: self.radius[k],
         }
     }
+
+    /// Writes the line trace `q` as trace `k` (`< TRACE_COLUMNS`); its radius is left as
+    /// it is.
+    #[inline]
+    pub fn set_line(&mut self, k: usize, q: LineQuery) {
+        [self.start[0][k], self.start[1][k], self.start[2][k]] = q.start.to_array();
+        [self.end[0][k], self.end[1][k], self.end[2][k]] = q.end.to_array();
+    }
+
+    /// Writes the sphere trace `q` as trace `k` (`< TRACE_COLUMNS`).
+    #[inline]
+    pub fn set_sphere(&mut self, k: usize, q: SphereQuery) {
+        self.set_line(
+            k,
+            LineQuery {
+                start: q.start,
+                end: q.end,
+            },
+        );
+        self.radius[k] = q.radius;
+    }
 }
 
 /// The answers to [`TraceColumns`], one array per component: where `hit[k]` is true,
@@ -406,13 +427,25 @@ mod tests {
         traces.start[1][3] = 2.0;
         traces.end[2][3] = -4.0;
         traces.radius[3] = 1.5;
+        let sphere = SphereQuery {
+            start: Vec3::new(0.0, 2.0, 0.0),
+            end: Vec3::new(0.0, 0.0, -4.0),
+            radius: 1.5,
+        };
+        assert_eq!(traces.sphere(3), sphere);
+        let mut written = TraceColumns::default();
+        written.set_sphere(3, sphere);
+        assert_eq!(written, traces);
+        written.set_line(
+            3,
+            LineQuery {
+                start: Vec3::X,
+                end: Vec3::Y,
+            },
+        );
         assert_eq!(
-            traces.sphere(3),
-            SphereQuery {
-                start: Vec3::new(0.0, 2.0, 0.0),
-                end: Vec3::new(0.0, 0.0, -4.0),
-                radius: 1.5,
-            }
+            (written.start[0][3], written.end[1][3], written.radius[3]),
+            (1.0, 1.0, 1.5)
         );
         let answer = TraceHit {
             point: Vec3::new(1.0, 2.0, 3.0),

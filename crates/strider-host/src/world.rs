@@ -1614,10 +1614,7 @@ impl WorldQuery for World {
         self.answer_batch(
             queries,
             hits,
-            |traces, k, q| {
-                [traces.start[0][k], traces.start[1][k], traces.start[2][k]] = q.start.to_array();
-                [traces.end[0][k], traces.end[1][k], traces.end[2][k]] = q.end.to_array();
-            },
+            |traces, k, q| traces.set_line(k, *q),
             |plane, traces, n, answers| self.plane_line_traces(plane, traces, n, answers),
             |q| self.line_trace_inlined(q.start, q.end),
         );
@@ -1631,11 +1628,7 @@ impl WorldQuery for World {
         self.answer_batch(
             queries,
             hits,
-            |traces, k, q| {
-                [traces.start[0][k], traces.start[1][k], traces.start[2][k]] = q.start.to_array();
-                [traces.end[0][k], traces.end[1][k], traces.end[2][k]] = q.end.to_array();
-                traces.radius[k] = q.radius;
-            },
+            |traces, k, q| traces.set_sphere(k, *q),
             |plane, traces, n, answers| self.plane_sphere_traces(plane, traces, n, answers),
             |q| self.sphere_trace_inlined(q.start, q.end, q.radius),
         );
@@ -1646,9 +1639,9 @@ impl WorldQuery for World {
     /// one at a time.
     fn line_traces_in_columns(&self, traces: &TraceColumns, n: usize, hits: &mut HitColumns) {
         let n = n.min(TRACE_COLUMNS);
-        match (self.bounded, &self.half_spaces[..]) {
-            (false, [plane]) => self.plane_line_traces(plane, traces, n, hits),
-            _ => {
+        match self.flat_ground() {
+            Some(plane) => self.plane_line_traces(plane, traces, n, hits),
+            None => {
                 for k in 0..n {
                     let q = traces.line(k);
                     hits.set(k, self.line_trace_inlined(q.start, q.end));
@@ -1661,9 +1654,9 @@ impl WorldQuery for World {
     /// [`World::line_traces_in_columns`].
     fn sphere_traces_in_columns(&self, traces: &TraceColumns, n: usize, hits: &mut HitColumns) {
         let n = n.min(TRACE_COLUMNS);
-        match (self.bounded, &self.half_spaces[..]) {
-            (false, [plane]) => self.plane_sphere_traces(plane, traces, n, hits),
-            _ => {
+        match self.flat_ground() {
+            Some(plane) => self.plane_sphere_traces(plane, traces, n, hits),
+            None => {
                 for k in 0..n {
                     let q = traces.sphere(k);
                     hits.set(k, self.sphere_trace_inlined(q.start, q.end, q.radius));
@@ -1674,6 +1667,16 @@ impl WorldQuery for World {
 }
 
 impl World {
+    /// The world's only collider when it is one half-space and nothing else (flat
+    /// ground), whose traces are answered in columns.
+    #[inline(always)]
+    fn flat_ground(&self) -> Option<&HalfSpace> {
+        match (self.bounded, &self.half_spaces[..]) {
+            (false, [plane]) => Some(plane),
+            _ => None,
+        }
+    }
+
     /// A batch's answers, `hits[k]` to `queries[k]`: in a world of one half-space and
     /// nothing else (flat ground), [`TRACE_COLUMNS`] queries at a time, each `put` into
     /// its column and the columns answered by `columns`; otherwise one at a time by
@@ -1687,8 +1690,8 @@ impl World {
         columns: impl Fn(&HalfSpace, &TraceColumns, usize, &mut HitColumns),
         alone: impl Fn(&Q) -> Option<TraceHit>,
     ) {
-        match (self.bounded, &self.half_spaces[..]) {
-            (false, [plane]) => {
+        match self.flat_ground() {
+            Some(plane) => {
                 for (queries, hits) in queries
                     .chunks(TRACE_COLUMNS)
                     .zip(hits.chunks_mut(TRACE_COLUMNS))
@@ -1706,7 +1709,7 @@ impl World {
                     }
                 }
             }
-            _ => {
+            None => {
                 for (query, hit) in queries.iter().zip(hits) {
                     *hit = alone(query);
                 }
@@ -1853,7 +1856,7 @@ impl World {
             // a finite end).
             common[k] = all_finite([sx[k], sy[k], sz[k], length]) & (length > 1e-7);
         }
-        for (k, _) in common.iter().enumerate().take(n).filter(|(_, c)| !**c) {
+        for k in (0..n).filter(|&k| !common[k]) {
             let q = traces.line(k);
             hits.set(k, self.line_trace(q.start, q.end));
         }
@@ -1912,7 +1915,7 @@ impl World {
                 & (radius[k] > 0.0)
                 & (length > 1e-7);
         }
-        for (k, _) in common.iter().enumerate().take(n).filter(|(_, c)| !**c) {
+        for k in (0..n).filter(|&k| !common[k]) {
             let q = traces.sphere(k);
             hits.set(k, self.sphere_trace(q.start, q.end, q.radius));
         }

@@ -986,10 +986,7 @@ fn sphere_traces_in_a_batch_answer_as_each_alone() {
             in_columns(
                 batch,
                 hits,
-                |traces, k, q| {
-                    put_ends(traces, k, q.start, q.end);
-                    traces.radius[k] = q.radius;
-                },
+                |traces, k, q| traces.set_sphere(k, *q),
                 |traces, n, answers| w.sphere_traces_in_columns(traces, n, answers),
             );
         },
@@ -1044,7 +1041,7 @@ fn line_traces_in_a_batch_answer_as_each_alone() {
             in_columns(
                 batch,
                 hits,
-                |traces, k, q| put_ends(traces, k, q.start, q.end),
+                |traces, k, q| traces.set_line(k, *q),
                 |traces, n, answers| {
                     w.line_traces_in_columns(traces, n, answers);
                 },
@@ -1068,14 +1065,13 @@ fn in_columns<Q>(
         .zip(hits.chunks_mut(TRACE_COLUMNS))
     {
         let mut traces = TraceColumns::default();
+        let unasked = SphereQuery {
+            start: Vec3::new(0.0, 0.0, 50.0),
+            end: Vec3::new(0.0, 0.0, -50.0),
+            radius: 2.0,
+        };
         for k in 0..TRACE_COLUMNS {
-            put_ends(
-                &mut traces,
-                k,
-                Vec3::new(0.0, 0.0, 50.0),
-                Vec3::new(0.0, 0.0, -50.0),
-            );
-            traces.radius[k] = 2.0;
+            traces.set_sphere(k, unasked);
         }
         for (k, q) in queries.iter().enumerate() {
             put(&mut traces, k, q);
@@ -1085,13 +1081,6 @@ fn in_columns<Q>(
         for (k, hit) in hits.iter_mut().enumerate() {
             *hit = answers.get(k);
         }
-    }
-}
-
-/// Trace `k`'s ends in `traces`.
-fn put_ends(traces: &mut TraceColumns, k: usize, start: Vec3, end: Vec3) {
-    for c in 0..3 {
-        (traces.start[c][k], traces.end[c][k]) = (start[c], end[c]);
     }
 }
 
