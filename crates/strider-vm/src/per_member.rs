@@ -38,7 +38,7 @@ use crate::exec::{
 use crate::lanes::{Uniform, block, break_transforms};
 use glam::{Quat, Vec3};
 use std::sync::Arc;
-use strider_core::{HitColumns, LineQuery, TRACE_COLUMNS, TraceColumns, Transform, WorldQuery};
+use strider_core::{HitColumns, TRACE_COLUMNS, TraceColumns, Transform, WorldQuery};
 use strider_nodes::kernels::two_bone_ik::{
     BoneAxes, ChainInput, ChainLanes, LANES_MATCH_GLAM, Pole, TwoBoneIk,
 };
@@ -216,20 +216,21 @@ pub(crate) unsafe fn run_per_member(
                         }
                     };
                 }
+                let rest = if initial {
+                    shared_rest(members, bone, space)
+                } else {
+                    None
+                };
                 match (space == 0, initial) {
+                    // Every member reads the same transform of the rest pose: read once.
+                    // SAFETY: as above; a block is `BATCH` items.
+                    _ if let Some(x) = rest => unsafe {
+                        *out.cast::<[Transform; BATCH]>() = [x; BATCH];
+                    },
                     (true, false) => read_each!(0, false),
                     (false, false) => read_each!(space, false),
-                    (true, true) => match shared_rest(members, bone, 0) {
-                        // Every member reads the same transform of the rest pose: read once.
-                        // SAFETY: as above; a block is `BATCH` items.
-                        Some(x) => unsafe { *out.cast::<[Transform; BATCH]>() = [x; BATCH] },
-                        None => read_each!(0, true),
-                    },
-                    (false, true) => match shared_rest(members, bone, space) {
-                        // SAFETY: as above.
-                        Some(x) => unsafe { *out.cast::<[Transform; BATCH]>() = [x; BATCH] },
-                        None => read_each!(space, true),
-                    },
+                    (true, true) => read_each!(0, true),
+                    (false, true) => read_each!(space, true),
                 }
             } else {
                 for (m, cx) in members.iter_mut().enumerate() {
@@ -414,18 +415,9 @@ pub(crate) unsafe fn line_traces(
 ) -> bool {
     // SAFETY: the caller's contract; a line trace's outputs start at operand 2.
     unsafe {
-        batch_traces(
-            o,
-            2,
-            None,
-            lane0,
-            world,
-            frames,
-            members,
-            |w, traces, n, hits| {
-                w.line_traces_in_columns(traces, n, hits);
-            },
-        )
+        batch_traces(o, 2, lane0, world, frames, members, |w, traces, n, hits| {
+            w.line_traces_in_columns(traces, n, hits);
+        })
     }
 }
 
@@ -448,21 +440,18 @@ pub(crate) unsafe fn sphere_traces(
     frames: &mut FrameColumns,
     members: &[Ctx<'_>],
 ) -> bool {
-    let radius = item0(lane0.floats, o[2]).cast_const();
-    // SAFETY: the caller's contract; a sphere trace's outputs start at operand 3.
+    let radius = item0(lane0.floats, o[2]);
+    // SAFETY: the caller's contract; a sphere trace's outputs start at operand 3, and its
+    // radius (operand 2) is a slot of the program's lanes, read below for `m < BATCH`.
     unsafe {
-        batch_traces(
-            o,
-            3,
-            Some(radius),
-            lane0,
-            world,
-            frames,
-            members,
-            |w, traces, n, hits| {
-                w.sphere_traces_in_columns(traces, n, hits);
-            },
-        )
+        batch_traces(o, 3, lane0, world, frames, members, |w, traces, n, hits| {
+            // Each radius made 0 where it is below 0 or NaN, as `trace_query` makes it;
+            // every lane, as the ends.
+            for m in 0..BATCH {
+                traces.radius[m] = (*radius.add(m)).max(0.0);
+            }
+            w.sphere_traces_in_columns(traces, n, hits);
+        })
     }
 }
 
@@ -682,29 +671,25 @@ pub(crate) fn shared_world<'w>(members: &[Ctx<'w>]) -> Option<&'w dyn WorldQuery
 }
 
 /// A trace instruction (operands: start, end, then from `outs` on: hit, point, normal,
-/// distance) for the whole batch: every member's ends taken to world space (and, for a
-/// sphere trace, its radius from `radius`, member 0's item, made 0 where it is below 0 or
-/// NaN, as [`trace_query`](crate::exec::trace_query) makes it), laid out in columns and
-/// asked of the world at once (`ask`), and each answer mapped back to the member's slots
-/// as the handler maps it.
+/// distance) for the whole batch: every member's ends taken to world space, laid out in
+/// columns, and asked of the world at once by `ask` (which first writes what else the
+/// trace asks, a sphere's radii), and each answer mapped back to the member's slots as the
+/// handler maps it.
 /// Returns false, doing nothing, when there is no `world` the members share
 /// ([`shared_world`]). `world` must be `shared_world(members)`, and `frames` new or filled
 /// from these `members`, for the answers to be the handler's.
 ///
 /// # Safety
-/// As [`run_per_member`], with `o` a trace's operands, its outputs from `outs` on, and
-/// `radius` (when given) the item of member 0 of a slot of the program's float lanes.
+/// As [`run_per_member`], with `o` a trace's operands, its outputs from `outs` on.
 #[inline(always)]
-#[allow(clippy::too_many_arguments)]
 unsafe fn batch_traces(
     o: &[u32],
     outs: usize,
-    radius: Option<*const f32>,
     lane0: Bases,
     world: Option<&dyn WorldQuery>,
     frames: &mut FrameColumns,
     members: &[Ctx<'_>],
-    ask: impl Fn(&dyn WorldQuery, &TraceColumns, usize, &mut HitColumns),
+    ask: impl Fn(&dyn WorldQuery, &mut TraceColumns, usize, &mut HitColumns),
 ) -> bool {
     // One question to the world for the batch (its members share it in a crowd's
     // batch; else each asks its own, as the handler does).
@@ -722,8 +707,8 @@ unsafe fn batch_traces(
             // SAFETY: slots of the program's lanes (the caller's contract), `m < BATCH`.
             let (s, e) = unsafe { (*start.add(m), *end.add(m)) };
             let (s, e) = (
-                point_to_world(&frames.to_world, m, s),
-                point_to_world(&frames.to_world, m, e),
+                point_through(&frames.to_world, m, s),
+                point_through(&frames.to_world, m, e),
             );
             for c in 0..3 {
                 (traces.start[c][m], traces.end[c][m]) = (s[c], e[c]);
@@ -733,20 +718,11 @@ unsafe fn batch_traces(
         for (m, cx) in members.iter().enumerate() {
             // SAFETY: as above.
             let (s, e) = unsafe { (*start.add(m), *end.add(m)) };
-            let LineQuery { start, end } = trace_ends(&cx.to_world_matrix, s, e);
-            for c in 0..3 {
-                (traces.start[c][m], traces.end[c][m]) = (start[c], end[c]);
-            }
-        }
-    }
-    if let Some(radius) = radius {
-        for m in 0..BATCH {
-            // SAFETY: the caller's contract, `m < BATCH`.
-            traces.radius[m] = unsafe { *radius.add(m) }.max(0.0);
+            traces.set_line(m, trace_ends(&cx.to_world_matrix, s, e));
         }
     }
     let mut answers = HitColumns::default();
-    ask(world, &traces, n, &mut answers);
+    ask(world, &mut traces, n, &mut answers);
     let (hit, point, normal, distance) = (
         item0(lane0.bools, o[outs]),
         item0(lane0.vec3s, o[outs + 1]),
@@ -834,9 +810,9 @@ impl FrameColumns {
 /// Point `p` through lane `m`'s matrix of `entries` ([`put_matrix`]) as
 /// `Affine3A::transform_point3` takes it, bit for bit where [`COLUMNS_MATCH_GLAM`]: x axis
 /// times x, plus y axis times y, plus z axis times z, plus the translation, each product
-/// and sum rounded in turn.
+/// and sum rounded in turn (the ends to world space, the hits back).
 #[inline(always)]
-fn point_to_world(entries: &[[f32; BATCH]; 12], m: usize, p: Vec3) -> [f32; 3] {
+fn point_through(entries: &[[f32; BATCH]; 12], m: usize, p: Vec3) -> [f32; 3] {
     let t = entries;
     std::array::from_fn(|c| ((t[c][m] * p.x + t[3 + c][m] * p.y) + t[6 + c][m] * p.z) + t[9 + c][m])
 }
@@ -892,9 +868,8 @@ fn hits_in_rig_space(answers: &HitColumns, from_world: &[[f32; BATCH]; 12]) -> F
             .iter()
             .fold(true, |ok, c| ok & c.is_finite());
         found.hit[k] = answers.hit[k] & finite;
-        for c in 0..3 {
-            found.point[c][k] = ((f[c][k] * x + f[3 + c][k] * y) + f[6 + c][k] * z) + f[9 + c][k];
-        }
+        [found.point[0][k], found.point[1][k], found.point[2][k]] =
+            point_through(f, k, Vec3::new(x, y, z));
         let a = (f[0][k] * nx + f[3][k] * ny) + f[6][k] * nz;
         let b = (f[1][k] * nx + f[4][k] * ny) + f[7][k] * nz;
         let c = (f[2][k] * nx + f[5][k] * ny) + f[8][k] * nz;
@@ -913,7 +888,9 @@ mod tests {
     use crate::lanes::{Copies, Lanes};
     use crate::slots::{ScalarLens, Slots};
     use std::sync::Arc;
-    use strider_core::{Bone, BoneIndex, DebugDraw, Pose, Skeleton, SphereQuery, TraceHit};
+    use strider_core::{
+        Bone, BoneIndex, DebugDraw, LineQuery, Pose, Skeleton, SphereQuery, TraceHit,
+    };
     use strider_nodes::{MAX_OPERANDS, ValueType};
 
     /// How many scalar slots of each type, and arrays of each element type, a member has.
@@ -1521,7 +1498,7 @@ mod tests {
             }
             for (m, matrix) in matrices.iter().enumerate() {
                 let p = Vec3::new(next(), next(), next());
-                let columns = point_to_world(&columns, m, p);
+                let columns = point_through(&columns, m, p);
                 let alone = matrix.transform_point3(p).to_array();
                 assert_eq!(bits(columns), bits(alone), "round {round}, member {m}: {p}");
                 differing_lanes += usize::from(m > 0 && matrices[m] != matrices[m - 1]);
